@@ -1,0 +1,27 @@
+// Shared by the slice and composite shaders: the pixel-centre view ray of the scene camera.
+// All positions are in view coordinates (VC), where the camera plane is z = 0.
+
+uniform mat4 invProjectionDCVC; // inverse of the scene camera's projection (DC -> VC)
+uniform vec2 targetSize;        // size of the off-screen targets in pixels
+uniform sampler2D sceneDepth;   // the delegate's depth buffer
+
+// Ray through the centre of pixel `fragCoord` (in target pixels): origin on the camera plane
+// (the eye for a perspective camera), unit direction. Also returns the pixel's NDC.
+void lightShaftViewRay(vec2 fragCoord, out vec3 originVC, out vec3 dirVC, out vec2 ndc)
+{
+  ndc = 2.0 * fragCoord / targetSize - 1.0;
+  vec4 nearVC = invProjectionDCVC * vec4(ndc, -1.0, 1.0);
+  vec4 farVC = invProjectionDCVC * vec4(ndc, 1.0, 1.0);
+  nearVC.xyz /= nearVC.w;
+  farVC.xyz /= farVC.w;
+  dirVC = normalize(farVC.xyz - nearVC.xyz);
+  originVC = nearVC.xyz - dirVC * (nearVC.z / dirVC.z);
+}
+
+// Distance along the ray from its origin to the surface whose depth-buffer value is `depth`
+// (1 = nothing drawn: the far clipping plane).
+float lightShaftSurfaceDistance(vec2 ndc, float depth, vec3 dirVC)
+{
+  vec4 surfaceVC = invProjectionDCVC * vec4(ndc, 2.0 * depth - 1.0, 1.0);
+  return (surfaceVC.z / surfaceVC.w) / dirVC.z;
+}
