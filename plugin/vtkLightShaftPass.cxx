@@ -981,6 +981,10 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   }
 
   impl.SliceBuffer->Upload(vertices, vtkOpenGLBufferObject::ArrayBuffer);
+  if (impl.SliceArrayProgram != program)
+  {
+    impl.SliceArray->ShaderProgramChanged();
+  }
   impl.SliceArray->Bind();
   if (impl.SliceArrayProgram != program)
   {

@@ -27,7 +27,7 @@ uniform vec3 sigmaT;
 
 const float PI = 3.14159265358979;
 
-// The parameter interval of the ray origin + t dir inside the spot cone's forward nappe.
+// The parameter interval of the line m + t dir (m relative to the apex) inside the spot cone's forward nappe.
 // The nappe is convex (half-angle < 90 degrees), so the intersection is one interval.
 bool lightShaftConeInterval(vec3 m, vec3 dir, out float t0, out float t1)
 {
@@ -184,55 +184,73 @@ void main()
   float depth = texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r;
   tb = min(tb, lightShaftSurfaceDistance(ndc, depth, dirVC));
 
+  // Work relative to the foot of the perpendicular from the light to the ray, x = t + b:
+  // the cone quadratic then has coefficients of the size of h, not of the eye-light distance,
+  // which keeps rays passing next to the apex accurate in float.
   vec3 m = originVC - lightPositionVC;
+  float b = dot(m, dirVC);
+  vec3 foot = m - b * dirVC;
+  float h2 = dot(foot, foot);
   float coneIn;
   float coneOut;
-  if (!lightShaftConeInterval(m, dirVC, coneIn, coneOut))
+  if (!lightShaftConeInterval(foot, dirVC, coneIn, coneOut))
   {
     discard;
   }
-  ta = max(ta, coneIn);
-  tb = min(tb, coneOut);
-  if (tb <= ta)
+  float x0 = max(ta + b, coneIn);
+  float x1 = min(tb + b, coneOut);
+  if (x1 <= x0)
   {
     discard;
   }
 
-  // Geometry relative to the foot of the perpendicular from the light to the ray.
-  float b = dot(m, dirVC);
-  float h2 = max(dot(m, m) - b * b, 0.0);
-  float x0 = ta + b;
-  float x1 = tb + b;
+  // Product rule: the exact integral of A(r) over the segment times the A-weighted mean of the
+  // smooth factors (phase, spot, extinction), the mean taken with 3-point Gauss-Legendre in
+  // t (constant A) or in the equiangular angle phi, x = h tan(phi) (falling A), where those
+  // factors are smooth even when the ray passes close to the light.
   float weight = lightShaftAttenuationIntegral(x0, x1, h2);
-  float xm;
-  if (attenuationCoefficients.y == 0.0 && attenuationCoefficients.z == 0.0)
+  bool constantA = attenuationCoefficients.y == 0.0 && attenuationCoefficients.z == 0.0;
+  float h = max(sqrt(h2), 1e-6 * max(abs(x0), abs(x1)) + 1e-30);
+  float u0 = constantA ? x0 : atan(x0, h);
+  float u1 = constantA ? x1 : atan(x1, h);
+  float uMid = 0.5 * (u0 + u1);
+  float uHalf = 0.5 * (u1 - u0);
+  const vec3 nodes = vec3(-0.7745966692, 0.0, 0.7745966692);
+  const vec3 nodeWeights = vec3(0.5555555556, 0.8888888889, 0.5555555556);
+  vec3 smoothSum = vec3(0.0);
+  float weightSum = 0.0;
+  vec3 sampleVC = originVC;
+  for (int i = 0; i < 3; ++i)
   {
-    xm = 0.5 * (x0 + x1);
+    float u = uMid + uHalf * nodes[i];
+    float x = constantA ? u : h * tan(u);
+    float t = x - b;
+    vec3 pointVC = originVC + t * dirVC;
+    vec3 toPoint = pointVC - lightPositionVC;
+    float r = length(toPoint);
+    vec3 lightDir = toPoint / max(r, 1e-30);
+    float cosAxis = max(dot(lightDir, lightAxisVC), 0.0);
+    float spot = (spotExponent == 0.0) ? 1.0 : pow(cosAxis, spotExponent);
+    float cosTheta = -dot(dirVC, lightDir);
+    float phase;
+    //VTK::LightShaft::PhaseImpl
+    // Relative weight of this node in the A-weighted mean (dt/dphi = r^2 / h, h cancels).
+    float a = constantA ? 1.0 :
+      r * r / (attenuationCoefficients.x + r * (attenuationCoefficients.y +
+        attenuationCoefficients.z * r));
+    smoothSum += nodeWeights[i] * a * phase * spot * exp(-sigmaT * (r + t));
+    weightSum += nodeWeights[i] * a;
+    if (i == 1)
+    {
+      sampleVC = pointVC;
+    }
   }
-  else
-  {
-    // tan of the mean equiangular angle, written without dividing by h.
-    float r0 = sqrt(h2 + x0 * x0);
-    float r1 = sqrt(h2 + x1 * x1);
-    xm = (x0 * r1 + x1 * r0) / max(r0 + r1, 1e-30);
-  }
-  float tm = xm - b;
-  vec3 sampleVC = originVC + tm * dirVC;
 
-  vec3 toSample = sampleVC - lightPositionVC;
-  float r = length(toSample);
-  vec3 lightDir = toSample / max(r, 1e-30);
-  float cosAxis = max(dot(lightDir, lightAxisVC), 0.0);
-  float spot = (spotExponent == 0.0) ? 1.0 : pow(cosAxis, spotExponent);
-  float cosTheta = -dot(dirVC, lightDir);
-
-  float phase;
-  //VTK::LightShaft::PhaseImpl
-
+  // Visibility once per segment, at its (equiangular) midpoint.
   float visibility = 1.0;
   //VTK::LightShaft::ShadowImpl
 
-  vec3 radiance = sigmaS * lightRadiantIntensity * (phase * spot * visibility * weight) *
-    exp(-sigmaT * (r + tm));
+  vec3 radiance = sigmaS * lightRadiantIntensity * (weight * visibility / max(weightSum, 1e-30)) *
+    smoothSum;
   gl_FragData[0] = vec4(radiance, 0.0);
 }

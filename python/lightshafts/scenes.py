@@ -1,0 +1,114 @@
+"""Ready-made scenes for examples, tests and benchmarks.
+
+Each builder adds props and a spotlight to a renderer, sets its camera, and returns a
+`SceneInfo` that describes the scene analytically (for the float64 reference in tests/).
+"""
+
+from dataclasses import dataclass, field
+
+from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkPlaneSource, vtkSphereSource
+from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper
+
+
+@dataclass
+class SceneInfo:
+    light: vtkLight
+    spheres: list = field(default_factory=list)  # (centre, radius)
+    floors: list = field(default_factory=list)  # (height, xmin, xmax, zmin, zmax)
+    actors: list = field(default_factory=list)
+
+
+def _actor(source, color=(0.8, 0.8, 0.8)):
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(source.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(*color)
+    return actor
+
+
+def add_spotlight(renderer, position, focal_point, cone_angle=30.0, intensity=1.0,
+                  color=(1.0, 1.0, 1.0), exponent=1.0, attenuation=(1.0, 0.0, 0.0)):
+    """Add a positional spotlight (VTK's conventions) to `renderer` and return it."""
+    light = vtkLight()
+    light.SetLightTypeToSceneLight()
+    light.SetPositional(True)
+    light.SetPosition(*position)
+    light.SetFocalPoint(*focal_point)
+    light.SetConeAngle(cone_angle)
+    light.SetExponent(exponent)
+    light.SetAttenuationValues(*attenuation)
+    light.SetIntensity(intensity)
+    light.SetColor(*color)
+    renderer.AddLight(light)
+    return light
+
+
+def sphere_and_floor(renderer, sphere_resolution=256, floor_half_size=6.0):
+    """A spotlight above a sphere over a square floor: the core test scene.
+
+    Light at (0.5, 6, 0) aiming at the origin, 30 degree half-angle; sphere of radius 0.8 at
+    (0, 1.5, 0); floor y = 0, |x|, |z| <= floor_half_size; camera at (0, 3, 12) looking at
+    (0, 2, 0), 30 degree view angle.
+    """
+    centre, radius = (0.0, 1.5, 0.0), 0.8
+    sphere = vtkSphereSource()
+    sphere.SetCenter(*centre)
+    sphere.SetRadius(radius)
+    sphere.SetThetaResolution(sphere_resolution)
+    sphere.SetPhiResolution(sphere_resolution)
+    floor = vtkPlaneSource()
+    s = floor_half_size
+    floor.SetOrigin(-s, 0.0, -s)
+    floor.SetPoint1(-s, 0.0, s)
+    floor.SetPoint2(s, 0.0, -s)
+    actors = [_actor(sphere, (0.9, 0.5, 0.3)), _actor(floor, (0.8, 0.8, 0.8))]
+    for actor in actors:
+        renderer.AddActor(actor)
+    light = add_spotlight(renderer, (0.5, 6.0, 0.0), (0.0, 0.0, 0.0), cone_angle=30.0)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(0.0, 3.0, 12.0)
+    camera.SetFocalPoint(0.0, 2.0, 0.0)
+    camera.SetViewUp(0.0, 1.0, 0.0)
+    camera.SetViewAngle(30.0)
+    renderer.ResetCameraClippingRange()
+    return SceneInfo(light=light, spheres=[(centre, radius)],
+                     floors=[(0.0, -s, s, -s, s)], actors=actors)
+
+
+def window_room(renderer):
+    """A spotlight shining through a window frame (four bars) onto a floor."""
+    actors = []
+    floor = vtkPlaneSource()
+    floor.SetOrigin(-8.0, 0.0, -8.0)
+    floor.SetPoint1(-8.0, 0.0, 8.0)
+    floor.SetPoint2(8.0, 0.0, -8.0)
+    actors.append(_actor(floor, (0.75, 0.7, 0.65)))
+    # A wall at x = -3 with a window split into four panes by a cross of bars.
+    pieces = [
+        # centre (x, y, z), lengths (dx, dy, dz)
+        ((-3.0, 0.75, 0.0), (0.2, 1.5, 9.0)),  # below the window
+        ((-3.0, 6.25, 0.0), (0.2, 2.5, 9.0)),  # above the window
+        ((-3.0, 3.25, -3.0), (0.2, 3.5, 3.0)),  # left
+        ((-3.0, 3.25, 3.0), (0.2, 3.5, 3.0)),  # right
+        ((-3.0, 3.25, 0.0), (0.2, 3.5, 0.25)),  # vertical bar
+        ((-3.0, 3.25, 0.0), (0.2, 0.25, 3.0)),  # horizontal bar
+    ]
+    for (cx, cy, cz), (dx, dy, dz) in pieces:
+        cube = vtkCubeSource()
+        cube.SetCenter(cx, cy, cz)
+        cube.SetXLength(dx)
+        cube.SetYLength(dy)
+        cube.SetZLength(dz)
+        actors.append(_actor(cube, (0.55, 0.45, 0.35)))
+    for actor in actors:
+        renderer.AddActor(actor)
+    light = add_spotlight(renderer, (-9.0, 8.0, 1.0), (0.5, 0.0, -0.5), cone_angle=22.0,
+                          intensity=1.0, color=(1.0, 0.93, 0.8))
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(9.0, 3.0, 10.0)
+    camera.SetFocalPoint(-1.0, 2.0, 0.0)
+    camera.SetViewUp(0.0, 1.0, 0.0)
+    camera.SetViewAngle(40.0)
+    renderer.ResetCameraClippingRange()
+    return SceneInfo(light=light, floors=[(0.0, -8.0, 8.0, -8.0, 8.0)], actors=actors)
