@@ -1,5 +1,6 @@
 #include "vtkLightShaftPass.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
 #include "vtkFloatArray.h"
@@ -45,6 +46,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace
@@ -226,6 +228,8 @@ public:
   vtkSmartPointer<vtkLight> Light;
   vtkWeakPointer<vtkLight> LastUsedLight;
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
+  vtkNew<vtkCallbackCommand> WindowDeleted;
+  unsigned long WindowDeletedTag = 0;
   bool WarnedNoLight = false;
 
   // Used when no delegate is set: renders like VTK's default pipeline.
@@ -285,6 +289,41 @@ public:
     const CameraFrame& camera,
     int w,
     int h);
+
+  // Track the window whose context holds our GL objects. When it goes away first, free them
+  // while its context still exists (at DeleteEvent the window is still whole).
+  void Track(vtkOpenGLRenderWindow* window)
+  {
+    if (this->Window == window)
+    {
+      return;
+    }
+    this->Untrack();
+    this->Window = window;
+    this->WindowDeleted->SetClientData(this);
+    this->WindowDeleted->SetCallback(
+      [](vtkObject* caller, unsigned long, void* clientData, void*)
+      {
+        auto* self = static_cast<Internals*>(clientData);
+        auto* dying = static_cast<vtkOpenGLRenderWindow*>(caller);
+        dying->MakeCurrent();
+        dying->MakeCurrent();
+        self->ReleaseOwnResources(dying);
+        self->Window = nullptr;
+        self->WindowDeletedTag = 0;
+      });
+    this->WindowDeletedTag = window->AddObserver(vtkCommand::DeleteEvent, this->WindowDeleted);
+  }
+
+  void Untrack()
+  {
+    if (this->Window && this->WindowDeletedTag)
+    {
+      this->Window->RemoveObserver(this->WindowDeletedTag);
+    }
+    this->WindowDeletedTag = 0;
+    this->Window = nullptr;
+  }
 
   void ReleaseOwnResources(vtkWindow* w)
   {
@@ -355,6 +394,7 @@ vtkLightShaftPass::~vtkLightShaftPass()
     window->MakeCurrent();
     this->Impl->ReleaseOwnResources(window);
   }
+  this->Impl->Untrack();
 }
 
 //------------------------------------------------------------------------------
@@ -486,7 +526,28 @@ bool IsSpotLight(vtkLight* light)
 //------------------------------------------------------------------------------
 void vtkLightShaftPass::Render(const vtkRenderState* s)
 {
-  vtkOpenGLClearErrorMacro();
+  // Errors left by others are not ours: drain them, then count what this frame raises.
+  for (int guard = 0; guard < 64 && glGetError() != GL_NO_ERROR; ++guard)
+  {
+  }
+  this->RenderFrame(s);
+  this->LastGLErrorCount = 0;
+  std::string names;
+  for (GLenum error = glGetError(); error != GL_NO_ERROR && this->LastGLErrorCount < 64;
+       error = glGetError())
+  {
+    ++this->LastGLErrorCount;
+    names += std::string(names.empty() ? "" : ", ") + vtkOpenGLStrError(error);
+  }
+  if (this->LastGLErrorCount > 0)
+  {
+    vtkErrorMacro("OpenGL errors during the frame: " << names);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
+{
   Internals& impl = *this->Impl;
 
   this->NumberOfRenderedProps = 0;
@@ -502,7 +563,17 @@ void vtkLightShaftPass::Render(const vtkRenderState* s)
     vtkErrorMacro("vtkLightShaftPass needs an OpenGL render window.");
     return;
   }
-  impl.Window = renWin;
+  if (impl.Window != renWin)
+  {
+    // Objects made in another window's context cannot be used here.
+    if (impl.Window)
+    {
+      impl.Window->MakeCurrent();
+      impl.ReleaseOwnResources(impl.Window);
+      renWin->MakeCurrent();
+    }
+    impl.Track(renWin);
+  }
   vtkRenderPass* delegate =
     this->DelegatePass ? this->DelegatePass : static_cast<vtkRenderPass*>(impl.DefaultDelegate);
 
@@ -660,7 +731,16 @@ void vtkLightShaftPass::Internals::AllocateTargets(vtkOpenGLRenderWindow* renWin
     impl.SceneColor = makeTexture();
     impl.SceneColor->Allocate2D(w, h, 4, VTK_UNSIGNED_CHAR);
     impl.SceneDepth = makeTexture();
-    impl.SceneDepth->AllocateDepth(w, h, vtkTextureObject::Float32);
+    // The depth format VTK 9.1's GPU volume mapper allocates, so that its depth blit from the
+    // current target (our scene target) is legal.
+    if (renWin->GetStencilCapable())
+    {
+      impl.SceneDepth->AllocateDepthStencil(w, h);
+    }
+    else
+    {
+      impl.SceneDepth->AllocateDepth(w, h, vtkTextureObject::Fixed32);
+    }
     impl.InScatter = makeTexture();
     impl.InScatter->SetInternalFormat(GL_RGBA32F);
     impl.InScatter->SetFormat(GL_RGBA);

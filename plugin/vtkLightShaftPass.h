@@ -204,6 +204,12 @@ public:
   vtkGetVector2Macro(LastViewportSize, int);
   ///@}
 
+  /**
+   * Number of OpenGL errors raised while the last frame rendered (the pass, its delegate and
+   * its internal passes); 0 when all is well. Errors pending before the frame are not counted.
+   */
+  vtkGetMacro(LastGLErrorCount, int);
+
 protected:
   vtkLightShaftPass();
   ~vtkLightShaftPass() override;
@@ -223,8 +229,11 @@ protected:
   bool LastShadowMapRendered = false;
   double LastSliceDepthRange[2] = { 0.0, 0.0 };
   int LastViewportSize[2] = { 0, 0 };
+  int LastGLErrorCount = 0;
 
 private:
+  void RenderFrame(const vtkRenderState* s);
+
   vtkLightShaftPass(const vtkLightShaftPass&) = delete;
   void operator=(const vtkLightShaftPass&) = delete;
 

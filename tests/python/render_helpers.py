@@ -9,12 +9,27 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 import lightshaft_reference as ref
 
 
+_shared_window = None
+
+
 def make_window(width=320, height=240):
+    """A fresh renderer in the session's one offscreen window.
+
+    One window serves every test: Mesa 22's llvmpipe under Xvfb intermittently fails to open a
+    new X display right after a window that rendered heavy shaders is destroyed (see README,
+    Known issues), so the tests do not create and destroy windows one after another.
+    """
+    global _shared_window
+    if _shared_window is None:
+        _shared_window = vtkRenderWindow()
+        _shared_window.SetOffScreenRendering(1)
+        _shared_window.SetMultiSamples(0)
+    window = _shared_window
+    renderers = window.GetRenderers()
+    while renderers.GetNumberOfItems() > 0:
+        window.RemoveRenderer(renderers.GetFirstRenderer())
     renderer = vtkRenderer()
     renderer.SetBackground(0.0, 0.0, 0.0)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetMultiSamples(0)
     window.AddRenderer(renderer)
     window.SetSize(width, height)
     return renderer, window

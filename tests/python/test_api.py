@@ -1,0 +1,147 @@
+"""Parameters: defaults, round trips, clamping, and refusal of non-finite values."""
+
+import math
+
+import pytest
+
+import lightshafts
+from lightshafts import vtkLightShaftPass
+from vtkmodules.vtkRenderingCore import vtkLight
+from vtkmodules.vtkRenderingOpenGL2 import vtkImageProcessingPass, vtkRenderStepsPass
+
+
+def test_import_and_type():
+    p = vtkLightShaftPass()
+    assert isinstance(p, vtkImageProcessingPass)
+    assert p.GetClassName() == "vtkLightShaftPass"
+    assert "vtkLightShaftPass" in lightshafts.__all__
+
+
+def test_defaults():
+    p = vtkLightShaftPass()
+    assert p.GetScatteringCoefficient() == (0.1, 0.1, 0.1)
+    assert p.GetAbsorptionCoefficient() == (0.0, 0.0, 0.0)
+    assert p.GetPhaseFunction() == vtkLightShaftPass.ISOTROPIC
+    assert p.GetAnisotropy() == 0.0
+    assert p.GetExposure() == 1.0
+    assert p.GetAttenuateScene() is True or p.GetAttenuateScene() == 1
+    assert p.GetNumberOfSlices() == 128
+    assert p.GetShadowMapSize() == 1024
+    assert p.GetLight() is None
+    assert p.GetDelegatePass() is None
+
+
+@pytest.mark.parametrize("name,value", [
+    ("NumberOfSlices", 512),
+    ("ShadowMapSize", 2048),
+    ("Exposure", 3.5),
+    ("Anisotropy", -0.4),
+    ("PhaseFunction", vtkLightShaftPass.RAYLEIGH),
+])
+def test_scalar_round_trip(name, value):
+    p = vtkLightShaftPass()
+    getattr(p, "Set" + name)(value)
+    assert getattr(p, "Get" + name)() == value
+
+
+@pytest.mark.parametrize("name", ["ScatteringCoefficient", "AbsorptionCoefficient"])
+def test_vector_round_trip(name):
+    p = vtkLightShaftPass()
+    getattr(p, "Set" + name)(0.25, 0.5, 0.75)
+    assert getattr(p, "Get" + name)() == (0.25, 0.5, 0.75)
+    getattr(p, "Set" + name)((1.0, 2.0, 3.0))
+    assert getattr(p, "Get" + name)() == (1.0, 2.0, 3.0)
+    getattr(p, "Set" + name)(0.125)
+    assert getattr(p, "Get" + name)() == (0.125, 0.125, 0.125)
+
+
+def test_named_phase_setters():
+    p = vtkLightShaftPass()
+    p.SetPhaseFunctionToHenyeyGreenstein()
+    assert p.GetPhaseFunction() == vtkLightShaftPass.HENYEY_GREENSTEIN == 1
+    p.SetPhaseFunctionToRayleigh()
+    assert p.GetPhaseFunction() == vtkLightShaftPass.RAYLEIGH == 2
+    p.SetPhaseFunctionToIsotropic()
+    assert p.GetPhaseFunction() == vtkLightShaftPass.ISOTROPIC == 0
+
+
+def test_boolean_macros():
+    p = vtkLightShaftPass()
+    p.AttenuateSceneOff()
+    assert not p.GetAttenuateScene()
+    p.AttenuateSceneOn()
+    assert p.GetAttenuateScene()
+
+
+@pytest.mark.parametrize("name,low,high,expect_low,expect_high", [
+    ("NumberOfSlices", 0, 10 ** 6, 1, 4096),
+    ("ShadowMapSize", 1, 10 ** 6, 16, 16384),
+    ("Exposure", -1.0, 1e9, 0.0, 1e6),
+    ("Anisotropy", -5.0, 5.0, -0.99, 0.99),
+    ("PhaseFunction", -3, 17, 0, 2),
+])
+def test_scalar_clamping(name, low, high, expect_low, expect_high):
+    p = vtkLightShaftPass()
+    getattr(p, "Set" + name)(low)
+    assert getattr(p, "Get" + name)() == expect_low
+    getattr(p, "Set" + name)(high)
+    assert getattr(p, "Get" + name)() == expect_high
+
+
+@pytest.mark.parametrize("name", ["ScatteringCoefficient", "AbsorptionCoefficient"])
+def test_vector_clamping(name):
+    p = vtkLightShaftPass()
+    getattr(p, "Set" + name)(-1.0, 0.5, 1e9)
+    assert getattr(p, "Get" + name)() == (0.0, 0.5, 1e6)
+
+
+@pytest.mark.parametrize("name,args", [
+    ("ScatteringCoefficient", (math.nan, 0.1, 0.1)),
+    ("ScatteringCoefficient", (0.1, math.inf, 0.1)),
+    ("ScatteringCoefficient", (math.nan,)),
+    ("AbsorptionCoefficient", (0.1, 0.1, -math.inf)),
+    ("Anisotropy", (math.nan,)),
+    ("Exposure", (math.inf,)),
+    ("Exposure", (math.nan,)),
+])
+def test_non_finite_refused(messages, name, args):
+    p = vtkLightShaftPass()
+    log = messages(p)
+    before = getattr(p, "Get" + name)()
+    mtime = p.GetMTime()
+    getattr(p, "Set" + name)(*args)
+    assert getattr(p, "Get" + name)() == before
+    assert p.GetMTime() == mtime
+    assert len(log.errors) == 1
+    assert name in log.errors[0]
+
+
+def test_light_round_trip():
+    p = vtkLightShaftPass()
+    light = vtkLight()
+    p.SetLight(light)
+    assert p.GetLight() is light
+    p.SetLight(None)
+    assert p.GetLight() is None
+
+
+def test_delegate_round_trip():
+    p = vtkLightShaftPass()
+    steps = vtkRenderStepsPass()
+    p.SetDelegatePass(steps)
+    assert p.GetDelegatePass() is steps
+
+
+def test_readback_before_render_fails_cleanly(messages):
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    p = vtkLightShaftPass()
+    log = messages(p)
+    image = vtkImageData()
+    assert not p.GetInScatteredRadiance(image)
+    assert len(log.errors) == 1
+
+
+def test_release_without_window_is_safe():
+    p = vtkLightShaftPass()
+    p.ReleaseGraphicsResources(None)
+    p.ReleaseGraphicsResources(None)

@@ -1,0 +1,321 @@
+"""Offscreen rendering: invariants, readback layout, any-scene compatibility, robustness."""
+
+import numpy as np
+import pytest
+
+from lightshafts import scenes, vtkLightShaftPass
+from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
+from vtkmodules.vtkRenderingCore import (
+    vtkActor, vtkColorTransferFunction, vtkRenderer, vtkTextActor, vtkVolume, vtkVolumeProperty)
+from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
+from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLGPUVolumeRayCastMapper
+from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
+from vtkmodules.vtkFiltersSources import vtkSphereSource
+from vtkmodules.vtkRenderingCore import vtkPolyDataMapper
+import vtkmodules.vtkRenderingFreeType  # noqa: F401
+
+import lightshaft_reference as ref
+import render_helpers as rh
+
+
+def shaft_scene(width=200, height=150, **params):
+    renderer, window = rh.make_window(width, height)
+    info = scenes.sphere_and_floor(renderer, sphere_resolution=64)
+    shafts = vtkLightShaftPass()
+    shafts.SetScatteringCoefficient(0.05)
+    shafts.SetAbsorptionCoefficient(0.01)
+    shafts.SetExposure(40.0)
+    for name, value in params.items():
+        getattr(shafts, "Set" + name)(value)
+    renderer.SetPass(shafts)
+    return renderer, window, info, shafts
+
+
+def test_render_smoke_and_statistics():
+    renderer, window, _, shafts = shaft_scene(NumberOfSlices=64)
+    window.Render()
+    assert shafts.GetLastNumberOfSlicesDrawn() == 64
+    assert shafts.GetLastShadowMapRendered()
+    near, far = shafts.GetLastSliceDepthRange()
+    assert 0 < near < far
+    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastUsedLight() is renderer.GetLights().GetItemAsObject(0)
+    pixels = rh.screenshot(window)
+    assert pixels.max() > 0
+
+
+def test_readback_shape_and_orientation():
+    renderer, window, info, shafts = shaft_scene(NumberOfSlices=128)
+    window.Render()
+    image = vtkImageData()
+    assert shafts.GetInScatteredRadiance(image)
+    assert image.GetDimensions() == (200, 150, 1)
+    scalars = image.GetPointData().GetScalars()
+    assert scalars.GetName() == "InScatteredRadiance"
+    assert scalars.GetNumberOfComponents() == 3
+    assert scalars.GetDataType() == 10  # VTK_FLOAT
+    measured = rh.in_scatter(shafts)
+    reference = rh.reference_for(renderer, window, info, shafts)
+    upright, _ = ref.relative_rms_error(measured, reference)
+    flipped, _ = ref.relative_rms_error(measured[::-1], reference)
+    mirrored, _ = ref.relative_rms_error(measured[:, ::-1], reference)
+    assert upright < 0.05
+    assert flipped > 0.5 and mirrored > 0.2
+    # The readback is before exposure: independent of Exposure.
+    shafts.SetExposure(1.0)
+    window.Render()
+    np.testing.assert_array_equal(rh.in_scatter(shafts), measured)
+
+
+def test_zero_medium_is_pixel_identical_to_delegate():
+    renderer, window = rh.make_window(200, 150)
+    scenes.sphere_and_floor(renderer, sphere_resolution=64)
+    window.Render()
+    plain = rh.screenshot(window)
+    shafts = vtkLightShaftPass()
+    shafts.SetScatteringCoefficient(0.0)
+    shafts.SetAbsorptionCoefficient(0.0)
+    renderer.SetPass(shafts)
+    window.Render()
+    np.testing.assert_array_equal(rh.screenshot(window), plain)
+    assert shafts.GetLastNumberOfSlicesDrawn() == 0
+    assert not shafts.GetLastShadowMapRendered()
+    assert np.all(rh.in_scatter(shafts) == 0.0)
+
+
+def test_composite_path_preserves_scene_exactly():
+    # Medium present but nothing added and no attenuation: the off-screen scene copy and the
+    # composite must reproduce the delegate's pixels exactly.
+    renderer, window = rh.make_window(200, 150)
+    scenes.sphere_and_floor(renderer, sphere_resolution=64)
+    window.Render()
+    plain = rh.screenshot(window)
+    shafts = vtkLightShaftPass()
+    shafts.SetExposure(0.0)
+    shafts.AttenuateSceneOff()
+    renderer.SetPass(shafts)
+    window.Render()
+    assert shafts.GetLastNumberOfSlicesDrawn() > 0
+    np.testing.assert_array_equal(rh.screenshot(window), plain)
+
+
+def test_aerial_perspective_matches_transmittance():
+    # Only absorption: no in-scatter; the scene is multiplied by exp(-sigma_a t_surface).
+    renderer, window = rh.make_window(200, 150)
+    info = scenes.sphere_and_floor(renderer, sphere_resolution=64)
+    renderer.SetBackground(0.5, 0.5, 0.5)
+    window.Render()
+    plain = rh.screenshot(window).astype(float)
+    shafts = vtkLightShaftPass()
+    shafts.SetScatteringCoefficient(0.0)
+    shafts.SetAbsorptionCoefficient(0.05, 0.1, 0.2)
+    renderer.SetPass(shafts)
+    window.Render()
+    fogged = rh.screenshot(window).astype(float)
+    cam = renderer.GetActiveCamera()
+    camera = ref.Camera(cam.GetPosition(), cam.GetFocalPoint(), cam.GetViewUp(),
+                        cam.GetViewAngle(), cam.GetClippingRange(), 200, 150)
+    eye, dirs, forward = ref.camera_rays(camera)
+    t = ref.surface_distance(eye, dirs.reshape(-1, 3), forward, camera,
+                             ref.Scene(spheres=info.spheres, floors=info.floors))
+    transmittance = np.exp(-np.outer(t, [0.05, 0.1, 0.2])).reshape(150, 200, 3)
+    expected = plain * transmittance
+    # 8-bit rounding (and the tessellated sphere's silhouette) aside, they agree.
+    close = np.abs(fogged - expected) <= 1.0
+    assert close.mean() > 0.995
+    assert shafts.GetLastNumberOfSlicesDrawn() == 0
+
+
+def test_no_light_renders_unchanged_and_warns_once(messages):
+    renderer, window = rh.make_window(160, 120)
+    info = scenes.sphere_and_floor(renderer, sphere_resolution=32)
+    renderer.RemoveAllLights()
+    window.Render()
+    plain = rh.screenshot(window)
+    shafts = vtkLightShaftPass()
+    log = messages(shafts)
+    renderer.SetPass(shafts)
+    for _ in range(5):
+        window.Render()
+    np.testing.assert_array_equal(rh.screenshot(window), plain)
+    assert len(log.warnings) == 1
+    assert shafts.GetLastUsedLight() is None
+    # A light that is not a spotlight, given explicitly: same answer, one more warning.
+    info.light.SetConeAngle(120.0)
+    shafts.SetLight(info.light)
+    window.Render()
+    window.Render()
+    assert len(log.warnings) == 2
+    assert log.errors == []
+
+
+def test_light_chosen_explicitly_over_automatic():
+    renderer, window, info, shafts = shaft_scene(NumberOfSlices=32)
+    other = scenes.add_spotlight(renderer, (0, 8, 8), (0, 0, 0), cone_angle=10)
+    shafts.SetLight(other)
+    window.Render()
+    assert shafts.GetLastUsedLight() is other
+
+
+def test_many_frames_and_resizes_without_gl_errors():
+    renderer, window, _, shafts = shaft_scene(NumberOfSlices=32)
+    for size in [(200, 150), (64, 48), (1, 1), (333, 211), (200, 150)]:
+        window.SetSize(*size)
+        for _ in range(3):
+            window.Render()
+            assert shafts.GetLastGLErrorCount() == 0
+        assert rh.in_scatter(shafts).shape == (size[1], size[0], 3)
+    shafts.SetPhaseFunctionToHenyeyGreenstein()
+    shafts.SetShadowMapSize(256)
+    for _ in range(3):
+        window.Render()
+        assert shafts.GetLastGLErrorCount() == 0
+
+
+def test_release_graphics_resources_is_idempotent():
+    renderer, window, _, shafts = shaft_scene(NumberOfSlices=32)
+    window.Render()
+    first = rh.in_scatter(shafts)
+    shafts.ReleaseGraphicsResources(window)
+    shafts.ReleaseGraphicsResources(window)
+    window.Render()
+    np.testing.assert_allclose(rh.in_scatter(shafts), first, rtol=1e-5, atol=1e-9)
+    assert shafts.GetLastGLErrorCount() == 0
+
+
+def test_overlay_stays_on_top_unfogged():
+    def text_pixels(with_pass):
+        renderer, window = rh.make_window(200, 150)
+        scenes.sphere_and_floor(renderer, sphere_resolution=32)
+        text = vtkTextActor()
+        text.SetInput("SHAFT")
+        text.GetTextProperty().SetFontSize(40)
+        text.GetTextProperty().SetColor(1.0, 0.0, 0.0)
+        text.SetPosition(50, 60)  # over the lit cone
+        renderer.AddActor2D(text)
+        if with_pass:
+            shafts = vtkLightShaftPass()
+            shafts.SetScatteringCoefficient(0.2)
+            shafts.AttenuateSceneOff()
+            shafts.SetExposure(100.0)
+            renderer.SetPass(shafts)
+        window.Render()
+        return rh.screenshot(window)
+
+    plain = text_pixels(False)
+    fogged = text_pixels(True)
+    pure_red = np.all(plain == [255, 0, 0], axis=-1)
+    assert pure_red.sum() > 50
+    # Wherever the text is opaque red without the pass it is still exactly red with it.
+    assert np.all(fogged[pure_red] == [255, 0, 0])
+    # ... while the shafts brightened the rest of the image.
+    assert fogged[~pure_red].astype(int).sum() > plain[~pure_red].astype(int).sum()
+
+
+def test_user_render_steps_delegate_keeps_its_overlay():
+    renderer, window, _, shafts = shaft_scene(NumberOfSlices=16)
+    steps = vtkRenderStepsPass()
+    shafts.SetDelegatePass(steps)
+    overlay = steps.GetOverlayPass()
+    window.Render()
+    assert steps.GetOverlayPass() is overlay
+    assert shafts.GetLastGLErrorCount() == 0
+
+
+def test_viewport_is_honoured():
+    width, height = 240, 120
+    renderer, window = rh.make_window(width, height)
+    renderer.SetViewport(0.0, 0.0, 0.5, 1.0)
+    info = scenes.sphere_and_floor(renderer, sphere_resolution=64)
+    right = vtkRenderer()
+    right.SetViewport(0.5, 0.0, 1.0, 1.0)
+    right.SetBackground(0.2, 0.3, 0.4)
+    window.AddRenderer(right)
+    shafts = vtkLightShaftPass()
+    shafts.SetScatteringCoefficient(0.05)
+    shafts.SetNumberOfSlices(256)
+    renderer.SetPass(shafts)
+    window.Render()
+    assert tuple(shafts.GetLastViewportSize()) == (width // 2, height)
+    measured = rh.in_scatter(shafts)
+    assert measured.shape == (height, width // 2, 3)
+    cam = renderer.GetActiveCamera()
+    camera = ref.Camera(cam.GetPosition(), cam.GetFocalPoint(), cam.GetViewUp(),
+                        cam.GetViewAngle(), cam.GetClippingRange(), width // 2, height)
+    L = info.light
+    reference = ref.in_scattered_radiance(
+        camera,
+        ref.Spotlight(L.GetPosition(), L.GetFocalPoint(), L.GetConeAngle(), L.GetExponent(),
+                      L.GetAttenuationValues(), L.GetIntensity(), L.GetDiffuseColor()),
+        ref.Medium(shafts.GetScatteringCoefficient(), shafts.GetAbsorptionCoefficient()),
+        ref.Scene(spheres=info.spheres, floors=info.floors))
+    error, _ = ref.relative_rms_error(measured, reference)
+    assert error < 0.05
+    # The other renderer's half is untouched.
+    pixels = rh.screenshot(window)
+    assert np.all(pixels[:, width // 2:] == [51, 76, 102])
+
+
+def test_translucent_and_volume_props_still_render():
+    def render(with_pass):
+        renderer, window = rh.make_window(200, 150)
+        scenes.sphere_and_floor(renderer, sphere_resolution=32)
+        renderer.SetUseDepthPeeling(True)
+        glass = vtkSphereSource()
+        glass.SetCenter(-1.5, 1.0, 2.0)
+        glass.SetRadius(0.6)
+        mapper = vtkPolyDataMapper()
+        mapper.SetInputConnection(glass.GetOutputPort())
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        actor.GetProperty().SetColor(0.2, 0.4, 1.0)
+        actor.GetProperty().SetOpacity(0.4)
+        renderer.AddActor(actor)
+        source = vtkRTAnalyticSource()
+        source.SetWholeExtent(-8, 8, -8, 8, -8, 8)
+        volume_mapper = vtkOpenGLGPUVolumeRayCastMapper()
+        volume_mapper.SetInputConnection(source.GetOutputPort())
+        opacity = vtkPiecewiseFunction()
+        opacity.AddPoint(37, 0.0)
+        opacity.AddPoint(276, 0.6)
+        colors = vtkColorTransferFunction()
+        colors.AddRGBPoint(37, 0.0, 1.0, 0.0)
+        colors.AddRGBPoint(276, 1.0, 1.0, 0.0)
+        prop = vtkVolumeProperty()
+        prop.SetScalarOpacity(opacity)
+        prop.SetColor(colors)
+        volume = vtkVolume()
+        volume.SetMapper(volume_mapper)
+        volume.SetProperty(prop)
+        volume.SetScale(0.06, 0.06, 0.06)
+        volume.SetPosition(1.8, 1.0, 2.0)
+        renderer.AddVolume(volume)
+        shafts = None
+        if not with_pass:
+            # The pass's contract is vtkRenderStepsPass's image (VTK's pass-less path blends
+            # translucency differently).
+            renderer.SetPass(vtkRenderStepsPass())
+        else:
+            shafts = vtkLightShaftPass()
+            shafts.SetScatteringCoefficient(1e-6)  # medium present, effect negligible
+            shafts.AttenuateSceneOff()
+            renderer.SetPass(shafts)
+        window.Render()
+        return rh.screenshot(window), shafts
+
+    plain, _ = render(False)
+    through_pass, shafts = render(True)
+    assert shafts.GetLastGLErrorCount() == 0
+    # Same picture (the medium is almost empty), translucent sphere and volume included.
+    assert np.abs(through_pass.astype(int) - plain.astype(int)).max() <= 1
+
+
+def test_light_volume_outside_view_skips_work():
+    renderer, window, info, shafts = shaft_scene(NumberOfSlices=64)
+    info.light.SetPosition(0.0, 6.0, 40.0)  # behind the camera, aiming away
+    info.light.SetFocalPoint(0.0, 6.0, 80.0)
+    window.Render()
+    assert shafts.GetLastNumberOfSlicesDrawn() == 0
+    assert not shafts.GetLastShadowMapRendered()
+    assert np.all(rh.in_scatter(shafts) == 0.0)
