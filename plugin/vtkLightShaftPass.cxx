@@ -24,10 +24,14 @@
 #include "vtkPointData.h"
 #include "vtkProp.h"
 #include "vtkPropCollection.h"
+#include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
+#include "vtkSequencePass.h"
 #include "vtkShaderProgram.h"
+#include "vtkShadowMapBakerPass.h"
+#include "vtkShadowMapPass.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkWeakPointer.h"
@@ -45,6 +49,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -232,8 +237,11 @@ public:
   unsigned long WindowDeletedTag = 0;
   bool WarnedNoLight = false;
 
-  // Used when no delegate is set: renders like VTK's default pipeline.
+  // Used when no delegate is set: renders like VTK's default pipeline, or with the opaque step
+  // shadowed by vtkShadowMapPass (ShadowSurfaces).
   vtkNew<vtkRenderStepsPass> DefaultDelegate;
+  vtkNew<vtkRenderStepsPass> ShadowedDelegate;
+  vtkNew<vtkShadowMapPass> SurfaceShadows;
 
   // Shadow map: the opaque step rendered from the light's camera.
   vtkNew<vtkCameraPass> ShadowCameraPass;
@@ -325,6 +333,50 @@ public:
     this->Window = nullptr;
   }
 
+  // VTK 9.1's shadow-map baker gives its light cameras the renderer's aspect ratio, so on a
+  // non-square viewport the surface shadows come out squeezed. Its cameras persist between
+  // frames: pin their aspect to the square shadow map's. Returns true when a camera had to be
+  // fixed (its shadow map, baked this frame, was wrong).
+  bool FixSurfaceShadowCameras()
+  {
+    bool fixed = false;
+    if (auto* cameras = this->SurfaceShadows->GetShadowMapBakerPass()->GetLightCameras())
+    {
+      for (auto& camera : *cameras)
+      {
+        if (camera &&
+            (!camera->GetUseExplicitAspectRatio() || camera->GetExplicitAspectRatio() != 1.0))
+        {
+          camera->SetExplicitAspectRatio(1.0);
+          camera->SetUseExplicitAspectRatio(true);
+          fixed = true;
+        }
+      }
+    }
+    return fixed;
+  }
+
+  // Render `delegate` with state `s`; with the shadowed delegate, make sure its shadow maps were
+  // baked with square cameras (re-render once when they were not).
+  void RenderDelegate(vtkLightShaftPass& self,
+    vtkRenderPass* delegate,
+    const vtkRenderState* s,
+    const std::function<void()>& render)
+  {
+    const bool shadowed = delegate == this->ShadowedDelegate.Get();
+    if (shadowed)
+    {
+      this->FixSurfaceShadowCameras();
+    }
+    render();
+    if (shadowed && this->FixSurfaceShadowCameras())
+    {
+      s->GetRenderer()->GetLights()->Modified(); // make the baker bake again
+      render();
+    }
+    self.NumberOfRenderedProps += delegate->GetNumberOfRenderedProps();
+  }
+
   void ReleaseOwnResources(vtkWindow* w)
   {
     for (vtkTextureObject* t : { this->SceneColor.Get(),
@@ -382,6 +434,14 @@ vtkLightShaftPass::vtkLightShaftPass()
   : Impl(new Internals)
 {
   this->Impl->ShadowCameraPass->SetDelegatePass(this->Impl->ShadowOpaquePass);
+
+  // Shadowed opaque step: bake the lights' shadow maps, then render the opaque props with them.
+  vtkNew<vtkRenderPassCollection> shadowedOpaque;
+  shadowedOpaque->AddItem(this->Impl->SurfaceShadows->GetShadowMapBakerPass());
+  shadowedOpaque->AddItem(this->Impl->SurfaceShadows);
+  vtkNew<vtkSequencePass> shadowedSequence;
+  shadowedSequence->SetPasses(shadowedOpaque);
+  this->Impl->ShadowedDelegate->SetOpaquePass(shadowedSequence);
 }
 
 //------------------------------------------------------------------------------
@@ -402,6 +462,7 @@ void vtkLightShaftPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   this->Impl->DefaultDelegate->ReleaseGraphicsResources(w);
+  this->Impl->ShadowedDelegate->ReleaseGraphicsResources(w);
   this->Impl->ShadowCameraPass->ReleaseGraphicsResources(w);
   this->Impl->ReleaseOwnResources(w);
 }
@@ -574,8 +635,16 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
     }
     impl.Track(renWin);
   }
-  vtkRenderPass* delegate =
-    this->DelegatePass ? this->DelegatePass : static_cast<vtkRenderPass*>(impl.DefaultDelegate);
+  vtkRenderPass* delegate = this->DelegatePass;
+  if (!delegate && this->ShadowSurfaces)
+  {
+    impl.SurfaceShadows->GetShadowMapBakerPass()->SetResolution(this->ShadowMapSize);
+    delegate = impl.ShadowedDelegate;
+  }
+  else if (!delegate)
+  {
+    delegate = impl.DefaultDelegate;
+  }
 
   int x = 0;
   int y = 0;
@@ -640,8 +709,7 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   if (!light || !hasMedium || w < 1 || h < 1)
   {
     // Nothing to add: the delegate's image, untouched.
-    delegate->Render(s);
-    this->NumberOfRenderedProps += delegate->GetNumberOfRenderedProps();
+    impl.RenderDelegate(*this, delegate, s, [&]() { delegate->Render(s); });
     vtkOpenGLCheckErrorMacro("failed after pass-through render");
     return;
   }
@@ -781,14 +849,19 @@ void vtkLightShaftPass::Internals::RenderScene(vtkLightShaftPass& self,
   ostate->vtkglDepthMask(GL_TRUE);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   ostate->vtkglClearDepth(1.0);
-  ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
 
   vtkRenderState sceneState(ren);
   sceneState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
   sceneState.SetFrameBuffer(impl.SceneFramebuffer);
-  delegate->Render(&sceneState);
-  self.NumberOfRenderedProps += delegate->GetNumberOfRenderedProps();
+  this->RenderDelegate(self,
+    delegate,
+    s,
+    [&]()
+    {
+      ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      ostate->vtkglEnable(GL_DEPTH_TEST);
+      delegate->Render(&sceneState);
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -1419,6 +1492,7 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Anisotropy: " << this->Anisotropy << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "AttenuateScene: " << this->AttenuateScene << "\n";
+  os << indent << "ShadowSurfaces: " << this->ShadowSurfaces << "\n";
   os << indent << "NumberOfSlices: " << this->NumberOfSlices << "\n";
   os << indent << "ShadowMapSize: " << this->ShadowMapSize << "\n";
   os << indent << "LastNumberOfSlicesDrawn: " << this->LastNumberOfSlicesDrawn << "\n";

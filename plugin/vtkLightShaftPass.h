@@ -40,8 +40,10 @@
  * With both coefficients zero, or with no usable light, the pass renders the delegate's image
  * unchanged (pixel-identical; one warning for a missing light).
  *
- * The lit pool on surfaces comes from VTK's own lighting, which has no shadows. To shadow
- * surfaces too, use a vtkShadowMapPass chain as the delegate (see README "Shadows on surfaces").
+ * The lit pool on surfaces comes from VTK's own lighting, which has no shadows. With
+ * ShadowSurfaces on (and no delegate set) the scene is rendered with VTK's vtkShadowMapPass in
+ * the opaque step, so the floor shows the same occluder shadows as the shafts; with your own
+ * delegate, put a vtkShadowMapPass in it (see README "Shadows on surfaces").
  *
  * @sa vtkImageProcessingPass vtkShadowMapPass
  */
@@ -167,6 +169,18 @@ public:
 
   ///@{
   /**
+   * Shadow the surfaces too: when no delegate is set, render the scene's opaque step through
+   * VTK's vtkShadowMapPass (shadow maps of ShadowMapSize texels for every shadow-casting light),
+   * so the pool of light on the floor shows the same shadows as the shafts. Ignored when a
+   * delegate is set. Default is off (the scene renders exactly as vtkRenderStepsPass would).
+   */
+  vtkSetMacro(ShadowSurfaces, bool);
+  vtkGetMacro(ShadowSurfaces, bool);
+  vtkBooleanMacro(ShadowSurfaces, bool);
+  ///@}
+
+  ///@{
+  /**
    * Number of view-aligned slabs spanning the depth range of the light volume inside the view,
    * in [1, 4096]. More slices: less error, more fill. Default is 128.
    */
@@ -221,6 +235,7 @@ protected:
   double Anisotropy = 0.0;
   double Exposure = 1.0;
   bool AttenuateScene = true;
+  bool ShadowSurfaces = false;
   int NumberOfSlices = 128;
   int ShadowMapSize = 1024;
 

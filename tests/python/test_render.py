@@ -319,3 +319,75 @@ def test_light_volume_outside_view_skips_work():
     assert shafts.GetLastNumberOfSlicesDrawn() == 0
     assert not shafts.GetLastShadowMapRendered()
     assert np.all(rh.in_scatter(shafts) == 0.0)
+
+
+def floor_shadow_masks(renderer, window, info, erode=2):
+    """Analytic floor masks (lit by the spot / in the sphere's shadow), eroded by `erode` px."""
+    cam = renderer.GetActiveCamera()
+    w, h = window.GetSize()
+    camera = ref.Camera(cam.GetPosition(), cam.GetFocalPoint(), cam.GetViewUp(),
+                        cam.GetViewAngle(), cam.GetClippingRange(), w, h)
+    eye, dirs, forward = ref.camera_rays(camera)
+    d = dirs.reshape(-1, 3)
+    scene = ref.Scene(spheres=info.spheres, floors=info.floors)
+    t = ref.surface_distance(eye, d, forward, camera, scene)
+    hit = eye + t[:, None] * d
+    on_floor = np.abs(hit[:, 1]) < 1e-9
+    light = np.asarray(info.light.GetPosition())
+    axis = np.asarray(info.light.GetFocalPoint()) - light
+    axis /= np.linalg.norm(axis)
+    to_hit = hit - light
+    r = np.linalg.norm(to_hit, axis=1)
+    in_cone = (to_hit @ axis) / r >= np.cos(np.radians(info.light.GetConeAngle()))
+    (centre, radius), = info.spheres
+    u = to_hit / r[:, None]
+    m = light - np.asarray(centre)
+    b = u @ m
+    disc = b * b - (m @ m - radius * radius)
+    shadowed = (disc > 0) & (-b - np.sqrt(np.maximum(disc, 0)) < r)
+
+    def erode_mask(mask):
+        mask = mask.reshape(h, w)
+        out = mask.copy()
+        for dy in range(-erode, erode + 1):
+            for dx in range(-erode, erode + 1):
+                out &= np.roll(np.roll(mask, dy, 0), dx, 1)
+        return out
+
+    lit = erode_mask(on_floor & in_cone & ~shadowed)
+    dark = erode_mask(on_floor & in_cone & shadowed)
+    return lit, dark
+
+
+def test_shadow_surfaces_agree_with_the_shafts_shadow():
+    renderer, window = rh.make_window(320, 240)
+    info = scenes.sphere_and_floor(renderer)
+    shafts = vtkLightShaftPass()
+    shafts.SetScatteringCoefficient(0.05)
+    shafts.SetExposure(0.0)  # look at the surfaces alone
+    shafts.AttenuateSceneOff()
+    shafts.SetShadowMapSize(2048)
+    shafts.ShadowSurfacesOn()
+    renderer.SetPass(shafts)
+    window.Render()
+    assert shafts.GetLastGLErrorCount() == 0
+    pixels = rh.screenshot(window).max(axis=-1)
+    lit, dark = floor_shadow_masks(renderer, window, info)
+    assert lit.sum() > 1000 and dark.sum() > 200
+    # The floor is dark exactly where the sphere shadows it from the spotlight...
+    assert np.mean(pixels[dark] < 8) > 0.99
+    assert np.mean(pixels[lit] > 40) > 0.99
+    # ... and the shafts are shadowed by the same sphere (checked against the reference, which
+    # uses the same analytic shadow).
+    shafts.SetExposure(1.0)
+    shafts.SetNumberOfSlices(256)
+    window.Render()
+    reference = rh.reference_for(renderer, window, info, shafts)
+    error, _ = ref.relative_rms_error(rh.in_scatter(shafts), reference)
+    assert error < 0.01
+    # Without it the floor under the sphere is lit (VTK lighting has no shadows).
+    shafts.ShadowSurfacesOff()
+    shafts.SetExposure(0.0)
+    window.Render()
+    pixels = rh.screenshot(window).max(axis=-1)
+    assert np.mean(pixels[dark] > 40) > 0.99

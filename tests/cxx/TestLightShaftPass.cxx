@@ -1,0 +1,210 @@
+// Image-regression and basic C++ API test of vtkLightShaftPass: renders the sphere-and-floor
+// scene offscreen, checks the in-scatter readback, and compares the frame with a baseline PNG.
+//
+// Usage: TestLightShaftPass <baseline.png> [--update]
+//   --update writes the baseline instead of comparing (then check the image by eye).
+
+#include "vtkLightShaftPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkPNGReader.h"
+#include "vtkPNGWriter.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <string>
+
+namespace
+{
+// Explicit thresholds: the mean absolute difference over all channels, and the fraction of
+// pixels allowed to differ by more than 8 levels in some channel (driver rounding, sphere
+// silhouettes).
+constexpr double MaximumMeanAbsoluteDifference = 1.0;
+constexpr double MaximumFractionOfDifferentPixels = 0.005;
+
+int Fail(const std::string& message)
+{
+  std::cerr << "FAIL: " << message << std::endl;
+  return EXIT_FAILURE;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  if (argc < 2)
+  {
+    return Fail("usage: TestLightShaftPass <baseline.png> [--update]");
+  }
+  const std::string baseline = argv[1];
+  const bool update = argc > 2 && std::strcmp(argv[2], "--update") == 0;
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.02, 0.02, 0.05);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(true);
+  window->SetMultiSamples(0);
+  window->SetSize(320, 240);
+  window->AddRenderer(renderer);
+
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(0.0, 1.5, 0.0);
+  sphere->SetRadius(0.8);
+  sphere->SetThetaResolution(128);
+  sphere->SetPhiResolution(128);
+  vtkNew<vtkPolyDataMapper> sphereMapper;
+  sphereMapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> sphereActor;
+  sphereActor->SetMapper(sphereMapper);
+  sphereActor->GetProperty()->SetColor(0.9, 0.5, 0.3);
+  renderer->AddActor(sphereActor);
+
+  vtkNew<vtkPlaneSource> floor;
+  floor->SetOrigin(-6.0, 0.0, -6.0);
+  floor->SetPoint1(-6.0, 0.0, 6.0);
+  floor->SetPoint2(6.0, 0.0, -6.0);
+  vtkNew<vtkPolyDataMapper> floorMapper;
+  floorMapper->SetInputConnection(floor->GetOutputPort());
+  vtkNew<vtkActor> floorActor;
+  floorActor->SetMapper(floorMapper);
+  renderer->AddActor(floorActor);
+
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(true);
+  light->SetPosition(0.5, 6.0, 0.0);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  light->SetConeAngle(30.0);
+  renderer->AddLight(light);
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.0, 3.0, 12.0);
+  camera->SetFocalPoint(0.0, 2.0, 0.0);
+  camera->SetViewAngle(30.0);
+  renderer->ResetCameraClippingRange();
+
+  vtkNew<vtkLightShaftPass> shafts;
+  shafts->SetScatteringCoefficient(0.05, 0.045, 0.04);
+  shafts->SetAbsorptionCoefficient(0.01);
+  shafts->SetExposure(40.0);
+  shafts->SetNumberOfSlices(256);
+  shafts->SetShadowMapSize(1024);
+  renderer->SetPass(shafts);
+  window->Render();
+
+  if (shafts->GetLastGLErrorCount() != 0)
+  {
+    return Fail("OpenGL errors during the frame");
+  }
+  if (shafts->GetLastNumberOfSlicesDrawn() != 256 || !shafts->GetLastShadowMapRendered())
+  {
+    return Fail("expected 256 slabs and a shadow map");
+  }
+  vtkNew<vtkImageData> radiance;
+  if (!shafts->GetInScatteredRadiance(radiance))
+  {
+    return Fail("no in-scatter readback");
+  }
+  int dims[3];
+  radiance->GetDimensions(dims);
+  auto* values = vtkFloatArray::SafeDownCast(radiance->GetPointData()->GetScalars());
+  if (dims[0] != 320 || dims[1] != 240 || !values || values->GetNumberOfComponents() != 3)
+  {
+    return Fail("in-scatter readback has the wrong layout");
+  }
+  double peak = 0.0;
+  for (vtkIdType i = 0; i < values->GetNumberOfValues(); ++i)
+  {
+    const double v = values->GetValue(i);
+    if (!std::isfinite(v) || v < 0.0)
+    {
+      return Fail("non-finite or negative in-scattered radiance");
+    }
+    peak = std::max(peak, v);
+  }
+  if (!(peak > 0.0))
+  {
+    return Fail("no in-scattered light");
+  }
+
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkImageData* frame = grab->GetOutput();
+
+  if (update)
+  {
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetFileName(baseline.c_str());
+    writer->SetInputData(frame);
+    writer->Write();
+    std::cout << "baseline written: " << baseline << std::endl;
+    return EXIT_SUCCESS;
+  }
+
+  vtkNew<vtkPNGReader> reader;
+  if (!reader->CanReadFile(baseline.c_str()))
+  {
+    return Fail("cannot read baseline " + baseline + " (run with --update to create it)");
+  }
+  reader->SetFileName(baseline.c_str());
+  reader->Update();
+  vtkImageData* expected = reader->GetOutput();
+  int expectedDims[3];
+  expected->GetDimensions(expectedDims);
+  if (expectedDims[0] != 320 || expectedDims[1] != 240 ||
+      expected->GetNumberOfScalarComponents() < 3)
+  {
+    return Fail("baseline has the wrong size");
+  }
+  auto* a = vtkUnsignedCharArray::SafeDownCast(frame->GetPointData()->GetScalars());
+  auto* b = vtkUnsignedCharArray::SafeDownCast(expected->GetPointData()->GetScalars());
+  const int ca = a->GetNumberOfComponents();
+  const int cb = b->GetNumberOfComponents();
+  double sum = 0.0;
+  vtkIdType different = 0;
+  const vtkIdType pixels = 320 * 240;
+  for (vtkIdType p = 0; p < pixels; ++p)
+  {
+    int worst = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      const int d = std::abs(static_cast<int>(a->GetValue(p * ca + c)) - b->GetValue(p * cb + c));
+      sum += d;
+      worst = std::max(worst, d);
+    }
+    different += worst > 8 ? 1 : 0;
+  }
+  const double mean = sum / (3.0 * pixels);
+  const double fraction = static_cast<double>(different) / pixels;
+  std::cout << "mean absolute difference " << mean << " (limit " << MaximumMeanAbsoluteDifference
+            << "), pixels differing by > 8: " << 100.0 * fraction << "% (limit "
+            << 100.0 * MaximumFractionOfDifferentPixels << "%)" << std::endl;
+  if (mean > MaximumMeanAbsoluteDifference || fraction > MaximumFractionOfDifferentPixels)
+  {
+    vtkNew<vtkPNGWriter> writer;
+    const std::string actual = baseline.substr(0, baseline.size() - 4) + ".actual.png";
+    writer->SetFileName(actual.c_str());
+    writer->SetInputData(frame);
+    writer->Write();
+    return Fail("image differs from the baseline; this frame: " + actual);
+  }
+  return EXIT_SUCCESS;
+}
