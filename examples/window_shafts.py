@@ -14,7 +14,7 @@ import vtkmodules.vtkInteractionStyle  # noqa: F401  (default interactor style)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL back end)
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (
-    vtkRenderWindow, vtkRenderWindowInteractor, vtkRenderer, vtkWindowToImageFilter)
+    vtkLight, vtkRenderWindow, vtkRenderWindowInteractor, vtkRenderer, vtkWindowToImageFilter)
 
 from lightshafts import scenes, vtkLightShaftPass
 
@@ -34,15 +34,20 @@ def main():
     window.SetSize(*args.size)
     window.SetMultiSamples(0)
     scenes.window_room(renderer)
+    fill = vtkLight()  # a dim headlight so the room is not pitch black (it makes no shafts)
+    fill.SetLightTypeToHeadlight()
+    fill.SetIntensity(0.12)
+    renderer.AddLight(fill)
 
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.035, 0.033, 0.03)  # per world unit
+    shafts.SetScatteringCoefficient(0.05, 0.047, 0.043)  # per world unit
     shafts.SetAbsorptionCoefficient(0.005)
     shafts.SetPhaseFunctionToHenyeyGreenstein()
     shafts.SetAnisotropy(0.3)
-    shafts.SetExposure(25.0)
+    shafts.SetExposure(45.0)
     shafts.SetNumberOfSlices(args.slices)
     shafts.SetShadowMapSize(2048)
+    shafts.ShadowSurfacesOn()  # the floor shows the window's pattern too
     renderer.SetPass(shafts)
 
     if args.interactive:

@@ -106,9 +106,51 @@ def window_room(renderer):
     light = add_spotlight(renderer, (-9.0, 8.0, 1.0), (0.5, 0.0, -0.5), cone_angle=22.0,
                           intensity=1.0, color=(1.0, 0.93, 0.8))
     camera = renderer.GetActiveCamera()
-    camera.SetPosition(9.0, 3.0, 10.0)
-    camera.SetFocalPoint(-1.0, 2.0, 0.0)
+    camera.SetPosition(7.0, 2.2, 8.0)
+    camera.SetFocalPoint(-3.0, 3.0, -1.0)
     camera.SetViewUp(0.0, 1.0, 0.0)
     camera.SetViewAngle(40.0)
+    renderer.ResetCameraClippingRange()
+    return SceneInfo(light=light, floors=[(0.0, -8.0, 8.0, -8.0, 8.0)], actors=actors)
+
+
+def isosurface(renderer, iso_value=160.0):
+    """A scientific-visualisation scene: an isosurface of VTK's wavelet source lit from above.
+
+    The isosurface (extent +-10, scaled to about 4 units, centred 3 units above a floor) casts
+    its holes and lobes as shafts onto the floor; colour by the scalar for the usual look.
+    """
+    from vtkmodules.vtkFiltersCore import vtkContourFilter
+    from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
+
+    wavelet = vtkRTAnalyticSource()
+    wavelet.SetWholeExtent(-10, 10, -10, 10, -10, 10)
+    contour = vtkContourFilter()
+    contour.SetInputConnection(wavelet.GetOutputPort())
+    contour.SetValue(0, iso_value)
+    contour.ComputeNormalsOn()
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(contour.GetOutputPort())
+    mapper.SetScalarRange(iso_value - 1.0, iso_value + 1.0)
+    mapper.ScalarVisibilityOff()
+    surface = vtkActor()
+    surface.SetMapper(mapper)
+    surface.GetProperty().SetColor(0.35, 0.6, 0.9)
+    surface.SetScale(0.2, 0.2, 0.2)
+    surface.SetPosition(0.0, 3.0, 0.0)
+    floor = vtkPlaneSource()
+    floor.SetOrigin(-8.0, 0.0, -8.0)
+    floor.SetPoint1(-8.0, 0.0, 8.0)
+    floor.SetPoint2(8.0, 0.0, -8.0)
+    actors = [surface, _actor(floor, (0.8, 0.8, 0.8))]
+    for actor in actors:
+        renderer.AddActor(actor)
+    light = add_spotlight(renderer, (1.0, 10.0, 1.0), (0.0, 0.0, 0.0), cone_angle=24.0,
+                          color=(1.0, 0.97, 0.9))
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(9.0, 4.0, 11.0)
+    camera.SetFocalPoint(0.0, 3.0, 0.0)
+    camera.SetViewUp(0.0, 1.0, 0.0)
+    camera.SetViewAngle(35.0)
     renderer.ResetCameraClippingRange()
     return SceneInfo(light=light, floors=[(0.0, -8.0, 8.0, -8.0, 8.0)], actors=actors)
