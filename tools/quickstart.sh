@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# LightShafts quick start for a fresh Debian 12 machine:
+#   1. installs every dependency with apt (needs root: run as root, or it uses sudo),
+#   2. configures, builds and installs LightShafts to /usr/local (C++ package + Python module),
+#   3. builds the C++ example against the installed package, and
+#   4. renders the example scene offscreen (Xvfb) to window_shafts.png.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+as_root() {
+  if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi
+}
+
+packages=(
+  build-essential cmake pkg-config
+  libvtk9-dev python3-vtk9 libglm-dev
+  xvfb xauth libgl1-mesa-dri
+  python3-numpy python3-pytest
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "== installing: ${missing[*]}"
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" > /dev/null
+fi
+
+jobs=$(nproc 2>/dev/null || echo 2)
+echo "== building (build/)"
+# Debian's VTK Python bindings are for /usr/bin/python3 (another python3 may come first on PATH).
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 > build.log
+cmake --build build -j "$jobs" >> build.log
+echo "== installing to /usr/local"
+as_root cmake --install build >> build.log
+as_root ldconfig
+
+echo "== building the C++ example against the installed package (build/example)"
+cmake -S examples/cpp -B build/example -DCMAKE_BUILD_TYPE=Release >> build.log
+cmake --build build/example -j "$jobs" >> build.log
+
+echo "== rendering the example scene offscreen"
+xvfb-run -a -s "-screen 0 1280x1024x24" /usr/bin/python3 examples/window_shafts.py -o window_shafts.png
+xvfb-run -a -s "-screen 0 1280x1024x24" build/example/window_shafts window_shafts_cpp.png
+echo "== done: window_shafts.png (Python) and window_shafts_cpp.png (C++)"
