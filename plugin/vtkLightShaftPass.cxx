@@ -253,6 +253,9 @@ public:
   vtkSmartPointer<vtkTextureObject> SceneDepth;
   vtkSmartPointer<vtkOpenGLFramebufferObject> InScatterFramebuffer;
   vtkSmartPointer<vtkTextureObject> InScatter;
+  // A copy of the scene depth for the in-scatter target: the hardware depth test then culls
+  // slab fragments that start behind the surface before they are shaded.
+  vtkSmartPointer<vtkTextureObject> InScatterDepth;
   vtkSmartPointer<vtkOpenGLFramebufferObject> ShadowFramebuffer;
   vtkSmartPointer<vtkTextureObject> ShadowMap;
 
@@ -413,6 +416,7 @@ public:
     this->SceneColor = nullptr;
     this->SceneDepth = nullptr;
     this->InScatter = nullptr;
+    this->InScatterDepth = nullptr;
     this->ShadowMap = nullptr;
     this->SceneFramebuffer = nullptr;
     this->InScatterFramebuffer = nullptr;
@@ -798,16 +802,19 @@ void vtkLightShaftPass::Internals::AllocateTargets(vtkOpenGLRenderWindow* renWin
   {
     impl.SceneColor = makeTexture();
     impl.SceneColor->Allocate2D(w, h, 4, VTK_UNSIGNED_CHAR);
-    impl.SceneDepth = makeTexture();
     // The depth format VTK 9.1's GPU volume mapper allocates, so that its depth blit from the
     // current target (our scene target) is legal.
-    if (renWin->GetStencilCapable())
+    for (auto* depth : { &impl.SceneDepth, &impl.InScatterDepth })
     {
-      impl.SceneDepth->AllocateDepthStencil(w, h);
-    }
-    else
-    {
-      impl.SceneDepth->AllocateDepth(w, h, vtkTextureObject::Fixed32);
+      *depth = makeTexture();
+      if (renWin->GetStencilCapable())
+      {
+        (*depth)->AllocateDepthStencil(w, h);
+      }
+      else
+      {
+        (*depth)->AllocateDepth(w, h, vtkTextureObject::Fixed32);
+      }
     }
     impl.InScatter = makeTexture();
     impl.InScatter->SetInternalFormat(GL_RGBA32F);
@@ -823,6 +830,7 @@ void vtkLightShaftPass::Internals::AllocateTargets(vtkOpenGLRenderWindow* renWin
     impl.SceneColor->Resize(w, h);
     impl.SceneDepth->Resize(w, h);
     impl.InScatter->Resize(w, h);
+    impl.InScatterDepth->Resize(w, h);
   }
 }
 
@@ -1069,9 +1077,13 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   const bool shadows = impl.RenderShadowMap(
     self, s, lightWC, axisWC, coneHalfAngle, worldToView, viewToLightClip, lightDepthRange);
 
-  // Re-bind the in-scatter target (the shadow pass used its own).
+  // Re-bind the in-scatter target (the shadow pass used its own) with a copy of the scene depth.
   impl.InScatterFramebuffer->Bind();
+  impl.InScatterFramebuffer->AddDepthAttachment(impl.InScatterDepth);
   impl.InScatterFramebuffer->ActivateDrawBuffer(0);
+  impl.SceneFramebuffer->Bind(GL_READ_FRAMEBUFFER);
+  ostate->vtkglBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  impl.InScatterFramebuffer->Bind();
   ostate->vtkglViewport(0, 0, w, h);
   ostate->vtkglScissor(0, 0, w, h);
 
@@ -1081,8 +1093,13 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
     return;
   }
 
-  ostate->vtkglDisable(GL_DEPTH_TEST);
+  // Each slab is drawn at its near depth: the depth test drops it where it starts behind the
+  // surface. Depth clamping keeps slabs in front of the near plane (eye inside the light).
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_LESS);
   ostate->vtkglDepthMask(GL_FALSE);
+  const GLboolean depthClampWasOn = glIsEnabled(GL_DEPTH_CLAMP);
+  glEnable(GL_DEPTH_CLAMP);
   ostate->vtkglDisable(GL_CULL_FACE);
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
@@ -1092,6 +1109,12 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   program->SetUniformMatrix4x4("invProjectionDCVC", invProjection.data());
   const float targetSize[2] = { static_cast<float>(w), static_cast<float>(h) };
   program->SetUniform2f("targetSize", targetSize);
+  // Row 2 and row 3 of the projection: a view depth's NDC z, for the slabs' depth test.
+  const float depthProjection[4] = { static_cast<float>(viewToClip[2][2]),
+    static_cast<float>(viewToClip[3][2]),
+    static_cast<float>(viewToClip[2][3]),
+    static_cast<float>(viewToClip[3][3]) };
+  program->SetUniform4f("depthProjection", depthProjection);
   impl.SceneDepth->Activate();
   program->SetUniformi("sceneDepth", impl.SceneDepth->GetTextureUnit());
   program->SetUniform3f("lightPositionVC", ToFloat3(lightVC).data());

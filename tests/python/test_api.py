@@ -25,6 +25,7 @@ def test_defaults():
     assert p.GetAnisotropy() == 0.0
     assert p.GetExposure() == 1.0
     assert p.GetAttenuateScene() is True or p.GetAttenuateScene() == 1
+    assert not p.GetShadowSurfaces()
     assert p.GetNumberOfSlices() == 128
     assert p.GetShadowMapSize() == 1024
     assert p.GetLight() is None
@@ -71,6 +72,10 @@ def test_boolean_macros():
     assert not p.GetAttenuateScene()
     p.AttenuateSceneOn()
     assert p.GetAttenuateScene()
+    p.ShadowSurfacesOn()
+    assert p.GetShadowSurfaces()
+    p.SetShadowSurfaces(False)
+    assert not p.GetShadowSurfaces()
 
 
 @pytest.mark.parametrize("name,low,high,expect_low,expect_high", [
