@@ -475,22 +475,25 @@ void vtkLightShaftPass::ReleaseGraphicsResources(vtkWindow* w)
 // Parameters.
 namespace
 {
-bool AllFinite(std::initializer_list<double> values)
+// Setters refuse NaN and infinities: report the parameter and keep the previous value.
+bool RefuseNonFinite(vtkObject* self, const char* parameter, std::initializer_list<double> values)
 {
-  return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
-}
-}
-
-#define vtkLightShaftRefuseNonFinite(name, ...)                                                    \
-  if (!AllFinite({ __VA_ARGS__ }))                                                                 \
-  {                                                                                                \
-    vtkErrorMacro(<< name << ": non-finite value refused; the previous value is kept.");           \
-    return;                                                                                        \
+  if (std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); }))
+  {
+    return false;
   }
+  vtkErrorWithObjectMacro(
+    self, << parameter << ": non-finite value refused; the previous value is kept.");
+  return true;
+}
+}
 
 void vtkLightShaftPass::SetScatteringCoefficient(double r, double g, double b)
 {
-  vtkLightShaftRefuseNonFinite("ScatteringCoefficient", r, g, b);
+  if (RefuseNonFinite(this, "ScatteringCoefficient", { r, g, b }))
+  {
+    return;
+  }
   const double v[3] = { vtkMath::ClampValue(r, 0.0, MaximumCoefficient),
     vtkMath::ClampValue(g, 0.0, MaximumCoefficient),
     vtkMath::ClampValue(b, 0.0, MaximumCoefficient) };
@@ -513,7 +516,10 @@ void vtkLightShaftPass::SetScatteringCoefficient(double grey)
 
 void vtkLightShaftPass::SetAbsorptionCoefficient(double r, double g, double b)
 {
-  vtkLightShaftRefuseNonFinite("AbsorptionCoefficient", r, g, b);
+  if (RefuseNonFinite(this, "AbsorptionCoefficient", { r, g, b }))
+  {
+    return;
+  }
   const double v[3] = { vtkMath::ClampValue(r, 0.0, MaximumCoefficient),
     vtkMath::ClampValue(g, 0.0, MaximumCoefficient),
     vtkMath::ClampValue(b, 0.0, MaximumCoefficient) };
@@ -536,7 +542,10 @@ void vtkLightShaftPass::SetAbsorptionCoefficient(double grey)
 
 void vtkLightShaftPass::SetAnisotropy(double g)
 {
-  vtkLightShaftRefuseNonFinite("Anisotropy", g);
+  if (RefuseNonFinite(this, "Anisotropy", { g }))
+  {
+    return;
+  }
   g = vtkMath::ClampValue(g, -MaximumAnisotropy, MaximumAnisotropy);
   if (g != this->Anisotropy)
   {
@@ -547,7 +556,10 @@ void vtkLightShaftPass::SetAnisotropy(double g)
 
 void vtkLightShaftPass::SetExposure(double exposure)
 {
-  vtkLightShaftRefuseNonFinite("Exposure", exposure);
+  if (RefuseNonFinite(this, "Exposure", { exposure }))
+  {
+    return;
+  }
   exposure = vtkMath::ClampValue(exposure, 0.0, MaximumExposure);
   if (exposure != this->Exposure)
   {
@@ -555,8 +567,6 @@ void vtkLightShaftPass::SetExposure(double exposure)
     this->Modified();
   }
 }
-
-#undef vtkLightShaftRefuseNonFinite
 
 void vtkLightShaftPass::SetLight(vtkLight* light)
 {

@@ -391,3 +391,26 @@ def test_shadow_surfaces_agree_with_the_shafts_shadow():
     window.Render()
     pixels = rh.screenshot(window).max(axis=-1)
     assert np.mean(pixels[dark] > 40) > 0.99
+
+
+def test_nested_in_another_image_pass_renders_into_its_framebuffer():
+    # vtkToneMappingPass renders its delegate (our pass) into its own framebuffer object, given
+    # to us in vtkRenderState: the shafts must land there, and the result must be the same
+    # picture as without the outer pass (tone-mapped).
+    from vtkmodules.vtkRenderingOpenGL2 import vtkToneMappingPass
+    renderer, window, info, shafts = shaft_scene(NumberOfSlices=64)
+    window.Render()
+    reference = rh.in_scatter(shafts)
+    tone = vtkToneMappingPass()
+    tone.SetToneMappingType(vtkToneMappingPass.Clamp)
+    tone.SetExposure(1.0)
+    tone.SetDelegatePass(shafts)
+    renderer.SetPass(tone)
+    window.Render()
+    assert shafts.GetLastGLErrorCount() == 0
+    assert tuple(shafts.GetLastViewportSize()) == (200, 150)
+    np.testing.assert_allclose(rh.in_scatter(shafts), reference, rtol=1e-5, atol=1e-9)
+    with_shafts = rh.screenshot(window).astype(int).sum()
+    shafts.SetExposure(0.0)
+    window.Render()
+    assert with_shafts > 1.2 * rh.screenshot(window).astype(int).sum()
