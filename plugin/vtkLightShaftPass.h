@@ -33,9 +33,11 @@
  * towards the eye, -d: cos theta = -d . (x - light) / r, so Henyey-Greenstein with g > 0 is
  * forward scattering (brightest looking into the light).
  *
- * Within each slab the pass clips the ray exactly to the cone, integrates A(r) in closed form
- * (exact when c1 = 0) and evaluates the rest of the integrand at the slab's equiangular midpoint;
- * the error shrinks as the number of slices grows (measured in docs/accuracy.md).
+ * Within each slab the pass clips the ray exactly to the cone and the surface, integrates A(r)
+ * in closed form (exact when c1 = 0), weights the phase, spot and extinction factors with
+ * 3-point Gauss-Legendre in the equiangular angle, and looks up the shadow map once, at the
+ * segment's midpoint; the error shrinks as the number of slices grows (docs/accuracy.md).
+ * Slab fragments that start behind the scene surface are culled by the depth test.
  *
  * With both coefficients zero, or with no usable light, the pass renders the delegate's image
  * unchanged (pixel-identical; one warning for a missing light).
