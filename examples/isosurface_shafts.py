@@ -13,12 +13,10 @@ import argparse
 import vtkmodules.vtkInteractionStyle  # noqa: F401
 import vtkmodules.vtkRenderingFreeType  # noqa: F401  (text for the title)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
-from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (
-    vtkLight, vtkRenderWindow, vtkRenderWindowInteractor, vtkRenderer, vtkTextActor,
-    vtkWindowToImageFilter)
+    vtkLight, vtkRenderWindow, vtkRenderWindowInteractor, vtkRenderer, vtkTextActor)
 
-from lightshafts import scenes, vtkLightShaftPass
+from lightshafts import scenes, vtkLightShaftPass, write_png
 
 
 def main():
@@ -63,13 +61,7 @@ def main():
         return
     window.SetOffScreenRendering(1)
     window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    writer = vtkPNGWriter()
-    writer.SetFileName(args.output)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
+    write_png(window, args.output)
     print(f"wrote {args.output}")
 
 

@@ -12,11 +12,10 @@ import argparse
 
 import vtkmodules.vtkInteractionStyle  # noqa: F401  (default interactor style)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL back end)
-from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (
-    vtkLight, vtkRenderWindow, vtkRenderWindowInteractor, vtkRenderer, vtkWindowToImageFilter)
+    vtkLight, vtkRenderWindow, vtkRenderWindowInteractor, vtkRenderer)
 
-from lightshafts import scenes, vtkLightShaftPass
+from lightshafts import scenes, vtkLightShaftPass, write_png
 
 
 def main():
@@ -59,13 +58,7 @@ def main():
 
     window.SetOffScreenRendering(1)
     window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    writer = vtkPNGWriter()
-    writer.SetFileName(args.output)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
+    write_png(window, args.output)
     print(f"wrote {args.output}: {shafts.GetLastNumberOfSlicesDrawn()} slices, "
           f"shadow map {'rendered' if shafts.GetLastShadowMapRendered() else 'skipped'}")
 

@@ -486,22 +486,33 @@ bool RefuseNonFinite(vtkObject* self, const char* parameter, std::initializer_li
     self, << parameter << ": non-finite value refused; the previous value is kept.");
   return true;
 }
-}
 
-void vtkLightShaftPass::SetScatteringCoefficient(double r, double g, double b)
+// Both medium coefficients: refuse non-finite values, clamp each channel to [0, max].
+void SetCoefficient(vtkObject* self,
+  const char* parameter,
+  double coefficient[3],
+  double r,
+  double g,
+  double b)
 {
-  if (RefuseNonFinite(this, "ScatteringCoefficient", { r, g, b }))
+  if (RefuseNonFinite(self, parameter, { r, g, b }))
   {
     return;
   }
   const double v[3] = { vtkMath::ClampValue(r, 0.0, MaximumCoefficient),
     vtkMath::ClampValue(g, 0.0, MaximumCoefficient),
     vtkMath::ClampValue(b, 0.0, MaximumCoefficient) };
-  if (!std::equal(v, v + 3, this->ScatteringCoefficient))
+  if (!std::equal(v, v + 3, coefficient))
   {
-    std::copy(v, v + 3, this->ScatteringCoefficient);
-    this->Modified();
+    std::copy(v, v + 3, coefficient);
+    self->Modified();
   }
+}
+} // namespace
+
+void vtkLightShaftPass::SetScatteringCoefficient(double r, double g, double b)
+{
+  SetCoefficient(this, "ScatteringCoefficient", this->ScatteringCoefficient, r, g, b);
 }
 
 void vtkLightShaftPass::SetScatteringCoefficient(const double rgb[3])
@@ -516,18 +527,7 @@ void vtkLightShaftPass::SetScatteringCoefficient(double grey)
 
 void vtkLightShaftPass::SetAbsorptionCoefficient(double r, double g, double b)
 {
-  if (RefuseNonFinite(this, "AbsorptionCoefficient", { r, g, b }))
-  {
-    return;
-  }
-  const double v[3] = { vtkMath::ClampValue(r, 0.0, MaximumCoefficient),
-    vtkMath::ClampValue(g, 0.0, MaximumCoefficient),
-    vtkMath::ClampValue(b, 0.0, MaximumCoefficient) };
-  if (!std::equal(v, v + 3, this->AbsorptionCoefficient))
-  {
-    std::copy(v, v + 3, this->AbsorptionCoefficient);
-    this->Modified();
-  }
+  SetCoefficient(this, "AbsorptionCoefficient", this->AbsorptionCoefficient, r, g, b);
 }
 
 void vtkLightShaftPass::SetAbsorptionCoefficient(const double rgb[3])

@@ -11,4 +11,18 @@ import vtkmodules.vtkRenderingCore  # noqa: F401
 
 from .vtkLightShafts import vtkLightShaftPass  # noqa: F401
 
-__all__ = ["vtkLightShaftPass"]
+__all__ = ["vtkLightShaftPass", "write_png"]
+
+
+def write_png(window, filename):
+    """Write what `window` rendered last (its back buffer) to a PNG file."""
+    from vtkmodules.vtkIOImage import vtkPNGWriter
+    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ReadFrontBufferOff()
+    writer = vtkPNGWriter()
+    writer.SetFileName(str(filename))
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.Write()

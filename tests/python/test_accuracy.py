@@ -25,7 +25,9 @@ RELATIVE_RMS_BOUND = 0.01
 ENERGY_BOUND = 0.005
 
 
-def render_scene(width=320, height=240, **params):
+def render_scene(width=320, height=240, prepare=None, **params):
+    """The sphere-and-floor scene with the test medium; `prepare(renderer, info, shafts)` may
+    change the light, camera or pass before the first frame."""
     renderer, window = rh.make_window(width, height)
     info = scenes.sphere_and_floor(renderer)
     shafts = vtkLightShaftPass()
@@ -35,6 +37,9 @@ def render_scene(width=320, height=240, **params):
     shafts.SetShadowMapSize(HIGH_SHADOW_MAP)
     for name, value in params.items():
         getattr(shafts, "Set" + name)(value)
+    if prepare:
+        prepare(renderer, info, shafts)
+        renderer.ResetCameraClippingRange()
     renderer.SetPass(shafts)
     window.Render()
     return renderer, window, info, shafts
@@ -84,61 +89,37 @@ def test_henyey_greenstein_matches_reference(g):
 def test_rayleigh_inverse_square_light_in_view():
     # The light itself is in the picture and A(r) = 1/r^2: rays pass arbitrarily close to the
     # apex, where the per-slab closed form of the 1/r^2 integral matters.
-    renderer, window = rh.make_window(320, 240)
-    info = scenes.sphere_and_floor(renderer)
-    info.light.SetAttenuationValues(0.0, 0.0, 1.0)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(0.0, 8.0, 12.0)
-    camera.SetFocalPoint(0.0, 4.0, 0.0)
-    renderer.ResetCameraClippingRange()
-    shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
-    shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
-    shafts.SetPhaseFunctionToRayleigh()
-    shafts.SetNumberOfSlices(256)
-    shafts.SetShadowMapSize(HIGH_SHADOW_MAP)
-    renderer.SetPass(shafts)
-    window.Render()
-    relative_rms, energy, _, _ = errors(renderer, window, info, shafts)
+    def prepare(renderer, info, shafts):
+        info.light.SetAttenuationValues(0.0, 0.0, 1.0)
+        renderer.GetActiveCamera().SetPosition(0.0, 8.0, 12.0)
+        renderer.GetActiveCamera().SetFocalPoint(0.0, 4.0, 0.0)
+        shafts.SetPhaseFunctionToRayleigh()
+
+    scene = render_scene(prepare=prepare, NumberOfSlices=256)
+    relative_rms, energy, _, _ = errors(*scene)
     assert relative_rms < RELATIVE_RMS_BOUND
     assert energy < ENERGY_BOUND
 
 
 @pytest.mark.parametrize("attenuation,exponent", [((0.5, 0.3, 0.0), 1.0), ((0.0, 0.0, 1.0), 10.0)])
 def test_attenuation_and_spot_exponent(attenuation, exponent):
-    renderer, window = rh.make_window(320, 240)
-    info = scenes.sphere_and_floor(renderer)
-    info.light.SetAttenuationValues(*attenuation)
-    info.light.SetExponent(exponent)
-    shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
-    shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
-    shafts.SetNumberOfSlices(HIGH_SLICES)
-    shafts.SetShadowMapSize(HIGH_SHADOW_MAP)
-    renderer.SetPass(shafts)
-    window.Render()
-    relative_rms, energy, _, _ = errors(renderer, window, info, shafts)
+    def prepare(renderer, info, shafts):
+        info.light.SetAttenuationValues(*attenuation)
+        info.light.SetExponent(exponent)
+
+    relative_rms, energy, _, _ = errors(*render_scene(prepare=prepare))
     assert relative_rms < RELATIVE_RMS_BOUND
     assert energy < ENERGY_BOUND
 
 
 def test_eye_inside_the_cone():
-    renderer, window = rh.make_window(320, 240)
-    info = scenes.sphere_and_floor(renderer)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(0.3, 3.0, 1.5)
-    camera.SetFocalPoint(0.0, 1.5, 0.0)
-    renderer.ResetCameraClippingRange()
-    shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
-    shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
-    shafts.SetPhaseFunctionToHenyeyGreenstein()
-    shafts.SetAnisotropy(0.5)
-    shafts.SetNumberOfSlices(HIGH_SLICES)
-    shafts.SetShadowMapSize(HIGH_SHADOW_MAP)
-    renderer.SetPass(shafts)
-    window.Render()
-    relative_rms, energy, _, _ = errors(renderer, window, info, shafts)
+    def prepare(renderer, info, shafts):
+        renderer.GetActiveCamera().SetPosition(0.3, 3.0, 1.5)
+        renderer.GetActiveCamera().SetFocalPoint(0.0, 1.5, 0.0)
+        shafts.SetPhaseFunctionToHenyeyGreenstein()
+        shafts.SetAnisotropy(0.5)
+
+    relative_rms, energy, _, _ = errors(*render_scene(prepare=prepare))
     assert relative_rms < RELATIVE_RMS_BOUND
     assert energy < ENERGY_BOUND
 
