@@ -3,6 +3,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
+#include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
@@ -33,14 +34,20 @@
 #include "vtkShadowMapBakerPass.h"
 #include "vtkShadowMapPass.h"
 #include "vtkSmartPointer.h"
+#include "vtkTexture.h"
 #include "vtkTextureObject.h"
 #include "vtkWeakPointer.h"
 #include "vtk_glew.h"
 
+#include "vtkLightShaftBlurFS.h"
 #include "vtkLightShaftCommon.h"
 #include "vtkLightShaftCompositeFS.h"
+#include "vtkLightShaftDepthDownsampleFS.h"
+#include "vtkLightShaftNoise.h"
+#include "vtkLightShaftResolveFS.h"
 #include "vtkLightShaftSliceFS.h"
 #include "vtkLightShaftSliceVS.h"
+#include "vtkLightShaftUpsampleFS.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -51,6 +58,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -223,6 +231,234 @@ struct CameraFrame
 };
 } // namespace
 
+namespace
+{
+/**
+ * The spotlight as the shaders see it: position and axis in world and view coordinates, and
+ * the square light camera whose inscribed cone is the spot cone (shadow map, cookie, noise).
+ */
+struct LightFrame
+{
+  glm::dvec3 PositionWC;
+  glm::dvec3 AxisWC;
+  glm::dvec3 PositionVC;
+  glm::dvec3 AxisVC;
+  double ConeHalfAngle = 0.0; // radians
+  double Near = 0.0;
+  double Far = 1.0;
+  glm::dmat4 Projection{ 1.0 };
+  glm::dmat4 ViewToLightClip{ 1.0 };
+  double RadiantIntensity[3] = { 0.0, 0.0, 0.0 };
+  double Exponent = 1.0;
+  double Attenuation[3] = { 1.0, 0.0, 0.0 }; // c0, c1, c2 (all zero is treated as no falloff)
+  std::vector<vtkProp*> Casters;             // props whose bounds reach into the light's volume
+};
+
+/// Off-screen texture kinds the pass allocates.
+enum class TextureKind
+{
+  RGBA8,
+  RGBA16F,
+  RGBA32F,
+  Depth
+};
+
+/**
+ * A texture the pass owns, re-allocated only when its kind or size changes.
+ */
+struct OwnedTexture
+{
+  vtkSmartPointer<vtkTextureObject> Object;
+  TextureKind Kind = TextureKind::RGBA8;
+
+  vtkTextureObject* Ensure(vtkOpenGLRenderWindow* window, TextureKind kind, int w, int h)
+  {
+    if (this->Object && this->Kind != kind)
+    {
+      this->Release(window);
+    }
+    if (!this->Object)
+    {
+      this->Object = vtkSmartPointer<vtkTextureObject>::New();
+      this->Object->SetContext(window);
+      this->Object->SetWrapS(vtkTextureObject::ClampToEdge);
+      this->Object->SetWrapT(vtkTextureObject::ClampToEdge);
+      this->Object->SetMinificationFilter(vtkTextureObject::Nearest);
+      this->Object->SetMagnificationFilter(vtkTextureObject::Nearest);
+      this->Kind = kind;
+      switch (kind)
+      {
+        case TextureKind::RGBA8:
+          this->Object->Allocate2D(w, h, 4, VTK_UNSIGNED_CHAR);
+          break;
+        case TextureKind::RGBA16F:
+        case TextureKind::RGBA32F:
+          this->Object->SetInternalFormat(kind == TextureKind::RGBA16F ? GL_RGBA16F : GL_RGBA32F);
+          this->Object->SetFormat(GL_RGBA);
+          this->Object->SetDataType(GL_FLOAT);
+          this->Object->Allocate2D(w, h, 4, VTK_FLOAT);
+          break;
+        case TextureKind::Depth:
+          // The depth format VTK 9.1's GPU volume mapper allocates, so that its depth blit from
+          // the current target (our scene target) is legal.
+          if (window->GetStencilCapable())
+          {
+            this->Object->AllocateDepthStencil(w, h);
+          }
+          else
+          {
+            this->Object->AllocateDepth(w, h, vtkTextureObject::Fixed32);
+          }
+          break;
+      }
+    }
+    else if (static_cast<int>(this->Object->GetWidth()) != w ||
+             static_cast<int>(this->Object->GetHeight()) != h)
+    {
+      this->Object->Resize(w, h);
+    }
+    return this->Object;
+  }
+
+  void Release(vtkWindow* w)
+  {
+    if (this->Object)
+    {
+      this->Object->ReleaseGraphicsResources(w);
+    }
+    this->Object = nullptr;
+  }
+};
+
+/**
+ * A full-screen pass, rebuilt only when its fragment source (its feature variant) changes.
+ */
+struct FullScreenPass
+{
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  std::string Source;
+
+  vtkShaderProgram* Ready(vtkOpenGLRenderWindow* window, const std::string& fragment)
+  {
+    if (!this->Quad || this->Source != fragment)
+    {
+      this->Quad.reset(new vtkOpenGLQuadHelper(window, nullptr, fragment.c_str(), ""));
+      this->Source = fragment;
+    }
+    else
+    {
+      window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
+    }
+    return (this->Quad->Program && this->Quad->Program->GetCompiled()) ? this->Quad->Program
+                                                                       : nullptr;
+  }
+
+  void Release(vtkWindow* w)
+  {
+    if (this->Quad)
+    {
+      this->Quad->ReleaseGraphicsResources(w);
+    }
+    this->Quad.reset();
+    this->Source.clear();
+  }
+};
+
+std::string WithFeatures(const char* source, const std::vector<std::string>& defines)
+{
+  std::string features;
+  for (const auto& define : defines)
+  {
+    features += "#define " + define + "\n";
+  }
+  std::string out = source;
+  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Features", features);
+  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Common", vtkLightShaftCommon);
+  return out;
+}
+
+bool AnyPositive(const double v[3])
+{
+  return v[0] > 0.0 || v[1] > 0.0 || v[2] > 0.0;
+}
+
+// An image (any scalar type, 1-4 components) as RGB floats, row 0 at the bottom; 8-bit images
+// map 255 to 1. Returns false when there is no usable image.
+bool ImageToRGB(vtkTexture* texture, std::vector<float>& rgb, int& width, int& height)
+{
+  if (!texture)
+  {
+    return false;
+  }
+  if (texture->GetNumberOfInputPorts() > 0 && texture->GetNumberOfInputConnections(0) > 0)
+  {
+    texture->GetInputAlgorithm()->Update();
+  }
+  auto* image = vtkImageData::SafeDownCast(texture->GetInputDataObject(0, 0));
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  if (!scalars || scalars->GetNumberOfTuples() == 0)
+  {
+    return false;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  width = dims[0];
+  height = dims[1];
+  if (width < 1 || height < 1 || scalars->GetNumberOfTuples() < vtkIdType(width) * height)
+  {
+    return false;
+  }
+  const int components = scalars->GetNumberOfComponents();
+  const double scale = scalars->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+  rgb.resize(static_cast<size_t>(width) * height * 3);
+  for (vtkIdType i = 0; i < vtkIdType(width) * height; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const int source = (components >= 3) ? c : 0; // grey (+ alpha) images: grey in R, G, B
+      const double value = scalars->GetComponent(i, source) * scale;
+      rgb[i * 3 + c] = static_cast<float>(std::isfinite(value) ? std::max(value, 0.0) : 0.0);
+    }
+  }
+  return true;
+}
+
+// A mipmapped, linearly filtered texture from float texels (1 or 3 components).
+void UploadMipmapped(vtkSmartPointer<vtkTextureObject>& texture,
+  vtkOpenGLRenderWindow* window,
+  const std::vector<float>& texels,
+  int width,
+  int height,
+  int components,
+  bool repeat)
+{
+  if (texture)
+  {
+    texture->ReleaseGraphicsResources(window);
+  }
+  texture = vtkSmartPointer<vtkTextureObject>::New();
+  texture->SetContext(window);
+  const int wrap = repeat ? vtkTextureObject::Repeat : vtkTextureObject::ClampToEdge;
+  texture->SetWrapS(wrap);
+  texture->SetWrapT(wrap);
+  texture->SetMinificationFilter(vtkTextureObject::LinearMipmapLinear);
+  texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  texture->SetGenerateMipmap(true);
+  texture->SetMaxLevel(static_cast<int>(std::log2(std::max(width, height))));
+  texture->SetInternalFormat(components == 1 ? GL_R16F : GL_RGB16F);
+  texture->SetFormat(components == 1 ? GL_RED : GL_RGB);
+  texture->SetDataType(GL_FLOAT);
+  texture->Create2DFromRaw(width,
+    height,
+    components,
+    VTK_FLOAT,
+    const_cast<void*>(static_cast<const void*>(texels.data())));
+  texture->Bind();
+  glGenerateMipmap(GL_TEXTURE_2D);
+  texture->Deactivate();
+}
+} // namespace
+
 /**
  * Everything the pass holds besides its parameters: GL objects (owned by smart pointers, freed
  * by ReleaseGraphicsResources), the light choice, and the shader variants that were built.
@@ -236,6 +472,11 @@ public:
   vtkNew<vtkCallbackCommand> WindowDeleted;
   unsigned long WindowDeletedTag = 0;
   bool WarnedNoLight = false;
+  bool WarnedCookie = false;
+  bool WarnedNoise = false;
+
+  vtkSmartPointer<vtkTexture> Cookie;
+  vtkSmartPointer<vtkTexture> NoiseImage;
 
   // Used when no delegate is set: renders like VTK's default pipeline, or with the opaque step
   // shadowed by vtkShadowMapPass (ShadowSurfaces).
@@ -248,58 +489,48 @@ public:
   vtkNew<vtkOpaquePass> ShadowOpaquePass;
   vtkNew<vtkCamera> LightCamera;
 
+  // Targets. Full resolution: the scene (lit, and unlit for cookies on surfaces), its depth,
+  // the final in-scatter. Reduced resolution (DownsampleFactor): the accumulation buffers, a
+  // depth for the slabs and its copy for the depth test, blur buffers.
+  OwnedTexture SceneColor;
+  OwnedTexture SceneColorUnlit;
+  OwnedTexture SceneDepth;
+  OwnedTexture ReducedDepth;
+  OwnedTexture SlabDepthTest;
+  OwnedTexture Accumulation[3];
+  OwnedTexture Resolved;
+  OwnedTexture BlurTemporary;
+  OwnedTexture Blurred;
+  OwnedTexture Upsampled;
+  OwnedTexture ShadowMap;
+  vtkSmartPointer<vtkTextureObject> CookieTexture;
+  vtkMTimeType CookieUploadTime = 0;
+  vtkSmartPointer<vtkTextureObject> NoiseTexture;
+  vtkMTimeType NoiseUploadTime = 0;
+  bool NoiseIsGenerated = false;
   vtkSmartPointer<vtkOpenGLFramebufferObject> SceneFramebuffer;
-  vtkSmartPointer<vtkTextureObject> SceneColor;
-  vtkSmartPointer<vtkTextureObject> SceneDepth;
-  vtkSmartPointer<vtkOpenGLFramebufferObject> InScatterFramebuffer;
-  vtkSmartPointer<vtkTextureObject> InScatter;
-  // A copy of the scene depth for the in-scatter target: the hardware depth test then culls
-  // slab fragments that start behind the surface before they are shaded.
-  vtkSmartPointer<vtkTextureObject> InScatterDepth;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> WorkFramebuffer;
   vtkSmartPointer<vtkOpenGLFramebufferObject> ShadowFramebuffer;
-  vtkSmartPointer<vtkTextureObject> ShadowMap;
 
-  // Slice program: owned by the window's shader cache; rebuilt when its variant changes.
+  // The last frame's L_in (full resolution) when InScatterValid.
+  vtkTextureObject* FinalInScatter = nullptr;
+  bool InScatterValid = false;
+
+  // Slab program: owned by the window's shader cache; rebuilt when its source (variant)
+  // changes.
   vtkShaderProgram* SliceProgram = nullptr;
-  int SliceVariantPhase = -1;
-  bool SliceVariantShadow = false;
+  std::string SliceSource;
+  std::string SliceVariant;
   vtkSmartPointer<vtkOpenGLVertexArrayObject> SliceArray;
   vtkSmartPointer<vtkOpenGLBufferObject> SliceBuffer;
+  vtkShaderProgram* SliceArrayProgram = nullptr;
   std::vector<float> SliceVertices;
 
-  std::unique_ptr<vtkOpenGLQuadHelper> Composite;
-  bool CompositeVariantAttenuate = false;
-
-  // Whether the in-scatter target holds the last frame's L_in.
-  bool InScatterValid = false;
-  vtkShaderProgram* SliceArrayProgram = nullptr;
-
-  void AllocateTargets(vtkOpenGLRenderWindow* renWin, int w, int h);
-  void RenderScene(vtkLightShaftPass& self,
-    const vtkRenderState* s,
-    vtkRenderPass* delegate,
-    int w,
-    int h);
-  void RenderInScatter(vtkLightShaftPass& self,
-    const vtkRenderState* s,
-    vtkLight* light,
-    const CameraFrame& camera,
-    int w,
-    int h);
-  bool RenderShadowMap(vtkLightShaftPass& self,
-    const vtkRenderState* s,
-    const glm::dvec3& lightWC,
-    const glm::dvec3& axisWC,
-    double coneHalfAngle,
-    const glm::dmat4& worldToView,
-    glm::dmat4& viewToLightClip,
-    double lightDepthRange[2]);
-  vtkShaderProgram* ReadySliceProgram(vtkLightShaftPass& self, bool shadows);
-  void RenderComposite(vtkLightShaftPass& self,
-    vtkRenderer* ren,
-    const CameraFrame& camera,
-    int w,
-    int h);
+  FullScreenPass Composite;
+  FullScreenPass DepthDownsample;
+  FullScreenPass Resolve;
+  FullScreenPass Blur;
+  FullScreenPass Upsample;
 
   // Track the window whose context holds our GL objects. When it goes away first, free them
   // while its context still exists (at DeleteEvent the window is still whole).
@@ -317,7 +548,6 @@ public:
       {
         auto* self = static_cast<Internals*>(clientData);
         auto* dying = static_cast<vtkOpenGLRenderWindow*>(caller);
-        dying->MakeCurrent();
         dying->MakeCurrent();
         self->ReleaseOwnResources(dying);
         self->Window = nullptr;
@@ -359,7 +589,7 @@ public:
     return fixed;
   }
 
-  // Render `delegate` with state `s`; with the shadowed delegate, make sure its shadow maps were
+  // Render `delegate` with `render`; with the shadowed delegate, make sure its shadow maps were
   // baked with square cameras (re-render once when they were not).
   void RenderDelegate(vtkLightShaftPass& self,
     vtkRenderPass* delegate,
@@ -382,24 +612,39 @@ public:
 
   void ReleaseOwnResources(vtkWindow* w)
   {
-    for (vtkTextureObject* t : { this->SceneColor.Get(),
-           this->SceneDepth.Get(),
-           this->InScatter.Get(),
-           this->ShadowMap.Get() })
+    for (OwnedTexture* t : { &this->SceneColor,
+           &this->SceneColorUnlit,
+           &this->SceneDepth,
+           &this->ReducedDepth,
+           &this->SlabDepthTest,
+           &this->Accumulation[0],
+           &this->Accumulation[1],
+           &this->Accumulation[2],
+           &this->Resolved,
+           &this->BlurTemporary,
+           &this->Blurred,
+           &this->Upsampled,
+           &this->ShadowMap })
     {
-      if (t)
-      {
-        t->ReleaseGraphicsResources(w);
-      }
+      t->Release(w);
     }
-    for (vtkOpenGLFramebufferObject* f : { this->SceneFramebuffer.Get(),
-           this->InScatterFramebuffer.Get(),
-           this->ShadowFramebuffer.Get() })
+    for (auto* t : { &this->CookieTexture, &this->NoiseTexture })
     {
-      if (f)
+      if (*t)
       {
-        f->ReleaseGraphicsResources(w);
+        (*t)->ReleaseGraphicsResources(w);
       }
+      *t = nullptr;
+    }
+    this->CookieUploadTime = 0;
+    this->NoiseUploadTime = 0;
+    for (auto* f : { &this->SceneFramebuffer, &this->WorkFramebuffer, &this->ShadowFramebuffer })
+    {
+      if (*f)
+      {
+        (*f)->ReleaseGraphicsResources(w);
+      }
+      *f = nullptr;
     }
     if (this->SliceArray)
     {
@@ -409,26 +654,86 @@ public:
     {
       this->SliceBuffer->ReleaseGraphicsResources();
     }
-    if (this->Composite)
-    {
-      this->Composite->ReleaseGraphicsResources(w);
-    }
-    this->SceneColor = nullptr;
-    this->SceneDepth = nullptr;
-    this->InScatter = nullptr;
-    this->InScatterDepth = nullptr;
-    this->ShadowMap = nullptr;
-    this->SceneFramebuffer = nullptr;
-    this->InScatterFramebuffer = nullptr;
-    this->ShadowFramebuffer = nullptr;
     this->SliceArray = nullptr;
     this->SliceBuffer = nullptr;
-    this->Composite.reset();
     this->SliceProgram = nullptr;
     this->SliceArrayProgram = nullptr;
-    this->SliceVariantPhase = -1;
+    this->SliceSource.clear();
+    for (FullScreenPass* p :
+      { &this->Composite, &this->DepthDownsample, &this->Resolve, &this->Blur, &this->Upsample })
+    {
+      p->Release(w);
+    }
+    this->FinalInScatter = nullptr;
     this->InScatterValid = false;
   }
+
+  // Bind the work framebuffer with `color` (and optionally `depth`) as its only attachments.
+  void BindWork(vtkTextureObject* color, vtkTextureObject* depth, int w, int h)
+  {
+    vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
+    fbo->Bind();
+    fbo->RemoveColorAttachments(3);
+    fbo->RemoveDepthAttachment();
+    if (color)
+    {
+      fbo->AddColorAttachment(0, color);
+      fbo->ActivateDrawBuffer(0);
+    }
+    if (depth)
+    {
+      fbo->AddDepthAttachment(depth);
+    }
+    fbo->StartNonOrtho(w, h);
+    if (!color)
+    {
+      fbo->DeactivateDrawBuffers();
+    }
+    vtkOpenGLState* ostate = this->Window->GetState();
+    ostate->vtkglViewport(0, 0, w, h);
+    ostate->vtkglScissor(0, 0, w, h);
+  }
+
+  bool ComputeLightFrame(vtkLightShaftPass& self,
+    vtkRenderer* ren,
+    vtkLight* light,
+    const CameraFrame& camera,
+    double reach,
+    LightFrame& frame);
+  void RenderScene(vtkLightShaftPass& self,
+    const vtkRenderState* s,
+    vtkRenderPass* delegate,
+    vtkLight* light,
+    bool twice,
+    int w,
+    int h);
+  void RenderInScatter(vtkLightShaftPass& self,
+    const vtkRenderState* s,
+    LightFrame& light,
+    const CameraFrame& camera,
+    int w,
+    int h);
+  bool RenderShadowMap(vtkLightShaftPass& self, const vtkRenderState* s, LightFrame& frame);
+  vtkShaderProgram* ReadySliceProgram(vtkLightShaftPass& self,
+    bool shadows,
+    bool cookie,
+    bool noise);
+  bool ReadyCookie(vtkLightShaftPass& self);
+  bool ReadyNoise(vtkLightShaftPass& self);
+  void PostProcess(vtkLightShaftPass& self,
+    const CameraFrame& camera,
+    vtkTextureObject* slabDepth,
+    int w,
+    int h,
+    int lw,
+    int lh);
+  void RenderComposite(vtkLightShaftPass& self,
+    vtkRenderer* ren,
+    const CameraFrame& camera,
+    const LightFrame* light,
+    bool cookieSurfaces,
+    int w,
+    int h);
 };
 
 vtkStandardNewMacro(vtkLightShaftPass);
@@ -487,24 +792,28 @@ bool RefuseNonFinite(vtkObject* self, const char* parameter, std::initializer_li
   return true;
 }
 
-// Both medium coefficients: refuse non-finite values, clamp each channel to [0, max].
-void SetCoefficient(vtkObject* self,
+// Clamp `values` into [low, high] and store them in `target`; Modified() when they changed.
+void SetClamped(vtkObject* self,
   const char* parameter,
-  double coefficient[3],
-  double r,
-  double g,
-  double b)
+  double* target,
+  std::initializer_list<double> values,
+  double low,
+  double high)
 {
-  if (RefuseNonFinite(self, parameter, { r, g, b }))
+  if (RefuseNonFinite(self, parameter, values))
   {
     return;
   }
-  const double v[3] = { vtkMath::ClampValue(r, 0.0, MaximumCoefficient),
-    vtkMath::ClampValue(g, 0.0, MaximumCoefficient),
-    vtkMath::ClampValue(b, 0.0, MaximumCoefficient) };
-  if (!std::equal(v, v + 3, coefficient))
+  bool changed = false;
+  size_t i = 0;
+  for (double value : values)
   {
-    std::copy(v, v + 3, coefficient);
+    const double clamped = vtkMath::ClampValue(value, low, high);
+    changed = changed || target[i] != clamped;
+    target[i++] = clamped;
+  }
+  if (changed)
+  {
     self->Modified();
   }
 }
@@ -512,7 +821,12 @@ void SetCoefficient(vtkObject* self,
 
 void vtkLightShaftPass::SetScatteringCoefficient(double r, double g, double b)
 {
-  SetCoefficient(this, "ScatteringCoefficient", this->ScatteringCoefficient, r, g, b);
+  SetClamped(this,
+    "ScatteringCoefficient",
+    this->ScatteringCoefficient,
+    { r, g, b },
+    0.0,
+    MaximumCoefficient);
 }
 
 void vtkLightShaftPass::SetScatteringCoefficient(const double rgb[3])
@@ -527,7 +841,12 @@ void vtkLightShaftPass::SetScatteringCoefficient(double grey)
 
 void vtkLightShaftPass::SetAbsorptionCoefficient(double r, double g, double b)
 {
-  SetCoefficient(this, "AbsorptionCoefficient", this->AbsorptionCoefficient, r, g, b);
+  SetClamped(this,
+    "AbsorptionCoefficient",
+    this->AbsorptionCoefficient,
+    { r, g, b },
+    0.0,
+    MaximumCoefficient);
 }
 
 void vtkLightShaftPass::SetAbsorptionCoefficient(const double rgb[3])
@@ -542,28 +861,50 @@ void vtkLightShaftPass::SetAbsorptionCoefficient(double grey)
 
 void vtkLightShaftPass::SetAnisotropy(double g)
 {
-  if (RefuseNonFinite(this, "Anisotropy", { g }))
-  {
-    return;
-  }
-  g = vtkMath::ClampValue(g, -MaximumAnisotropy, MaximumAnisotropy);
-  if (g != this->Anisotropy)
-  {
-    this->Anisotropy = g;
-    this->Modified();
-  }
+  SetClamped(this, "Anisotropy", &this->Anisotropy, { g }, -MaximumAnisotropy, MaximumAnisotropy);
 }
 
 void vtkLightShaftPass::SetExposure(double exposure)
 {
-  if (RefuseNonFinite(this, "Exposure", { exposure }))
+  SetClamped(this, "Exposure", &this->Exposure, { exposure }, 0.0, MaximumExposure);
+}
+
+void vtkLightShaftPass::SetNoiseAmplitude(double amplitude)
+{
+  SetClamped(this, "NoiseAmplitude", &this->NoiseAmplitude, { amplitude }, 0.0, 1.0);
+}
+
+void vtkLightShaftPass::SetNoiseScale(double scale)
+{
+  SetClamped(this, "NoiseScale", &this->NoiseScale, { scale }, 0.01, 1000.0);
+}
+
+void vtkLightShaftPass::SetNoiseVelocity1(double u, double v)
+{
+  SetClamped(this, "NoiseVelocity1", this->NoiseVelocity1, { u, v }, -1e3, 1e3);
+}
+
+void vtkLightShaftPass::SetNoiseVelocity2(double u, double v)
+{
+  SetClamped(this, "NoiseVelocity2", this->NoiseVelocity2, { u, v }, -1e3, 1e3);
+}
+
+void vtkLightShaftPass::SetTime(double time)
+{
+  SetClamped(this,
+    "Time",
+    &this->Time,
+    { time },
+    -std::numeric_limits<double>::max(),
+    std::numeric_limits<double>::max());
+}
+
+void vtkLightShaftPass::SetDownsampleFactor(int factor)
+{
+  factor = factor >= 4 ? 4 : (factor >= 2 ? 2 : 1);
+  if (factor != this->DownsampleFactor)
   {
-    return;
-  }
-  exposure = vtkMath::ClampValue(exposure, 0.0, MaximumExposure);
-  if (exposure != this->Exposure)
-  {
-    this->Exposure = exposure;
+    this->DownsampleFactor = factor;
     this->Modified();
   }
 }
@@ -588,6 +929,48 @@ vtkLight* vtkLightShaftPass::GetLastUsedLight()
   return this->Impl->LastUsedLight;
 }
 
+void vtkLightShaftPass::SetCookie(vtkTexture* cookie)
+{
+  if (this->Impl->Cookie != cookie)
+  {
+    this->Impl->Cookie = cookie;
+    this->Impl->CookieUploadTime = 0;
+    this->Impl->WarnedCookie = false;
+    this->Modified();
+  }
+}
+
+vtkTexture* vtkLightShaftPass::GetCookie()
+{
+  return this->Impl->Cookie;
+}
+
+void vtkLightShaftPass::SetNoiseTexture(vtkTexture* noise)
+{
+  if (this->Impl->NoiseImage != noise)
+  {
+    this->Impl->NoiseImage = noise;
+    this->Impl->NoiseUploadTime = 0;
+    this->Impl->WarnedNoise = false;
+    this->Modified();
+  }
+}
+
+vtkTexture* vtkLightShaftPass::GetNoiseTexture()
+{
+  return this->Impl->NoiseImage;
+}
+
+const char* vtkLightShaftPass::GetLastShaderVariant()
+{
+  return this->Impl->SliceVariant.c_str();
+}
+
+const char* vtkLightShaftPass::GetLastSliceShaderSource()
+{
+  return this->Impl->SliceSource.c_str();
+}
+
 //------------------------------------------------------------------------------
 namespace
 {
@@ -595,8 +978,7 @@ bool IsSpotLight(vtkLight* light)
 {
   return light->GetPositional() && light->GetConeAngle() < 90.0;
 }
-
-} // namespace
+}
 
 //------------------------------------------------------------------------------
 void vtkLightShaftPass::Render(const vtkRenderState* s)
@@ -628,8 +1010,11 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   this->NumberOfRenderedProps = 0;
   this->LastNumberOfSlicesDrawn = 0;
   this->LastShadowMapRendered = false;
+  this->LastNumberOfShadowCasters = 0;
+  this->LastNumberOfSceneRenders = 0;
   this->LastSliceDepthRange[0] = this->LastSliceDepthRange[1] = 0.0;
   impl.InScatterValid = false;
+  impl.FinalInScatter = nullptr;
 
   vtkRenderer* ren = s->GetRenderer();
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
@@ -713,33 +1098,14 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   }
   impl.LastUsedLight = light;
 
-  const bool hasMedium = std::any_of(this->ScatteringCoefficient,
-                           this->ScatteringCoefficient + 3,
-                           [](double v) { return v > 0.0; }) ||
-                         std::any_of(this->AbsorptionCoefficient,
-                           this->AbsorptionCoefficient + 3,
-                           [](double v) { return v > 0.0; });
-
+  const bool hasMedium =
+    AnyPositive(this->ScatteringCoefficient) || AnyPositive(this->AbsorptionCoefficient);
   if (!light || !hasMedium || w < 1 || h < 1)
   {
     // Nothing to add: the delegate's image, untouched.
     impl.RenderDelegate(*this, delegate, s, [&]() { delegate->Render(s); });
-    vtkOpenGLCheckErrorMacro("failed after pass-through render");
+    this->LastNumberOfSceneRenders = 1;
     return;
-  }
-
-  // Scene camera, exactly as the mappers see it.
-  CameraFrame camera;
-  {
-    auto* glCamera = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
-    vtkMatrix4x4* wcvc = nullptr;
-    vtkMatrix4x4* vcdc = nullptr;
-    vtkMatrix4x4* wcdc = nullptr;
-    vtkMatrix3x3* normals = nullptr;
-    glCamera->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdc);
-    camera.WorldToView = FromKeyMatrix(wcvc);
-    camera.ViewToClip = FromKeyMatrix(vcdc);
-    camera.ClipToView = glm::inverse(camera.ViewToClip);
   }
 
   vtkOpenGLState* ostate = renWin->GetState();
@@ -755,7 +1121,17 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
   vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
 
-  impl.AllocateTargets(renWin, w, h);
+  if (!impl.SceneFramebuffer)
+  {
+    for (auto* f : { &impl.SceneFramebuffer, &impl.WorkFramebuffer })
+    {
+      *f = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      (*f)->SetContext(renWin);
+    }
+  }
+
+  // A cookie shapes the spotlight's light on surfaces too: that needs the scene without it.
+  const bool cookie = impl.Cookie && impl.ReadyCookie(*this);
 
   // The 2D overlay step of a vtkRenderStepsPass is held back and drawn after compositing so
   // that text and scalar bars stay on top, unfogged.
@@ -767,80 +1143,40 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   }
 
   ostate->PushFramebufferBindings();
-  impl.RenderScene(*this, s, delegate, w, h);
+  impl.RenderScene(*this, s, delegate, light, cookie, w, h);
   if (overlay)
   {
     steps->SetOverlayPass(overlay);
   }
-  impl.RenderInScatter(*this, s, light, camera, w, h);
+
+  // Scene camera, exactly as the mappers see it.
+  CameraFrame camera;
+  {
+    auto* glCamera = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
+    vtkMatrix4x4* wcvc = nullptr;
+    vtkMatrix4x4* vcdc = nullptr;
+    vtkMatrix4x4* wcdc = nullptr;
+    vtkMatrix3x3* normals = nullptr;
+    glCamera->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdc);
+    camera.WorldToView = FromKeyMatrix(wcvc);
+    camera.ViewToClip = FromKeyMatrix(vcdc);
+    camera.ClipToView = glm::inverse(camera.ViewToClip);
+  }
+  LightFrame lightFrame;
+  const bool lightFrameValid = impl.ComputeLightFrame(*this, ren, light, camera, 0.0, lightFrame);
+  impl.RenderInScatter(*this, s, lightFrame, camera, w, h);
   ostate->PopFramebufferBindings();
 
   ostate->vtkglViewport(x, y, w, h);
   ostate->vtkglEnable(GL_SCISSOR_TEST);
   ostate->vtkglScissor(x, y, w, h);
-  impl.RenderComposite(*this, ren, camera, w, h);
+  impl.RenderComposite(
+    *this, ren, camera, lightFrameValid ? &lightFrame : nullptr, cookie && lightFrameValid, w, h);
 
   if (overlay)
   {
     overlay->Render(s);
     this->NumberOfRenderedProps += overlay->GetNumberOfRenderedProps();
-  }
-  vtkOpenGLCheckErrorMacro("failed after Render");
-}
-
-//------------------------------------------------------------------------------
-void vtkLightShaftPass::Internals::AllocateTargets(vtkOpenGLRenderWindow* renWin, int w, int h)
-{
-  Internals& impl = *this;
-  auto makeTexture = [renWin]()
-  {
-    auto t = vtkSmartPointer<vtkTextureObject>::New();
-    t->SetContext(renWin);
-    t->SetWrapS(vtkTextureObject::ClampToEdge);
-    t->SetWrapT(vtkTextureObject::ClampToEdge);
-    t->SetMinificationFilter(vtkTextureObject::Nearest);
-    t->SetMagnificationFilter(vtkTextureObject::Nearest);
-    return t;
-  };
-  auto makeFramebuffer = [renWin]()
-  {
-    auto f = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    f->SetContext(renWin);
-    return f;
-  };
-  if (!impl.SceneColor)
-  {
-    impl.SceneColor = makeTexture();
-    impl.SceneColor->Allocate2D(w, h, 4, VTK_UNSIGNED_CHAR);
-    // The depth format VTK 9.1's GPU volume mapper allocates, so that its depth blit from the
-    // current target (our scene target) is legal.
-    for (auto* depth : { &impl.SceneDepth, &impl.InScatterDepth })
-    {
-      *depth = makeTexture();
-      if (renWin->GetStencilCapable())
-      {
-        (*depth)->AllocateDepthStencil(w, h);
-      }
-      else
-      {
-        (*depth)->AllocateDepth(w, h, vtkTextureObject::Fixed32);
-      }
-    }
-    impl.InScatter = makeTexture();
-    impl.InScatter->SetInternalFormat(GL_RGBA32F);
-    impl.InScatter->SetFormat(GL_RGBA);
-    impl.InScatter->SetDataType(GL_FLOAT);
-    impl.InScatter->Allocate2D(w, h, 4, VTK_FLOAT);
-    impl.SceneFramebuffer = makeFramebuffer();
-    impl.InScatterFramebuffer = makeFramebuffer();
-  }
-  else if (static_cast<int>(impl.SceneColor->GetWidth()) != w ||
-           static_cast<int>(impl.SceneColor->GetHeight()) != h)
-  {
-    impl.SceneColor->Resize(w, h);
-    impl.SceneDepth->Resize(w, h);
-    impl.InScatter->Resize(w, h);
-    impl.InScatterDepth->Resize(w, h);
   }
 }
 
@@ -848,115 +1184,528 @@ void vtkLightShaftPass::Internals::AllocateTargets(vtkOpenGLRenderWindow* renWin
 void vtkLightShaftPass::Internals::RenderScene(vtkLightShaftPass& self,
   const vtkRenderState* s,
   vtkRenderPass* delegate,
+  vtkLight* light,
+  bool twice,
   int w,
   int h)
 {
-  Internals& impl = *this;
   vtkRenderer* ren = s->GetRenderer();
-  vtkOpenGLState* ostate = impl.Window->GetState();
-
-  impl.SceneFramebuffer->Bind();
-  impl.SceneFramebuffer->AddColorAttachment(0, impl.SceneColor);
-  impl.SceneFramebuffer->ActivateDrawBuffer(0);
-  impl.SceneFramebuffer->AddDepthAttachment(impl.SceneDepth);
-  impl.SceneFramebuffer->StartNonOrtho(w, h);
-  ostate->vtkglViewport(0, 0, w, h);
-  ostate->vtkglScissor(0, 0, w, h);
-  // Renderers that do not erase (layers) would otherwise see the previous frame.
-  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-  ostate->vtkglDepthMask(GL_TRUE);
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  ostate->vtkglClearDepth(1.0);
+  vtkOpenGLState* ostate = this->Window->GetState();
+  vtkTextureObject* color = this->SceneColor.Ensure(this->Window, TextureKind::RGBA8, w, h);
+  vtkTextureObject* depth = this->SceneDepth.Ensure(this->Window, TextureKind::Depth, w, h);
+  if (twice)
+  {
+    this->SceneColorUnlit.Ensure(this->Window, TextureKind::RGBA8, w, h);
+  }
 
   vtkRenderState sceneState(ren);
   sceneState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
-  sceneState.SetFrameBuffer(impl.SceneFramebuffer);
-  this->RenderDelegate(self,
-    delegate,
-    s,
-    [&]()
-    {
-      ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      ostate->vtkglEnable(GL_DEPTH_TEST);
-      delegate->Render(&sceneState);
-    });
+  sceneState.SetFrameBuffer(this->SceneFramebuffer);
+  auto renderInto = [&](vtkTextureObject* target)
+  {
+    this->SceneFramebuffer->Bind();
+    this->SceneFramebuffer->AddColorAttachment(0, target);
+    this->SceneFramebuffer->ActivateDrawBuffer(0);
+    this->SceneFramebuffer->AddDepthAttachment(depth);
+    this->SceneFramebuffer->StartNonOrtho(w, h);
+    ostate->vtkglViewport(0, 0, w, h);
+    ostate->vtkglScissor(0, 0, w, h);
+    // Renderers that do not erase (layers) would otherwise see the previous frame.
+    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    ostate->vtkglDepthMask(GL_TRUE);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglClearDepth(1.0);
+    this->RenderDelegate(self,
+      delegate,
+      s,
+      [&]()
+      {
+        ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        ostate->vtkglEnable(GL_DEPTH_TEST);
+        delegate->Render(&sceneState);
+      });
+    ++self.LastNumberOfSceneRenders;
+  };
+  if (twice)
+  {
+    // Without the spotlight: the composite puts its light back through the cookie.
+    const vtkTypeBool wasOn = light->GetSwitch();
+    light->SwitchOff();
+    renderInto(this->SceneColorUnlit.Object);
+    light->SetSwitch(wasOn);
+  }
+  renderInto(color);
 }
 
 //------------------------------------------------------------------------------
-void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
-  const vtkRenderState* s,
-  vtkLight* light,
-  const CameraFrame& camera,
-  int w,
-  int h)
+namespace
 {
-  Internals& impl = *this;
-  vtkRenderer* ren = s->GetRenderer();
-  vtkOpenGLRenderWindow* renWin = impl.Window;
-  vtkOpenGLState* ostate = renWin->GetState();
-
-  // Clear L_in; it stays zero when nothing scatters.
-  impl.InScatterFramebuffer->Bind();
-  impl.InScatterFramebuffer->AddColorAttachment(0, impl.InScatter);
-  impl.InScatterFramebuffer->ActivateDrawBuffer(0);
-  impl.InScatterFramebuffer->StartNonOrtho(w, h);
-  ostate->vtkglViewport(0, 0, w, h);
-  ostate->vtkglScissor(0, 0, w, h);
-  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-  impl.InScatterValid = true;
-
-  const double* color = light->GetDiffuseColor();
-  const double intensity = light->GetIntensity();
-  const double radiantIntensity[3] = {
-    intensity * color[0], intensity * color[1], intensity * color[2]
-  };
-  const bool scatters =
-    light->GetSwitch() &&
-    std::any_of(self.ScatteringCoefficient,
-      self.ScatteringCoefficient + 3,
-      [](double v) { return v > 0.0; }) &&
-    std::any_of(radiantIntensity, radiantIntensity + 3, [](double v) { return v > 0.0; });
-  if (!scatters)
-  {
-    return;
-  }
-
-  const glm::dmat4& worldToView = camera.WorldToView;
-  const glm::dmat4& viewToClip = camera.ViewToClip;
-  const glm::dmat4& clipToView = camera.ClipToView;
-
-  // The light, in world and view coordinates.
-  const glm::dvec3 lightWC = glm::make_vec3(light->GetTransformedPosition());
-  glm::dvec3 axisWC = glm::make_vec3(light->GetTransformedFocalPoint()) - lightWC;
-  if (glm::length(axisWC) == 0.0)
-  {
-    axisWC = glm::dvec3(0.0, 0.0, -1.0);
-  }
-  axisWC = glm::normalize(axisWC);
-  const glm::dvec3 lightVC = glm::dvec3(worldToView * glm::dvec4(lightWC, 1.0));
-  const glm::dvec3 axisVC = glm::normalize(glm::dvec3(worldToView * glm::dvec4(axisWC, 0.0)));
-  const double coneHalfAngle = vtkMath::RadiansFromDegrees(light->GetConeAngle());
-
-  // The view volume from the camera plane to the far plane, as a polytope's vertices and the
-  // clip-space half-spaces that bound it.
+// The farthest point of the view volume (camera plane to far plane) from `pointVC`.
+double FarthestViewPoint(const glm::dmat4& clipToView, const glm::dvec3& pointVC)
+{
   double farthest = 0.0;
   for (int corner = 0; corner < 4; ++corner)
   {
     const double sx = (corner & 1) ? 1.0 : -1.0;
     const double sy = (corner & 2) ? 1.0 : -1.0;
-    glm::dvec4 nearPoint = clipToView * glm::dvec4(sx, sy, -1.0, 1.0);
-    glm::dvec4 farPoint = clipToView * glm::dvec4(sx, sy, 1.0, 1.0);
+    const glm::dvec4 nearPoint = clipToView * glm::dvec4(sx, sy, -1.0, 1.0);
+    const glm::dvec4 farPoint = clipToView * glm::dvec4(sx, sy, 1.0, 1.0);
     const glm::dvec3 n3 = glm::dvec3(nearPoint) / nearPoint.w;
     const glm::dvec3 f3 = glm::dvec3(farPoint) / farPoint.w;
     const glm::dvec3 dir = f3 - n3;
     const glm::dvec3 start = n3 - dir * (n3.z / dir.z);
-    farthest = std::max({ farthest, glm::length(start - lightVC), glm::length(f3 - lightVC) });
+    farthest = std::max({ farthest, glm::length(start - pointVC), glm::length(f3 - pointVC) });
   }
+  return farthest;
+}
+
+// Whether an axis-aligned box can reach into the light's bounding pyramid (apex, unit axis a,
+// unit u, v across it, half-angle with tangent `tangent`): false when all its corners are
+// outside one of the pyramid's planes.
+bool BoxReachesPyramid(const double bounds[6],
+  const glm::dvec3& apex,
+  const glm::dvec3& a,
+  const glm::dvec3& u,
+  const glm::dvec3& v,
+  double tangent)
+{
+  const glm::dvec3 sides[4] = { u, -u, v, -v };
+  auto outside = [&](const std::function<double(const glm::dvec3&)>& f)
+  {
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const glm::dvec3 p(
+        bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)]);
+      if (f(p - apex) >= 0.0)
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  if (outside([&](const glm::dvec3& d) { return glm::dot(d, a); }))
+  {
+    return false;
+  }
+  for (const glm::dvec3& side : sides)
+  {
+    if (outside([&](const glm::dvec3& d) { return tangent * glm::dot(d, a) - glm::dot(d, side); }))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+bool vtkLightShaftPass::Internals::ComputeLightFrame(vtkLightShaftPass& self,
+  vtkRenderer* ren,
+  vtkLight* light,
+  const CameraFrame& camera,
+  double,
+  LightFrame& frame)
+{
+  frame.PositionWC = glm::make_vec3(light->GetTransformedPosition());
+  glm::dvec3 axis = glm::make_vec3(light->GetTransformedFocalPoint()) - frame.PositionWC;
+  frame.AxisWC = glm::length(axis) > 0.0 ? glm::normalize(axis) : glm::dvec3(0.0, 0.0, -1.0);
+  frame.PositionVC = glm::dvec3(camera.WorldToView * glm::dvec4(frame.PositionWC, 1.0));
+  frame.AxisVC = glm::normalize(glm::dvec3(camera.WorldToView * glm::dvec4(frame.AxisWC, 0.0)));
+  frame.ConeHalfAngle = vtkMath::RadiansFromDegrees(light->GetConeAngle());
+  frame.Exponent = light->GetExponent();
+  light->GetAttenuationValues(frame.Attenuation);
+  if (frame.Attenuation[0] <= 0.0 && frame.Attenuation[1] <= 0.0 && frame.Attenuation[2] <= 0.0)
+  {
+    frame.Attenuation[0] = 1.0; // VTK's lighting would divide by zero; treat as no falloff.
+  }
+  const double* color = light->GetDiffuseColor();
+  for (int c = 0; c < 3; ++c)
+  {
+    frame.RadiantIntensity[c] = light->GetSwitch() ? light->GetIntensity() * color[c] : 0.0;
+  }
+
+  // Casters: visible props (culled from the camera's view or not) whose bounds reach into the
+  // light's bounding pyramid; only they can shadow the shafts.
+  const double halfAngle = std::min(frame.ConeHalfAngle, MaximumBoundingHalfAngle);
+  const double tangent = std::tan(halfAngle);
+  const glm::dvec3 up =
+    std::abs(frame.AxisWC.y) < 0.99 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(1.0, 0.0, 0.0);
+  const glm::dvec3 u = glm::normalize(glm::cross(frame.AxisWC, up));
+  const glm::dvec3 v = glm::cross(u, frame.AxisWC);
+  frame.Casters.clear();
+  double nearest = std::numeric_limits<double>::max();
+  double deepest = 0.0;
+  vtkPropCollection* props = ren->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    const double* bounds = prop->GetVisibility() ? prop->GetBounds() : nullptr;
+    if (!bounds || !vtkMath::AreBoundsInitialized(bounds) ||
+        !BoxReachesPyramid(bounds, frame.PositionWC, frame.AxisWC, u, v, tangent))
+    {
+      continue;
+    }
+    frame.Casters.push_back(prop);
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const glm::dvec3 p(
+        bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)]);
+      const double depth = glm::dot(p - frame.PositionWC, frame.AxisWC);
+      nearest = std::min(nearest, depth);
+      deepest = std::max(deepest, depth);
+    }
+  }
+  self.LastNumberOfShadowCasters = static_cast<int>(frame.Casters.size());
+
+  // The light camera's depth range: the casters' (tight: best shadow-map precision), else as
+  // far as the view volume reaches.
+  if (deepest <= 0.0)
+  {
+    deepest = std::max(FarthestViewPoint(camera.ClipToView, frame.PositionVC), 1e-30);
+    nearest = 0.0;
+  }
+  frame.Far = deepest * 1.001;
+  frame.Near = std::max(nearest * 0.999, frame.Far * 1e-4);
+  frame.Projection = glm::perspective(2.0 * halfAngle, 1.0, frame.Near, frame.Far);
+
+  vtkCamera* lightCamera = this->LightCamera;
+  lightCamera->SetPosition(frame.PositionWC.x, frame.PositionWC.y, frame.PositionWC.z);
+  lightCamera->SetFocalPoint(frame.PositionWC.x + frame.AxisWC.x,
+    frame.PositionWC.y + frame.AxisWC.y,
+    frame.PositionWC.z + frame.AxisWC.z);
+  lightCamera->SetViewUp(up.x, up.y, up.z);
+  vtkNew<vtkMatrix4x4> explicitProjection;
+  ToVTKMatrix(frame.Projection, explicitProjection);
+  lightCamera->SetExplicitProjectionTransformMatrix(explicitProjection);
+  lightCamera->SetUseExplicitProjectionTransformMatrix(true);
+  const glm::dmat4 lightView = FromVTKMatrix(lightCamera->GetViewTransformMatrix());
+  frame.ViewToLightClip = frame.Projection * lightView * glm::inverse(camera.WorldToView);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightShaftPass::Internals::RenderShadowMap(vtkLightShaftPass& self,
+  const vtkRenderState* s,
+  LightFrame& frame)
+{
+  if (frame.Casters.empty())
+  {
+    return false; // nothing can shadow the light's volume
+  }
+  vtkRenderer* ren = s->GetRenderer();
+  vtkOpenGLRenderWindow* renWin = this->Window;
+  vtkOpenGLState* ostate = renWin->GetState();
+
+  const int size = std::min(self.ShadowMapSize, vtkTextureObject::GetMaximumTextureSize(renWin));
+  vtkTextureObject* map = this->ShadowMap.Object;
+  if (!map || static_cast<int>(map->GetWidth()) != size)
+  {
+    // Float depth: the best precision for the light's (perspective) depth.
+    this->ShadowMap.Release(renWin);
+    this->ShadowMap.Object = vtkSmartPointer<vtkTextureObject>::New();
+    map = this->ShadowMap.Object;
+    map->SetContext(renWin);
+    map->SetWrapS(vtkTextureObject::ClampToEdge);
+    map->SetWrapT(vtkTextureObject::ClampToEdge);
+    map->SetMinificationFilter(vtkTextureObject::Nearest);
+    map->SetMagnificationFilter(vtkTextureObject::Nearest);
+    map->AllocateDepth(size, size, vtkTextureObject::Float32);
+  }
+  if (!this->ShadowFramebuffer)
+  {
+    this->ShadowFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->ShadowFramebuffer->SetContext(renWin);
+  }
+  this->ShadowFramebuffer->Bind();
+  this->ShadowFramebuffer->AddDepthAttachment(map);
+  this->ShadowFramebuffer->StartNonOrtho(size, size);
+  this->ShadowFramebuffer->DeactivateDrawBuffers();
+  ostate->vtkglViewport(0, 0, size, size);
+  ostate->vtkglScissor(0, 0, size, size);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglClearDepth(1.0);
+  ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_LEQUAL);
+
+  vtkRenderState shadowState(ren);
+  shadowState.SetPropArrayAndCount(frame.Casters.data(), static_cast<int>(frame.Casters.size()));
+  shadowState.SetFrameBuffer(this->ShadowFramebuffer);
+
+  // Render the opaque step with the light's camera, as vtkShadowMapBakerPass does.
+  vtkCamera* sceneCamera = ren->GetActiveCamera();
+  sceneCamera->Register(&self);
+  const vtkTypeBool automaticLights = ren->GetAutomaticLightCreation();
+  ren->SetAutomaticLightCreation(false);
+  ren->SetActiveCamera(this->LightCamera);
+  this->ShadowCameraPass->Render(&shadowState);
+  ren->SetActiveCamera(sceneCamera);
+  ren->SetAutomaticLightCreation(automaticLights);
+  sceneCamera->UnRegister(&self);
+
+  self.LastShadowMapRendered = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightShaftPass::Internals::ReadyCookie(vtkLightShaftPass& self)
+{
+  vtkTexture* cookie = this->Cookie;
+  if (cookie->GetNumberOfInputPorts() > 0 && cookie->GetNumberOfInputConnections(0) > 0)
+  {
+    cookie->GetInputAlgorithm()->Update();
+  }
+  vtkDataObject* input = cookie->GetInputDataObject(0, 0);
+  const vtkMTimeType time = std::max(cookie->GetMTime(), input ? input->GetMTime() : 0);
+  if (this->CookieTexture && time <= this->CookieUploadTime)
+  {
+    return true;
+  }
+  std::vector<float> rgb;
+  int width = 0;
+  int height = 0;
+  if (!ImageToRGB(cookie, rgb, width, height))
+  {
+    if (!this->WarnedCookie)
+    {
+      vtkWarningWithObjectMacro(&self, "The cookie texture has no image: no cookie is applied.");
+      this->WarnedCookie = true;
+    }
+    return false;
+  }
+  UploadMipmapped(this->CookieTexture, this->Window, rgb, width, height, 3, false);
+  this->CookieUploadTime = time;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightShaftPass::Internals::ReadyNoise(vtkLightShaftPass& self)
+{
+  if (this->NoiseImage)
+  {
+    vtkDataObject* input = this->NoiseImage->GetInputDataObject(0, 0);
+    const vtkMTimeType time = std::max(this->NoiseImage->GetMTime(), input ? input->GetMTime() : 0);
+    if (this->NoiseTexture && !this->NoiseIsGenerated && time <= this->NoiseUploadTime)
+    {
+      return true;
+    }
+    std::vector<float> rgb;
+    int width = 0;
+    int height = 0;
+    if (ImageToRGB(this->NoiseImage, rgb, width, height))
+    {
+      std::vector<float> texels(static_cast<size_t>(width) * height);
+      for (size_t i = 0; i < texels.size(); ++i)
+      {
+        texels[i] = rgb[3 * i];
+      }
+      vtkLightShaftNormalizeNoise(texels);
+      UploadMipmapped(this->NoiseTexture, this->Window, texels, width, height, 1, true);
+      this->NoiseUploadTime = time;
+      this->NoiseIsGenerated = false;
+      return true;
+    }
+    if (!this->WarnedNoise)
+    {
+      vtkWarningWithObjectMacro(
+        &self, "The noise texture has no image: using the generated noise.");
+      this->WarnedNoise = true;
+    }
+  }
+  if (!this->NoiseTexture || !this->NoiseIsGenerated)
+  {
+    constexpr int size = 256;
+    UploadMipmapped(this->NoiseTexture,
+      this->Window,
+      vtkLightShaftTileableNoise(size, 5, 2004u),
+      size,
+      size,
+      1,
+      true);
+    this->NoiseIsGenerated = true;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkShaderProgram* vtkLightShaftPass::Internals::ReadySliceProgram(vtkLightShaftPass& self,
+  bool shadows,
+  bool cookie,
+  bool noise)
+{
+  std::vector<std::string> defines;
+  std::string variant;
+  switch (self.PhaseFunction)
+  {
+    case HENYEY_GREENSTEIN:
+      defines.emplace_back("LIGHTSHAFT_PHASE_HG");
+      variant = "phase=henyey-greenstein";
+      break;
+    case RAYLEIGH:
+      defines.emplace_back("LIGHTSHAFT_PHASE_RAYLEIGH");
+      variant = "phase=rayleigh";
+      break;
+    default:
+      variant = "phase=isotropic";
+      break;
+  }
+  auto feature = [&](bool on, const char* define, const char* name)
+  {
+    if (on)
+    {
+      defines.emplace_back(define);
+      variant += std::string(" ") + name;
+    }
+  };
+  feature(shadows, "LIGHTSHAFT_SHADOW", "shadow");
+  feature(cookie, "LIGHTSHAFT_COOKIE", "cookie");
+  feature(noise, "LIGHTSHAFT_NOISE", "noise");
+  feature(self.Jitter, "LIGHTSHAFT_JITTER", "jitter");
+  if (self.AccumulationPrecision == ACCUMULATE_8BIT)
+  {
+    defines.emplace_back("LIGHTSHAFT_ACCUMULATE_8BIT");
+  }
+  const char* accumulation[] = { " accumulate=float32", " accumulate=float16", " accumulate=8bit" };
+  variant += accumulation[self.AccumulationPrecision];
+  const std::string fragment = WithFeatures(vtkLightShaftSliceFS, defines);
+
+  vtkOpenGLShaderCache* cache = this->Window->GetShaderCache();
+  if (this->SliceProgram && fragment == this->SliceSource)
+  {
+    return cache->ReadyShaderProgram(this->SliceProgram);
+  }
+  this->SliceProgram = cache->ReadyShaderProgram(vtkLightShaftSliceVS, fragment.c_str(), "");
+  this->SliceSource = fragment;
+  this->SliceVariant = variant;
+  if (!this->SliceProgram || !this->SliceProgram->GetCompiled())
+  {
+    vtkErrorWithObjectMacro(&self, "Could not build the light-shaft slice shader.");
+    this->SliceProgram = nullptr;
+    this->SliceSource.clear();
+    return nullptr;
+  }
+  if (!this->SliceArray)
+  {
+    this->SliceArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+    this->SliceBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    this->SliceBuffer->SetType(vtkOpenGLBufferObject::ArrayBuffer);
+  }
+  this->SliceArrayProgram = nullptr; // attributes are bound to the new program on first draw
+  return this->SliceProgram;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
+  const vtkRenderState* s,
+  LightFrame& light,
+  const CameraFrame& camera,
+  int w,
+  int h)
+{
+  vtkOpenGLRenderWindow* renWin = this->Window;
+  vtkOpenGLState* ostate = renWin->GetState();
+  const int factor = self.DownsampleFactor;
+  const int lw = (w + factor - 1) / factor;
+  const int lh = (h + factor - 1) / factor;
+  const bool eightBit = self.AccumulationPrecision == ACCUMULATE_8BIT;
+  const TextureKind accumulationKind =
+    eightBit ? TextureKind::RGBA8
+             : (self.AccumulationPrecision == ACCUMULATE_FLOAT16 ? TextureKind::RGBA16F
+                                                                 : TextureKind::RGBA32F);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_CULL_FACE);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+
+  // The depth the slabs read: the scene's, or at reduced resolution the nearest of each block.
+  vtkOpenGLFramebufferObject* depthSource = this->SceneFramebuffer;
+  vtkTextureObject* slabDepth = this->SceneDepth.Object;
+  if (factor > 1)
+  {
+    slabDepth = this->ReducedDepth.Ensure(renWin, TextureKind::Depth, lw, lh);
+    this->BindWork(nullptr, slabDepth, lw, lh);
+    if (vtkShaderProgram* program =
+          this->DepthDownsample.Ready(renWin, WithFeatures(vtkLightShaftDepthDownsampleFS, {})))
+    {
+      ostate->vtkglEnable(GL_DEPTH_TEST);
+      ostate->vtkglDepthFunc(GL_ALWAYS);
+      ostate->vtkglDepthMask(GL_TRUE);
+      this->SceneDepth.Object->Activate();
+      program->SetUniformi("fullDepth", this->SceneDepth.Object->GetTextureUnit());
+      program->SetUniformi("factor", factor);
+      const float reducedSize[2] = { static_cast<float>(lw), static_cast<float>(lh) };
+      program->SetUniform2f("reducedSize", reducedSize);
+      this->DepthDownsample.Quad->Render();
+      this->SceneDepth.Object->Deactivate();
+    }
+    depthSource = this->WorkFramebuffer;
+  }
+
+  // Accumulation target(s), cleared, with a copy of the slab depth for the depth test.
+  vtkTextureObject* depthTest = this->SlabDepthTest.Ensure(renWin, TextureKind::Depth, lw, lh);
+  const unsigned int targets = eightBit ? 3 : 1;
+  auto bindAccumulation = [&]()
+  {
+    vtkOpenGLFramebufferObject* fbo = this->SceneFramebuffer;
+    fbo->Bind();
+    fbo->RemoveColorAttachments(3);
+    for (unsigned int i = 0; i < targets; ++i)
+    {
+      fbo->AddColorAttachment(i, this->Accumulation[i].Object);
+    }
+    fbo->ActivateDrawBuffers(targets);
+    fbo->AddDepthAttachment(depthTest);
+    fbo->StartNonOrtho(lw, lh);
+    ostate->vtkglViewport(0, 0, lw, lh);
+    ostate->vtkglScissor(0, 0, lw, lh);
+  };
+  for (unsigned int i = 0; i < targets; ++i)
+  {
+    this->Accumulation[i].Ensure(renWin, accumulationKind, lw, lh);
+  }
+  if (factor > 1)
+  {
+    // The reduced depth is attached to the work framebuffer: copy it from there.
+    bindAccumulation();
+    depthSource->Bind(GL_READ_FRAMEBUFFER);
+    ostate->vtkglBlitFramebuffer(0, 0, lw, lh, 0, 0, lw, lh, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  }
+  else
+  {
+    // The scene framebuffer holds the scene depth; attach the copy to the accumulation only
+    // after the blit (the same framebuffer object serves both).
+    this->WorkFramebuffer->Bind();
+    this->WorkFramebuffer->RemoveColorAttachments(3);
+    this->WorkFramebuffer->RemoveDepthAttachment();
+    this->WorkFramebuffer->AddDepthAttachment(depthTest);
+    this->WorkFramebuffer->DeactivateDrawBuffers();
+    this->SceneFramebuffer->Bind(GL_READ_FRAMEBUFFER);
+    this->WorkFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+    ostate->vtkglBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    this->WorkFramebuffer->Bind();
+    this->WorkFramebuffer->RemoveDepthAttachment();
+    bindAccumulation();
+  }
+  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  this->FinalInScatter = this->Accumulation[0].Object;
+
+  const bool scatters =
+    AnyPositive(self.ScatteringCoefficient) && AnyPositive(light.RadiantIntensity);
+  if (!scatters)
+  {
+    return;
+  }
+
+  const glm::dmat4& viewToClip = camera.ViewToClip;
+  const glm::dmat4& clipToView = camera.ClipToView;
+  const glm::dvec3& lightVC = light.PositionVC;
+  const glm::dvec3& axisVC = light.AxisVC;
+  const double coneHalfAngle = light.ConeHalfAngle;
 
   // The light's bounding pyramid (apex at the light, base beyond everything the view can see).
   const double boundingHalfAngle = std::min(coneHalfAngle, MaximumBoundingHalfAngle);
-  const double reach = std::max(farthest, 1e-30);
+  const double reach = std::max(FarthestViewPoint(clipToView, lightVC), 1e-30);
   const double halfSide = reach * std::tan(boundingHalfAngle);
   glm::dvec3 u = glm::cross(
     axisVC, std::abs(axisVC.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0));
@@ -981,11 +1730,8 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   const glm::dvec4 row1 = clipT[1];
   const glm::dvec4 row2 = clipT[2];
   const glm::dvec4 row3 = clipT[3];
-  const double farDepth = [&]()
-  {
-    const glm::dvec4 p = clipToView * glm::dvec4(0.0, 0.0, 1.0, 1.0);
-    return -p.z / p.w;
-  }();
+  const glm::dvec4 farPoint = clipToView * glm::dvec4(0.0, 0.0, 1.0, 1.0);
+  const double farDepth = -farPoint.z / farPoint.w;
   const double minimumDepth = farDepth * 1e-7;
   for (const glm::dvec4& plane : { row3 + row0,
          row3 - row0,
@@ -1000,7 +1746,6 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   {
     return; // The light volume is outside the view: nothing to do.
   }
-
   double nearest = std::numeric_limits<double>::max();
   double deepest = 0.0;
   for (const auto& face : lit.Faces)
@@ -1019,17 +1764,29 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   self.LastSliceDepthRange[0] = nearest;
   self.LastSliceDepthRange[1] = deepest;
 
-  // Slabs: for each, the screen footprint of the lit polytope between its two depths.
-  const int slices = self.NumberOfSlices;
+  // How many slabs: fixed, or (automatic) as many slabs of thickness far / maximum as the lit
+  // depth range needs.
+  int slices = self.NumberOfSlices;
+  if (self.AutomaticSliceCount)
+  {
+    const double spacing = farDepth / self.MaximumNumberOfSlices;
+    slices = static_cast<int>(std::ceil((deepest - nearest) / spacing - 1e-9));
+    slices = std::max(1, std::min(slices, self.MaximumNumberOfSlices));
+  }
   const double thickness = (deepest - nearest) / slices;
-  std::vector<float>& vertices = impl.SliceVertices;
+  // With jitter a pixel's slab k spans [k - 1 + o, k + o] thicknesses (o in (0, 1)): one more
+  // slab, and footprints covering two thicknesses.
+  const int drawnSlabs = self.Jitter ? slices + 1 : slices;
+
+  // Slabs: for each, the screen footprint of the lit polytope between its two depths.
+  std::vector<float>& vertices = this->SliceVertices;
   vertices.clear();
   std::vector<glm::dvec2> footprint;
   int drawn = 0;
-  for (int k = 0; k < slices; ++k)
+  for (int k = 0; k < drawnSlabs; ++k)
   {
-    const double za = nearest + k * thickness;
-    const double zb = (k + 1 == slices) ? deepest : za + thickness;
+    const double za = std::max(nearest, nearest + (self.Jitter ? k - 1 : k) * thickness);
+    const double zb = std::min(deepest, nearest + (k + 1) * thickness);
     footprint.clear();
     auto addPoint = [&](const glm::dvec3& p)
     {
@@ -1071,8 +1828,8 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
         vertices.insert(vertices.end(),
           { static_cast<float>(p.x),
             static_cast<float>(p.y),
-            static_cast<float>(za),
-            static_cast<float>(zb) });
+            static_cast<float>(k),
+            static_cast<float>(za) });
       }
     }
   }
@@ -1081,43 +1838,30 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
     return;
   }
 
-  // Shadow map of the opaque geometry, seen from the light.
-  glm::dmat4 viewToLightClip(1.0);
-  double lightDepthRange[2] = { 0.0, 0.0 };
-  const bool shadows = impl.RenderShadowMap(
-    self, s, lightWC, axisWC, coneHalfAngle, worldToView, viewToLightClip, lightDepthRange);
-
-  // Re-bind the in-scatter target (the shadow pass used its own) with a copy of the scene depth.
-  impl.InScatterFramebuffer->Bind();
-  impl.InScatterFramebuffer->AddDepthAttachment(impl.InScatterDepth);
-  impl.InScatterFramebuffer->ActivateDrawBuffer(0);
-  impl.SceneFramebuffer->Bind(GL_READ_FRAMEBUFFER);
-  ostate->vtkglBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  impl.InScatterFramebuffer->Bind();
-  ostate->vtkglViewport(0, 0, w, h);
-  ostate->vtkglScissor(0, 0, w, h);
-
-  vtkShaderProgram* program = impl.ReadySliceProgram(self, shadows);
+  // Shadow map of the casters, seen from the light (skipped when nothing can shadow).
+  const bool shadows = this->RenderShadowMap(self, s, light);
+  const bool cookie = this->Cookie && this->CookieTexture;
+  const bool noise = self.NoiseAmplitude > 0.0 && this->ReadyNoise(self);
+  vtkShaderProgram* program = this->ReadySliceProgram(self, shadows, cookie, noise);
   if (!program)
   {
     return;
   }
+  bindAccumulation();
 
-  // Each slab is drawn at its near depth: the depth test drops it where it starts behind the
-  // surface. Depth clamping keeps slabs in front of the near plane (eye inside the light).
+  // Each slab is drawn at the near depth of its footprint: the depth test drops it where it
+  // starts behind the surface. Depth clamping keeps slabs in front of the near plane.
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_LESS);
   ostate->vtkglDepthMask(GL_FALSE);
   const GLboolean depthClampWasOn = glIsEnabled(GL_DEPTH_CLAMP);
   glEnable(GL_DEPTH_CLAMP);
-  ostate->vtkglDisable(GL_CULL_FACE);
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
   auto invProjection = ToFloatColumnMajor(clipToView);
   program->SetUniformMatrix4x4("invProjectionDCVC", invProjection.data());
-  const float targetSize[2] = { static_cast<float>(w), static_cast<float>(h) };
+  const float targetSize[2] = { static_cast<float>(lw), static_cast<float>(lh) };
   program->SetUniform2f("targetSize", targetSize);
   // Row 2 and row 3 of the projection: a view depth's NDC z, for the slabs' depth test.
   const float depthProjection[4] = { static_cast<float>(viewToClip[2][2]),
@@ -1125,20 +1869,18 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
     static_cast<float>(viewToClip[2][3]),
     static_cast<float>(viewToClip[3][3]) };
   program->SetUniform4f("depthProjection", depthProjection);
-  impl.SceneDepth->Activate();
-  program->SetUniformi("sceneDepth", impl.SceneDepth->GetTextureUnit());
+  program->SetUniformf("slabStart", static_cast<float>(nearest));
+  program->SetUniformf("slabEnd", static_cast<float>(deepest));
+  program->SetUniformf("slabThickness", static_cast<float>(thickness));
+  program->SetUniformf("lastSlab", static_cast<float>(drawnSlabs - 1));
+  slabDepth->Activate();
+  program->SetUniformi("sceneDepth", slabDepth->GetTextureUnit());
   program->SetUniform3f("lightPositionVC", ToFloat3(lightVC).data());
   program->SetUniform3f("lightAxisVC", ToFloat3(axisVC).data());
   program->SetUniformf("cosConeAngle", static_cast<float>(std::cos(coneHalfAngle)));
-  program->SetUniformf("spotExponent", static_cast<float>(light->GetExponent()));
-  double attenuation[3];
-  light->GetAttenuationValues(attenuation);
-  if (attenuation[0] <= 0.0 && attenuation[1] <= 0.0 && attenuation[2] <= 0.0)
-  {
-    attenuation[0] = 1.0; // VTK's lighting would divide by zero; treat as no falloff.
-  }
-  program->SetUniform3f("attenuationCoefficients", attenuation);
-  program->SetUniform3f("lightRadiantIntensity", radiantIntensity);
+  program->SetUniformf("spotExponent", static_cast<float>(light.Exponent));
+  program->SetUniform3f("attenuationCoefficients", light.Attenuation);
+  program->SetUniform3f("lightRadiantIntensity", light.RadiantIntensity);
   program->SetUniform3f("sigmaS", self.ScatteringCoefficient);
   double sigmaT[3];
   for (int c = 0; c < 3; ++c)
@@ -1150,248 +1892,197 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   {
     program->SetUniformf("anisotropy", static_cast<float>(self.Anisotropy));
   }
+  if (shadows || cookie || noise)
+  {
+    auto lightMatrix = ToFloatColumnMajor(light.ViewToLightClip);
+    program->SetUniformMatrix4x4("lightClipFromVC", lightMatrix.data());
+    const bool perspective = viewToClip[2][3] != 0.0;
+    const float pixel = static_cast<float>(2.0 / (lw * viewToClip[0][0]));
+    const float pixelFootprint[2] = { perspective ? pixel : 0.0f, perspective ? 0.0f : pixel };
+    program->SetUniform2f("pixelFootprint", pixelFootprint);
+    program->SetUniformf("lightTexelAngle", static_cast<float>(2.0 * std::tan(boundingHalfAngle)));
+  }
   if (shadows)
   {
-    impl.ShadowMap->Activate();
-    program->SetUniformi("shadowMap", impl.ShadowMap->GetTextureUnit());
-    auto lightMatrix = ToFloatColumnMajor(viewToLightClip);
-    program->SetUniformMatrix4x4("lightClipFromVC", lightMatrix.data());
-    const float depthRange[2] = { static_cast<float>(lightDepthRange[0]),
-      static_cast<float>(lightDepthRange[1]) };
+    this->ShadowMap.Object->Activate();
+    program->SetUniformi("shadowMap", this->ShadowMap.Object->GetTextureUnit());
+    const float depthRange[2] = { static_cast<float>(light.Near), static_cast<float>(light.Far) };
     program->SetUniform2f("lightDepthRange", depthRange);
     // Two texels' worth of relative depth: a sample this close behind a caster's front face is
     // inside the caster, where no view ray goes.
-    const double texelAngle = 2.0 * std::tan(std::min(coneHalfAngle, MaximumBoundingHalfAngle)) /
-                              impl.ShadowMap->GetWidth();
+    const double texelAngle =
+      2.0 * std::tan(boundingHalfAngle) / this->ShadowMap.Object->GetWidth();
     program->SetUniformf("shadowBias", static_cast<float>(2.0 * texelAngle + 1e-4));
   }
-
-  impl.SliceBuffer->Upload(vertices, vtkOpenGLBufferObject::ArrayBuffer);
-  if (impl.SliceArrayProgram != program)
+  if (cookie)
   {
-    impl.SliceArray->ShaderProgramChanged();
+    this->CookieTexture->Activate();
+    program->SetUniformi("cookieTexture", this->CookieTexture->GetTextureUnit());
+    program->SetUniformf("cookieSize",
+      static_cast<float>(
+        std::max(this->CookieTexture->GetWidth(), this->CookieTexture->GetHeight())));
   }
-  impl.SliceArray->Bind();
-  if (impl.SliceArrayProgram != program)
+  if (noise)
   {
-    impl.SliceArray->AddAttributeArray(
-      program, impl.SliceBuffer, "sliceVertex", 0, 4 * sizeof(float), VTK_FLOAT, 4, false);
-    impl.SliceArrayProgram = program;
+    this->NoiseTexture->Activate();
+    program->SetUniformi("noiseTexture", this->NoiseTexture->GetTextureUnit());
+    program->SetUniformf("noiseSize", static_cast<float>(this->NoiseTexture->GetWidth()));
+    program->SetUniformf("noiseAmplitude", static_cast<float>(self.NoiseAmplitude));
+    program->SetUniformf("noiseScale", static_cast<float>(self.NoiseScale));
+    // Scroll offsets at Time, wrapped to one tile in double precision (large times stay exact).
+    auto wrap = [](double value) { return static_cast<float>(value - std::floor(value)); };
+    const float shift[4] = { wrap(self.NoiseVelocity1[0] * self.Time),
+      wrap(self.NoiseVelocity1[1] * self.Time),
+      wrap(self.NoiseVelocity2[0] * self.Time + 0.37),
+      wrap(self.NoiseVelocity2[1] * self.Time + 0.61) };
+    program->SetUniform4f("noiseShift", shift);
+  }
+  if (eightBit)
+  {
+    program->SetUniformf(
+      "accumulationScale", static_cast<float>(self.Exposure > 0.0 ? self.Exposure : 1.0));
+  }
+
+  this->SliceBuffer->Upload(vertices, vtkOpenGLBufferObject::ArrayBuffer);
+  if (this->SliceArrayProgram != program)
+  {
+    this->SliceArray->ShaderProgramChanged();
+  }
+  this->SliceArray->Bind();
+  if (this->SliceArrayProgram != program)
+  {
+    this->SliceArray->AddAttributeArray(
+      program, this->SliceBuffer, "sliceVertex", 0, 4 * sizeof(float), VTK_FLOAT, 4, false);
+    this->SliceArrayProgram = program;
   }
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size() / 4));
-  impl.SliceArray->Release();
+  this->SliceArray->Release();
 
-  impl.SceneDepth->Deactivate();
-  if (shadows)
+  slabDepth->Deactivate();
+  for (vtkTextureObject* t : { shadows ? this->ShadowMap.Object.Get() : nullptr,
+         cookie ? this->CookieTexture.Get() : nullptr,
+         noise ? this->NoiseTexture.Get() : nullptr })
   {
-    impl.ShadowMap->Deactivate();
-  }
-  self.LastNumberOfSlicesDrawn = drawn;
-}
-
-//------------------------------------------------------------------------------
-bool vtkLightShaftPass::Internals::RenderShadowMap(vtkLightShaftPass& self,
-  const vtkRenderState* s,
-  const glm::dvec3& lightWC,
-  const glm::dvec3& axisWC,
-  double coneHalfAngle,
-  const glm::dmat4& worldToView,
-  glm::dmat4& viewToLightClip,
-  double lightDepthRange[2])
-{
-  vtkRenderer* ren = s->GetRenderer();
-  vtkOpenGLRenderWindow* renWin = this->Window;
-  vtkOpenGLState* ostate = renWin->GetState();
-
-  // Every visible prop casts, including those culled from the camera's view.
-  std::vector<vtkProp*> casters;
-  vtkPropCollection* props = ren->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    if (prop->GetVisibility())
+    if (t)
     {
-      casters.push_back(prop);
+      t->Deactivate();
     }
   }
-  double bounds[6];
-  ren->ComputeVisiblePropBounds(bounds);
-  if (casters.empty() || !vtkMath::AreBoundsInitialized(bounds))
+  if (!depthClampWasOn)
   {
-    return false;
+    glDisable(GL_DEPTH_CLAMP);
   }
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  self.LastNumberOfSlicesDrawn = drawn;
 
-  // Depth range of the scene along the light's axis.
-  double nearest = std::numeric_limits<double>::max();
-  double deepest = -std::numeric_limits<double>::max();
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    const glm::dvec3 p(
-      bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)]);
-    const double depth = glm::dot(p - lightWC, axisWC);
-    nearest = std::min(nearest, depth);
-    deepest = std::max(deepest, depth);
-  }
-  if (deepest <= 0.0)
-  {
-    return false; // Everything is behind the light: nothing can shadow the cone.
-  }
-  const double farPlane = deepest * 1.001;
-  const double nearPlane = std::max(nearest * 0.999, farPlane * 1e-4);
-  lightDepthRange[0] = nearPlane;
-  lightDepthRange[1] = farPlane;
-
-  // The light's camera: a square frustum whose inscribed cone is the spot cone.
-  const double halfAngle = std::min(coneHalfAngle, MaximumBoundingHalfAngle);
-  const glm::dmat4 projection = glm::perspective(2.0 * halfAngle, 1.0, nearPlane, farPlane);
-  const glm::dvec3 up =
-    std::abs(axisWC.y) < 0.99 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(1.0, 0.0, 0.0);
-  vtkCamera* lightCamera = this->LightCamera;
-  lightCamera->SetPosition(lightWC.x, lightWC.y, lightWC.z);
-  lightCamera->SetFocalPoint(lightWC.x + axisWC.x, lightWC.y + axisWC.y, lightWC.z + axisWC.z);
-  lightCamera->SetViewUp(up.x, up.y, up.z);
-  vtkNew<vtkMatrix4x4> explicitProjection;
-  ToVTKMatrix(projection, explicitProjection);
-  lightCamera->SetExplicitProjectionTransformMatrix(explicitProjection);
-  lightCamera->SetUseExplicitProjectionTransformMatrix(true);
-  const glm::dmat4 lightView = FromVTKMatrix(lightCamera->GetViewTransformMatrix());
-  viewToLightClip = projection * lightView * glm::inverse(worldToView);
-
-  // Target.
-  const int size = std::min(self.ShadowMapSize, vtkTextureObject::GetMaximumTextureSize(renWin));
-  if (!this->ShadowMap)
-  {
-    this->ShadowMap = vtkSmartPointer<vtkTextureObject>::New();
-    this->ShadowMap->SetContext(renWin);
-    this->ShadowMap->SetWrapS(vtkTextureObject::ClampToEdge);
-    this->ShadowMap->SetWrapT(vtkTextureObject::ClampToEdge);
-    this->ShadowMap->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->ShadowMap->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->ShadowMap->AllocateDepth(size, size, vtkTextureObject::Float32);
-    this->ShadowFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    this->ShadowFramebuffer->SetContext(renWin);
-  }
-  else if (static_cast<int>(this->ShadowMap->GetWidth()) != size)
-  {
-    this->ShadowMap->Resize(size, size);
-  }
-  this->ShadowFramebuffer->Bind();
-  this->ShadowFramebuffer->AddDepthAttachment(this->ShadowMap);
-  this->ShadowFramebuffer->StartNonOrtho(size, size);
-  this->ShadowFramebuffer->DeactivateDrawBuffers();
-  ostate->vtkglViewport(0, 0, size, size);
-  ostate->vtkglScissor(0, 0, size, size);
-  ostate->vtkglDepthMask(GL_TRUE);
-  ostate->vtkglClearDepth(1.0);
-  ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_LEQUAL);
-
-  vtkRenderState shadowState(ren);
-  shadowState.SetPropArrayAndCount(casters.data(), static_cast<int>(casters.size()));
-  shadowState.SetFrameBuffer(this->ShadowFramebuffer);
-
-  // Render the opaque step with the light's camera, as vtkShadowMapBakerPass does.
-  vtkCamera* sceneCamera = ren->GetActiveCamera();
-  sceneCamera->Register(&self);
-  const vtkTypeBool automaticLights = ren->GetAutomaticLightCreation();
-  ren->SetAutomaticLightCreation(false);
-  ren->SetActiveCamera(lightCamera);
-  this->ShadowCameraPass->Render(&shadowState);
-  ren->SetActiveCamera(sceneCamera);
-  ren->SetAutomaticLightCreation(automaticLights);
-  sceneCamera->UnRegister(&self);
-
-  self.LastShadowMapRendered = true;
-  return true;
+  this->PostProcess(self, camera, slabDepth, w, h, lw, lh);
+  this->InScatterValid = true;
 }
 
 //------------------------------------------------------------------------------
-vtkShaderProgram* vtkLightShaftPass::Internals::ReadySliceProgram(vtkLightShaftPass& self,
-  bool shadows)
+void vtkLightShaftPass::Internals::PostProcess(vtkLightShaftPass& self,
+  const CameraFrame& camera,
+  vtkTextureObject* slabDepth,
+  int w,
+  int h,
+  int lw,
+  int lh)
 {
-  vtkOpenGLShaderCache* cache = this->Window->GetShaderCache();
-  if (this->SliceProgram && this->SliceVariantPhase == self.PhaseFunction &&
-      this->SliceVariantShadow == shadows)
+  vtkOpenGLRenderWindow* renWin = this->Window;
+  vtkTextureObject* current = this->Accumulation[0].Object;
+  auto invProjection = ToFloatColumnMajor(camera.ClipToView);
+  constexpr float depthTolerance = 0.05f; // relative view-depth difference of "same surface"
+
+  if (self.AccumulationPrecision == ACCUMULATE_8BIT)
   {
-    return cache->ReadyShaderProgram(this->SliceProgram);
+    vtkTextureObject* resolved = this->Resolved.Ensure(renWin, TextureKind::RGBA32F, lw, lh);
+    this->BindWork(resolved, nullptr, lw, lh);
+    if (vtkShaderProgram* program =
+          this->Resolve.Ready(renWin, WithFeatures(vtkLightShaftResolveFS, {})))
+    {
+      const char* names[3] = { "accumulatedRed", "accumulatedGreen", "accumulatedBlue" };
+      for (int c = 0; c < 3; ++c)
+      {
+        this->Accumulation[c].Object->Activate();
+        program->SetUniformi(names[c], this->Accumulation[c].Object->GetTextureUnit());
+      }
+      program->SetUniformf(
+        "inverseScale", static_cast<float>(1.0 / (self.Exposure > 0.0 ? self.Exposure : 1.0)));
+      this->Resolve.Quad->Render();
+      for (int c = 0; c < 3; ++c)
+      {
+        this->Accumulation[c].Object->Deactivate();
+      }
+    }
+    current = resolved;
   }
 
-  // Build the variant: only the phase function and shadow lookup in use are compiled in.
-  std::string fragment = vtkLightShaftSliceFS;
-  vtkShaderProgram::Substitute(fragment, "//VTK::LightShaft::Common", vtkLightShaftCommon);
-  switch (self.PhaseFunction)
+  if (self.BlurRadius > 0)
   {
-    case HENYEY_GREENSTEIN:
-      vtkShaderProgram::Substitute(
-        fragment, "//VTK::LightShaft::PhaseDec", "uniform float anisotropy;");
-      vtkShaderProgram::Substitute(fragment,
-        "//VTK::LightShaft::PhaseImpl",
-        "float hgDenominator = 1.0 + anisotropy * anisotropy - 2.0 * anisotropy * cosTheta;\n"
-        "  phase = (1.0 - anisotropy * anisotropy) /\n"
-        "    (4.0 * PI * hgDenominator * sqrt(hgDenominator));");
-      break;
-    case RAYLEIGH:
-      vtkShaderProgram::Substitute(fragment,
-        "//VTK::LightShaft::PhaseImpl",
-        "phase = 3.0 / (16.0 * PI) * (1.0 + cosTheta * cosTheta);");
-      break;
-    default:
-      vtkShaderProgram::Substitute(
-        fragment, "//VTK::LightShaft::PhaseImpl", "phase = 1.0 / (4.0 * PI);");
-      break;
+    vtkShaderProgram* program = this->Blur.Ready(renWin, WithFeatures(vtkLightShaftBlurFS, {}));
+    vtkTextureObject* temporary = this->BlurTemporary.Ensure(renWin, TextureKind::RGBA32F, lw, lh);
+    vtkTextureObject* blurred = this->Blurred.Ensure(renWin, TextureKind::RGBA32F, lw, lh);
+    if (program)
+    {
+      const float targetSize[2] = { static_cast<float>(lw), static_cast<float>(lh) };
+      const int directions[2][2] = { { 1, 0 }, { 0, 1 } };
+      vtkTextureObject* sources[2] = { current, temporary };
+      vtkTextureObject* outputs[2] = { temporary, blurred };
+      for (int pass = 0; pass < 2; ++pass)
+      {
+        this->BindWork(outputs[pass], nullptr, lw, lh);
+        renWin->GetShaderCache()->ReadyShaderProgram(program);
+        sources[pass]->Activate();
+        slabDepth->Activate();
+        program->SetUniformi("source", sources[pass]->GetTextureUnit());
+        program->SetUniformi("sceneDepth", slabDepth->GetTextureUnit());
+        program->SetUniformMatrix4x4("invProjectionDCVC", invProjection.data());
+        program->SetUniform2f("targetSize", targetSize);
+        program->SetUniform2i("direction", directions[pass]);
+        program->SetUniformi("radius", self.BlurRadius);
+        program->SetUniformf("depthTolerance", depthTolerance);
+        this->Blur.Quad->Render();
+        slabDepth->Deactivate();
+        sources[pass]->Deactivate();
+      }
+      current = blurred;
+    }
   }
-  if (shadows)
+
+  if (lw != w || lh != h)
   {
-    vtkShaderProgram::Substitute(fragment,
-      "//VTK::LightShaft::ShadowDec",
-      "uniform sampler2D shadowMap;\n"
-      "uniform mat4 lightClipFromVC;  // VC -> the light camera's clip coordinates\n"
-      "uniform vec2 lightDepthRange;  // near, far of the light camera\n"
-      "uniform float shadowBias;      // relative depth tolerance");
-    vtkShaderProgram::Substitute(fragment,
-      "//VTK::LightShaft::ShadowImpl",
-      "vec4 lightClip = lightClipFromVC * vec4(sampleVC, 1.0);\n"
-      "  if (lightClip.w > 0.0)\n"
-      "  {\n"
-      "    vec2 lightNDC = lightClip.xy / lightClip.w;\n"
-      "    if (all(lessThanEqual(abs(lightNDC), vec2(1.0))))\n"
-      "    {\n"
-      "      float stored = texture(shadowMap, 0.5 * lightNDC + 0.5).r;\n"
-      "      if (stored < 1.0)\n"
-      "      {\n"
-      "        float n = lightDepthRange.x;\n"
-      "        float f = lightDepthRange.y;\n"
-      "        float casterDepth = 2.0 * n * f / ((f + n) - (2.0 * stored - 1.0) * (f - n));\n"
-      "        visibility = (lightClip.w > casterDepth * (1.0 + shadowBias)) ? 0.0 : 1.0;\n"
-      "      }\n"
-      "    }\n"
-      "  }");
+    vtkTextureObject* upsampled = this->Upsampled.Ensure(renWin, TextureKind::RGBA32F, w, h);
+    this->BindWork(upsampled, nullptr, w, h);
+    if (vtkShaderProgram* program =
+          this->Upsample.Ready(renWin, WithFeatures(vtkLightShaftUpsampleFS, {})))
+    {
+      current->Activate();
+      slabDepth->Activate();
+      this->SceneDepth.Object->Activate();
+      program->SetUniformi("reduced", current->GetTextureUnit());
+      program->SetUniformi("reducedDepth", slabDepth->GetTextureUnit());
+      program->SetUniformi("fullDepth", this->SceneDepth.Object->GetTextureUnit());
+      program->SetUniformMatrix4x4("invProjectionDCVC", invProjection.data());
+      const float fullSize[2] = { static_cast<float>(w), static_cast<float>(h) };
+      program->SetUniform2f("fullSize", fullSize);
+      program->SetUniformf("depthTolerance", depthTolerance);
+      this->Upsample.Quad->Render();
+      this->SceneDepth.Object->Deactivate();
+      slabDepth->Deactivate();
+      current->Deactivate();
+    }
+    current = upsampled;
   }
-  this->SliceProgram = cache->ReadyShaderProgram(vtkLightShaftSliceVS, fragment.c_str(), "");
-  if (!this->SliceProgram || !this->SliceProgram->GetCompiled())
-  {
-    vtkErrorWithObjectMacro(&self, "Could not build the light-shaft slice shader.");
-    this->SliceProgram = nullptr;
-    return nullptr;
-  }
-  this->SliceVariantPhase = self.PhaseFunction;
-  this->SliceVariantShadow = shadows;
-  if (!this->SliceArray)
-  {
-    this->SliceArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
-    this->SliceBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-    this->SliceBuffer->SetType(vtkOpenGLBufferObject::ArrayBuffer);
-  }
-  this->SliceArrayProgram = nullptr; // attributes are bound to the new program on first draw
-  return this->SliceProgram;
+  this->FinalInScatter = current;
 }
 
 //------------------------------------------------------------------------------
 void vtkLightShaftPass::Internals::RenderComposite(vtkLightShaftPass& self,
   vtkRenderer* ren,
   const CameraFrame& camera,
+  const LightFrame* light,
+  bool cookieSurfaces,
   int w,
   int h)
 {
@@ -1402,51 +2093,68 @@ void vtkLightShaftPass::Internals::RenderComposite(vtkLightShaftPass& self,
   {
     sigmaT[c] = self.ScatteringCoefficient[c] + self.AbsorptionCoefficient[c];
   }
-  const bool attenuate =
-    self.AttenuateScene && std::any_of(sigmaT, sigmaT + 3, [](double v) { return v > 0.0; });
-
-  if (!this->Composite || this->CompositeVariantAttenuate != attenuate)
+  const bool attenuate = self.AttenuateScene && AnyPositive(sigmaT);
+  std::vector<std::string> defines;
+  if (attenuate)
   {
-    std::string fragment = vtkLightShaftCompositeFS;
-    vtkShaderProgram::Substitute(fragment, "//VTK::LightShaft::Common", vtkLightShaftCommon);
-    if (attenuate)
-    {
-      vtkShaderProgram::Substitute(fragment,
-        "//VTK::LightShaft::Attenuate",
-        "vec3 originVC;\n"
-        "  vec3 dirVC;\n"
-        "  vec2 ndc;\n"
-        "  lightShaftViewRay(vec2(pixel) + 0.5, originVC, dirVC, ndc);\n"
-        "  color.rgb *= exp(-sigmaT * lightShaftSurfaceDistance(ndc, depth, dirVC));");
-    }
-    this->Composite.reset(new vtkOpenGLQuadHelper(renWin, nullptr, fragment.c_str(), ""));
-    this->CompositeVariantAttenuate = attenuate;
+    defines.emplace_back("LIGHTSHAFT_ATTENUATE");
   }
-  else
+  if (cookieSurfaces)
   {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->Composite->Program);
+    defines.emplace_back("LIGHTSHAFT_COOKIE_SURFACES");
   }
-  vtkShaderProgram* program = this->Composite->Program;
-  if (!program || !program->GetCompiled())
+  vtkShaderProgram* program =
+    this->Composite.Ready(renWin, WithFeatures(vtkLightShaftCompositeFS, defines));
+  if (!program)
   {
     vtkErrorWithObjectMacro(&self, "Could not build the light-shaft composite shader.");
     return;
   }
 
-  this->SceneColor->Activate();
-  this->SceneDepth->Activate();
-  this->InScatter->Activate();
-  program->SetUniformi("sceneColor", this->SceneColor->GetTextureUnit());
-  program->SetUniformi("sceneDepth", this->SceneDepth->GetTextureUnit());
-  program->SetUniformi("inScatter", this->InScatter->GetTextureUnit());
+  vtkTextureObject* sceneColor = this->SceneColor.Object;
+  vtkTextureObject* sceneDepth = this->SceneDepth.Object;
+  vtkTextureObject* inScatter = this->FinalInScatter;
+  std::vector<vtkTextureObject*> active = { sceneColor, sceneDepth, inScatter };
+  for (vtkTextureObject* t : active)
+  {
+    t->Activate();
+  }
+  program->SetUniformi("sceneColor", sceneColor->GetTextureUnit());
+  program->SetUniformi("sceneDepth", sceneDepth->GetTextureUnit());
+  program->SetUniformi("inScatter", inScatter->GetTextureUnit());
   program->SetUniformf("exposure", static_cast<float>(self.Exposure));
+  auto invProjection = ToFloatColumnMajor(camera.ClipToView);
+  const float targetSize[2] = { static_cast<float>(w), static_cast<float>(h) };
+  if (attenuate || cookieSurfaces)
+  {
+    program->SetUniformMatrix4x4("invProjectionDCVC", invProjection.data());
+    program->SetUniform2f("targetSize", targetSize);
+  }
   if (attenuate)
   {
     program->SetUniform3f("sigmaT", sigmaT);
-    auto invProjection = ToFloatColumnMajor(camera.ClipToView);
-    program->SetUniformMatrix4x4("invProjectionDCVC", invProjection.data());
-    const float targetSize[2] = { static_cast<float>(w), static_cast<float>(h) };
-    program->SetUniform2f("targetSize", targetSize);
+  }
+  if (cookieSurfaces)
+  {
+    vtkTextureObject* unlit = this->SceneColorUnlit.Object;
+    unlit->Activate();
+    this->CookieTexture->Activate();
+    active.push_back(unlit);
+    active.push_back(this->CookieTexture);
+    program->SetUniformi("sceneColorUnlit", unlit->GetTextureUnit());
+    program->SetUniformi("cookieTexture", this->CookieTexture->GetTextureUnit());
+    program->SetUniformf("cookieSize",
+      static_cast<float>(
+        std::max(this->CookieTexture->GetWidth(), this->CookieTexture->GetHeight())));
+    auto lightMatrix = ToFloatColumnMajor(light->ViewToLightClip);
+    program->SetUniformMatrix4x4("lightClipFromVC", lightMatrix.data());
+    program->SetUniform3f("lightPositionVC", ToFloat3(light->PositionVC).data());
+    const bool perspective = camera.ViewToClip[2][3] != 0.0;
+    const float pixel = static_cast<float>(2.0 / (w * camera.ViewToClip[0][0]));
+    const float pixelFootprint[2] = { perspective ? pixel : 0.0f, perspective ? 0.0f : pixel };
+    program->SetUniform2f("pixelFootprint", pixelFootprint);
+    program->SetUniformf("lightTexelAngle",
+      static_cast<float>(2.0 * std::tan(std::min(light->ConeHalfAngle, MaximumBoundingHalfAngle))));
   }
 
   // Write colour and the scene's depth, so later passes and overlays see the surfaces.
@@ -1464,11 +2172,11 @@ void vtkLightShaftPass::Internals::RenderComposite(vtkLightShaftPass& self,
   {
     ostate->vtkglDisable(GL_BLEND);
   }
-  this->Composite->Render();
-
-  this->InScatter->Deactivate();
-  this->SceneDepth->Deactivate();
-  this->SceneColor->Deactivate();
+  this->Composite.Quad->Render();
+  for (auto it = active.rbegin(); it != active.rend(); ++it)
+  {
+    (*it)->Deactivate();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -1494,17 +2202,18 @@ bool vtkLightShaftPass::GetInScatteredRadiance(vtkImageData* out)
   radiance->SetNumberOfComponents(3);
   radiance->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
   radiance->Fill(0.0);
-  if (impl.InScatterValid && impl.InScatterFramebuffer)
+  vtkTextureObject* final = impl.FinalInScatter;
+  if (impl.InScatterValid && final && static_cast<int>(final->GetWidth()) == w &&
+      static_cast<int>(final->GetHeight()) == h)
   {
     impl.Window->MakeCurrent();
     vtkOpenGLState* ostate = impl.Window->GetState();
-    ostate->PushReadFramebufferBinding();
-    impl.InScatterFramebuffer->Bind(GL_READ_FRAMEBUFFER);
-    impl.InScatterFramebuffer->ActivateReadBuffer(0);
+    ostate->PushFramebufferBindings();
+    impl.BindWork(final, nullptr, w, h);
+    impl.WorkFramebuffer->ActivateReadBuffer(0);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, radiance->GetPointer(0));
-    ostate->PopReadFramebufferBinding();
-    vtkOpenGLCheckErrorMacro("failed after reading the in-scattered radiance");
+    ostate->PopFramebufferBindings();
   }
   out->GetPointData()->SetScalars(radiance);
   return true;
@@ -1514,13 +2223,18 @@ bool vtkLightShaftPass::GetInScatteredRadiance(vtkImageData* out)
 void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  auto print3 = [&os](const char* name, const double* v)
-  { os << name << ": (" << v[0] << ", " << v[1] << ", " << v[2] << ")\n"; };
+  auto print = [&os, indent](const char* name, const double* v, int n)
+  {
+    os << indent << name << ": (";
+    for (int i = 0; i < n; ++i)
+    {
+      os << (i ? ", " : "") << v[i];
+    }
+    os << ")\n";
+  };
   os << indent << "Light: " << this->Impl->Light.Get() << "\n";
-  os << indent;
-  print3("ScatteringCoefficient", this->ScatteringCoefficient);
-  os << indent;
-  print3("AbsorptionCoefficient", this->AbsorptionCoefficient);
+  print("ScatteringCoefficient", this->ScatteringCoefficient, 3);
+  print("AbsorptionCoefficient", this->AbsorptionCoefficient, 3);
   os << indent << "PhaseFunction: " << this->PhaseFunction << "\n";
   os << indent << "Anisotropy: " << this->Anisotropy << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
@@ -1528,6 +2242,20 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShadowSurfaces: " << this->ShadowSurfaces << "\n";
   os << indent << "NumberOfSlices: " << this->NumberOfSlices << "\n";
   os << indent << "ShadowMapSize: " << this->ShadowMapSize << "\n";
+  os << indent << "Cookie: " << this->Impl->Cookie.Get() << "\n";
+  os << indent << "NoiseAmplitude: " << this->NoiseAmplitude << "\n";
+  os << indent << "NoiseScale: " << this->NoiseScale << "\n";
+  print("NoiseVelocity1", this->NoiseVelocity1, 2);
+  print("NoiseVelocity2", this->NoiseVelocity2, 2);
+  os << indent << "Time: " << this->Time << "\n";
+  os << indent << "NoiseTexture: " << this->Impl->NoiseImage.Get() << "\n";
+  os << indent << "AutomaticSliceCount: " << this->AutomaticSliceCount << "\n";
+  os << indent << "MaximumNumberOfSlices: " << this->MaximumNumberOfSlices << "\n";
+  os << indent << "Jitter: " << this->Jitter << "\n";
+  os << indent << "BlurRadius: " << this->BlurRadius << "\n";
+  os << indent << "DownsampleFactor: " << this->DownsampleFactor << "\n";
+  os << indent << "AccumulationPrecision: " << this->AccumulationPrecision << "\n";
   os << indent << "LastNumberOfSlicesDrawn: " << this->LastNumberOfSlicesDrawn << "\n";
   os << indent << "LastShadowMapRendered: " << this->LastShadowMapRendered << "\n";
+  os << indent << "LastShaderVariant: " << this->Impl->SliceVariant << "\n";
 }

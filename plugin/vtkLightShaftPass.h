@@ -60,6 +60,7 @@
 
 class vtkImageData;
 class vtkLight;
+class vtkTexture;
 
 class VTKLIGHTSHAFTS_EXPORT vtkLightShaftPass : public vtkImageProcessingPass
 {
@@ -74,6 +75,14 @@ public:
     ISOTROPIC = 0,         ///< 1 / (4 pi)
     HENYEY_GREENSTEIN = 1, ///< (1 - g^2) / (4 pi (1 + g^2 - 2 g cos theta)^1.5)
     RAYLEIGH = 2           ///< 3 / (16 pi) (1 + cos^2 theta)
+  };
+
+  /// Precision of the buffer the slabs add up in.
+  enum AccumulationPrecisionType
+  {
+    ACCUMULATE_FLOAT32 = 0, ///< 32-bit float RGBA
+    ACCUMULATE_FLOAT16 = 1, ///< 16-bit float RGBA
+    ACCUMULATE_8BIT = 2     ///< 8-bit fixed point, the GDC 2004 talk's four-channel trick
   };
 
   /**
@@ -199,6 +208,142 @@ public:
   vtkGetMacro(ShadowMapSize, int);
   ///@}
 
+  ///@{
+  /**
+   * Spotlight cookie (gobo): an RGB image projected from the light through its cone. It
+   * multiplies the light's intensity per direction, in the shafts and on the surfaces the
+   * spotlight lights (the scene is then rendered twice, with and without the spotlight). The
+   * image fills the square that circumscribes the cone's cross-section, centred on the axis;
+   * its rows run along the light camera's view-up (world +Y projected, or +X for lights aiming
+   * along Y). 8-bit images map 255 to 1, float images are used as they are (clamped to >= 0).
+   * Mipmapped; the level follows each sample's footprint, so small cookie details near the
+   * light are smoothed rather than aliased. nullptr turns it off. Default is nullptr.
+   */
+  void SetCookie(vtkTexture* cookie);
+  vtkTexture* GetCookie();
+  ///@}
+
+  ///@{
+  /**
+   * Scrolling-noise density (the GDC 2004 talk's two scrolling layers): the scattering
+   * coefficient at x is sigma_s * (1 + NoiseAmplitude * (N1 * N2 - 1)), N1 and N2 two tileable
+   * noise layers in the light's projective space, each of mean 1 over its tile, scaled by
+   * NoiseScale (tiles across the light's square) and moved by NoiseVelocity1/2 (tiles per unit
+   * of Time). The mean density is therefore sigma_s (exactly, when the layers are uncorrelated):
+   * the amplitude changes the texture, not the average brightness. Extinction keeps the mean
+   * coefficient. NoiseAmplitude in [0, 1], 0 = homogeneous (no noise code runs). Default is 0.
+   */
+  void SetNoiseAmplitude(double amplitude);
+  vtkGetMacro(NoiseAmplitude, double);
+  ///@}
+
+  ///@{
+  /**
+   * Noise tiles across the light's square, in [0.01, 1000]. Default is 3.
+   */
+  void SetNoiseScale(double scale);
+  vtkGetMacro(NoiseScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * Scroll velocities of the two noise layers, in tiles per unit of Time, each component in
+   * [-1e3, 1e3]. Defaults are (0.04, 0.01) and (-0.015, 0.03).
+   */
+  void SetNoiseVelocity1(double u, double v);
+  vtkGetVector2Macro(NoiseVelocity1, double);
+  void SetNoiseVelocity2(double u, double v);
+  vtkGetVector2Macro(NoiseVelocity2, double);
+  ///@}
+
+  ///@{
+  /**
+   * Animation time (any finite value, in the units of the velocities): the noise, and the
+   * jitter pattern, are pure functions of it, so the same Time renders the same image.
+   * Default is 0.
+   */
+  void SetTime(double time);
+  vtkGetMacro(Time, double);
+  ///@}
+
+  ///@{
+  /**
+   * Your own noise instead of the generated one: the first component of the image, tiled
+   * (repeat), rescaled to mean 1. nullptr uses the project's tileable noise (256x256,
+   * five-octave gradient noise). Default is nullptr.
+   */
+  void SetNoiseTexture(vtkTexture* noise);
+  vtkTexture* GetNoiseTexture();
+  ///@}
+
+  ///@{
+  /**
+   * Automatic slice count: slabs of thickness (far clipping distance) / MaximumNumberOfSlices,
+   * as many as the lit part of the view volume needs, so a small or distant light volume gets
+   * few slabs and one that spans the view gets up to MaximumNumberOfSlices. When off,
+   * NumberOfSlices slabs always span the lit depth range. Default is off.
+   */
+  vtkSetMacro(AutomaticSliceCount, bool);
+  vtkGetMacro(AutomaticSliceCount, bool);
+  vtkBooleanMacro(AutomaticSliceCount, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Cap of the automatic slice count, in [1, 4096]. Default is 512.
+   */
+  vtkSetClampMacro(MaximumNumberOfSlices, int, 1, 4096);
+  vtkGetMacro(MaximumNumberOfSlices, int);
+  ///@}
+
+  ///@{
+  /**
+   * Interleaved slab offsets: each pixel of a 4x4 block shifts its slab boundaries by a
+   * different sixteenth of a slab (an ordered pattern, so the image is deterministic), which
+   * turns banding into fine noise that BlurRadius can remove. Default is off.
+   */
+  vtkSetMacro(Jitter, bool);
+  vtkGetMacro(Jitter, bool);
+  vtkBooleanMacro(Jitter, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Radius in pixels (of the in-scatter buffer) of a depth-aware separable Gaussian blur of the
+   * in-scattered radiance, in [0, 32]; samples whose surface depth differs from the centre's by
+   * more than a few percent are left out, so shafts do not bleed across silhouettes. 0 = off.
+   * Default is 0.
+   */
+  vtkSetClampMacro(BlurRadius, int, 0, 32);
+  vtkGetMacro(BlurRadius, int);
+  ///@}
+
+  ///@{
+  /**
+   * In-scatter resolution: 1 (full), 2 (half) or 4 (quarter) in each direction; other values
+   * are rounded down to one of these. The buffer is brought back to full resolution with
+   * depth-aware (nearest-depth) upsampling, so no halo appears around foreground edges.
+   * Default is 1.
+   */
+  void SetDownsampleFactor(int factor);
+  vtkGetMacro(DownsampleFactor, int);
+  ///@}
+
+  ///@{
+  /**
+   * Precision of the buffer the slabs add up in: ACCUMULATE_FLOAT32, ACCUMULATE_FLOAT16 or
+   * ACCUMULATE_8BIT. The 8-bit mode reproduces the GDC 2004 talk: slab k adds
+   * Exposure * L into channel k mod 4 of an RGBA8 buffer (one per colour), the four channels
+   * are summed at the end; each slab's contribution is rounded to 1/255, so its error grows
+   * with the number of slices. Default is ACCUMULATE_FLOAT32.
+   */
+  vtkSetClampMacro(AccumulationPrecision, int, ACCUMULATE_FLOAT32, ACCUMULATE_8BIT);
+  vtkGetMacro(AccumulationPrecision, int);
+  void SetAccumulationPrecisionToFloat32() { this->SetAccumulationPrecision(ACCUMULATE_FLOAT32); }
+  void SetAccumulationPrecisionToFloat16() { this->SetAccumulationPrecision(ACCUMULATE_FLOAT16); }
+  void SetAccumulationPrecisionTo8Bit() { this->SetAccumulationPrecision(ACCUMULATE_8BIT); }
+  ///@}
+
   /**
    * Fill `out` with the last frame's in-scattered radiance L_in: linear float RGB (3
    * components, array "InScatteredRadiance"), one pixel per viewport pixel, row 0 at the bottom
@@ -226,6 +371,20 @@ public:
    */
   vtkGetMacro(LastGLErrorCount, int);
 
+  ///@{
+  /**
+   * More of what the last frame did: the props rendered into the shadow map (those whose bounds
+   * reach into the light's volume), how many times the scene was rendered (2 with a cookie:
+   * with and without the spotlight), the features compiled into the slab shader (e.g.
+   * "phase=isotropic shadow cookie noise jitter accumulate=float32"), and that shader's
+   * fragment source.
+   */
+  vtkGetMacro(LastNumberOfShadowCasters, int);
+  vtkGetMacro(LastNumberOfSceneRenders, int);
+  const char* GetLastShaderVariant();
+  const char* GetLastSliceShaderSource();
+  ///@}
+
 protected:
   vtkLightShaftPass();
   ~vtkLightShaftPass() override;
@@ -240,6 +399,17 @@ protected:
   bool ShadowSurfaces = false;
   int NumberOfSlices = 128;
   int ShadowMapSize = 1024;
+  double NoiseAmplitude = 0.0;
+  double NoiseScale = 3.0;
+  double NoiseVelocity1[2] = { 0.04, 0.01 };
+  double NoiseVelocity2[2] = { -0.015, 0.03 };
+  double Time = 0.0;
+  bool AutomaticSliceCount = false;
+  int MaximumNumberOfSlices = 512;
+  bool Jitter = false;
+  int BlurRadius = 0;
+  int DownsampleFactor = 1;
+  int AccumulationPrecision = ACCUMULATE_FLOAT32;
 
   // Last-frame statistics.
   int LastNumberOfSlicesDrawn = 0;
@@ -247,6 +417,8 @@ protected:
   double LastSliceDepthRange[2] = { 0.0, 0.0 };
   int LastViewportSize[2] = { 0, 0 };
   int LastGLErrorCount = 0;
+  int LastNumberOfShadowCasters = 0;
+  int LastNumberOfSceneRenders = 0;
 
 private:
   void RenderFrame(const vtkRenderState* s);

@@ -25,3 +25,10 @@ float lightShaftSurfaceDistance(vec2 ndc, float depth, vec3 dirVC)
   vec4 surfaceVC = invProjectionDCVC * vec4(ndc, 2.0 * depth - 1.0, 1.0);
   return (surfaceVC.z / surfaceVC.w) / dirVC.z;
 }
+
+// View depth (distance in front of the camera plane) of a depth-buffer value at `ndc`.
+float lightShaftViewDepth(vec2 ndc, float depth)
+{
+  vec4 pointVC = invProjectionDCVC * vec4(ndc, 2.0 * depth - 1.0, 1.0);
+  return -pointVC.z / pointVC.w;
+}

@@ -2,6 +2,10 @@
 //VTK::Output::Dec
 
 // Composite: out = scene * exp(-sigma_t * t_surface) + Exposure * L_in, depth passed through.
+// Features (#defines): LIGHTSHAFT_ATTENUATE (aerial perspective), LIGHTSHAFT_COOKIE_SURFACES
+// (the cookie shapes the spotlight's light on surfaces: scene = unlit + cookie * (lit - unlit),
+// from two renders of the scene, with and without the spotlight).
+//VTK::LightShaft::Features
 
 in vec2 texCoord;
 
@@ -12,15 +16,54 @@ uniform sampler2D inScatter;
 uniform vec3 sigmaT;
 uniform float exposure;
 
+#ifdef LIGHTSHAFT_COOKIE_SURFACES
+uniform sampler2D sceneColorUnlit;
+uniform sampler2D cookieTexture;
+uniform float cookieSize;
+uniform mat4 lightClipFromVC;
+uniform vec3 lightPositionVC;
+uniform vec2 pixelFootprint;
+uniform float lightTexelAngle;
+#endif
+
 void main()
 {
   // texCoord runs over the viewport, pixel centres at (i + 0.5) / size.
   ivec2 pixel = ivec2(texCoord * vec2(textureSize(sceneColor, 0)));
   vec4 color = texelFetch(sceneColor, pixel, 0);
   float depth = texelFetch(sceneDepth, pixel, 0).r;
-  vec3 inScattered = texelFetch(inScatter, pixel, 0).rgb;
+  // Nearest sample: the in-scatter buffer is full size here (upsampled when it was computed
+  // at a lower resolution).
+  vec3 inScattered = texture(inScatter, texCoord).rgb;
 
-  //VTK::LightShaft::Attenuate
+#if defined(LIGHTSHAFT_ATTENUATE) || defined(LIGHTSHAFT_COOKIE_SURFACES)
+  vec3 originVC;
+  vec3 dirVC;
+  vec2 ndc;
+  lightShaftViewRay(vec2(pixel) + 0.5, originVC, dirVC, ndc);
+  float surfaceDistance = lightShaftSurfaceDistance(ndc, depth, dirVC);
+#endif
+#ifdef LIGHTSHAFT_COOKIE_SURFACES
+  if (depth < 1.0)
+  {
+    vec3 surfaceVC = originVC + surfaceDistance * dirVC;
+    vec4 lightClip = lightClipFromVC * vec4(surfaceVC, 1.0);
+    vec3 cookie = vec3(0.0);
+    if (lightClip.w > 0.0)
+    {
+      vec2 lightUV = 0.5 * lightClip.xy / lightClip.w + 0.5;
+      float r = length(surfaceVC - lightPositionVC);
+      float footprint = pixelFootprint.x * (-surfaceVC.z) + pixelFootprint.y;
+      float lod = max(log2(footprint / max(r * lightTexelAngle, 1e-30) * cookieSize), 0.0);
+      cookie = max(textureLod(cookieTexture, lightUV, lod).rgb, vec3(0.0));
+    }
+    vec4 unlit = texelFetch(sceneColorUnlit, pixel, 0);
+    color.rgb = unlit.rgb + cookie * max(color.rgb - unlit.rgb, vec3(0.0));
+  }
+#endif
+#ifdef LIGHTSHAFT_ATTENUATE
+  color.rgb *= exp(-sigmaT * surfaceDistance);
+#endif
 
   gl_FragData[0] = vec4(color.rgb + exposure * inScattered, color.a);
   gl_FragDepth = depth;

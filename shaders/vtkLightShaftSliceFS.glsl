@@ -1,6 +1,14 @@
 //VTK::System::Dec
 //VTK::Output::Dec
 
+// Features compiled in (#defines): LIGHTSHAFT_PHASE_HG / _RAYLEIGH (else isotropic),
+// LIGHTSHAFT_SHADOW, LIGHTSHAFT_COOKIE, LIGHTSHAFT_NOISE, LIGHTSHAFT_JITTER,
+// LIGHTSHAFT_ACCUMULATE_8BIT. Code for a feature that is off is not compiled.
+//VTK::LightShaft::Features
+#if defined(LIGHTSHAFT_SHADOW) || defined(LIGHTSHAFT_COOKIE) || defined(LIGHTSHAFT_NOISE)
+#define LIGHTSHAFT_LIGHT_SPACE
+#endif
+
 // One slab of the pixel's view ray: integrates the in-scattered radiance
 //   sigma_s p(cos theta) I S(x) A(r) V(x) exp(-sigma_t (r + t)) dt
 // over the part of the slab that lies inside the spot cone and in front of the scene surface.
@@ -8,7 +16,14 @@
 // in the equiangular variable; the remaining factors are evaluated at the segment's
 // equiangular midpoint (the arithmetic midpoint when A is constant).
 
-flat in vec2 slabDepths;
+flat in float slabIndex;
+
+// Slab k spans view depths [slabStart + k * slabThickness, + slabThickness], within
+// [slabStart, slabEnd]; with jitter each pixel shifts the boundaries by its own fraction.
+uniform float slabStart;
+uniform float slabEnd;
+uniform float slabThickness;
+uniform float lastSlab;
 
 //VTK::LightShaft::Common
 
@@ -21,9 +36,38 @@ uniform vec3 lightRadiantIntensity;   // intensity * colour
 uniform vec3 sigmaS;
 uniform vec3 sigmaT;
 
-//VTK::LightShaft::PhaseDec
+#ifdef LIGHTSHAFT_PHASE_HG
+uniform float anisotropy;
+#endif
 
-//VTK::LightShaft::ShadowDec
+#ifdef LIGHTSHAFT_LIGHT_SPACE
+uniform mat4 lightClipFromVC;   // VC -> the light camera's clip coordinates
+uniform vec2 pixelFootprint;    // a pixel's width at view depth z: x * z + y (view units)
+uniform float lightTexelAngle;  // 2 tan(cone half-angle): the light square's width at r = 1
+#endif
+
+#ifdef LIGHTSHAFT_SHADOW
+uniform sampler2D shadowMap;
+uniform vec2 lightDepthRange;   // near, far of the light camera
+uniform float shadowBias;       // relative depth tolerance
+#endif
+
+#ifdef LIGHTSHAFT_COOKIE
+uniform sampler2D cookieTexture;
+uniform float cookieSize;       // texels across the light's square
+#endif
+
+#ifdef LIGHTSHAFT_NOISE
+uniform sampler2D noiseTexture;
+uniform float noiseSize;        // texels across one tile
+uniform float noiseAmplitude;
+uniform float noiseScale;       // tiles across the light's square (layer 1; layer 2 is 1.37x)
+uniform vec4 noiseShift;        // both layers' scroll offsets at the current time, in tiles
+#endif
+
+#ifdef LIGHTSHAFT_ACCUMULATE_8BIT
+uniform float accumulationScale; // Exposure: the talk's buffers hold displayed values
+#endif
 
 const float PI = 3.14159265358979;
 
@@ -178,9 +222,22 @@ void main()
   lightShaftViewRay(gl_FragCoord.xy, originVC, dirVC, ndc);
 
   // The slab [near, far] in view depth, as ray parameters; cut at the scene surface.
+  float slabOffset = 0.0;
+#ifdef LIGHTSHAFT_JITTER
+  // 4x4 ordered (Bayer) offsets: neighbouring pixels sample between each other's boundaries.
+  ivec2 cell = ivec2(gl_FragCoord.xy) & 3;
+  const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0,
+    9.0, 15.0, 7.0, 13.0, 5.0);
+  slabOffset = (bayer[cell.y * 4 + cell.x] + 0.5) / 16.0 - 1.0;
+#endif
+  // Neighbouring slabs compute their shared boundary with the same expression: no gap.
+  float nearDepth =
+    clamp(slabStart + (slabIndex + slabOffset) * slabThickness, slabStart, slabEnd);
+  float farDepth = (slabIndex == lastSlab) ? slabEnd :
+    clamp(slabStart + (slabIndex + 1.0 + slabOffset) * slabThickness, slabStart, slabEnd);
   float tPerDepth = -1.0 / dirVC.z;
-  float ta = slabDepths.x * tPerDepth;
-  float tb = slabDepths.y * tPerDepth;
+  float ta = nearDepth * tPerDepth;
+  float tb = farDepth * tPerDepth;
   float depth = texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r;
   tb = min(tb, lightShaftSurfaceDistance(ndc, depth, dirVC));
 
@@ -220,6 +277,8 @@ void main()
   vec3 smoothSum = vec3(0.0);
   float weightSum = 0.0;
   vec3 sampleVC = originVC;
+  float sampleR = 1.0;
+  float sampleSinTheta = 0.0;
   for (int i = 0; i < 3; ++i)
   {
     float u = uMid + uHalf * nodes[i];
@@ -232,8 +291,15 @@ void main()
     float cosAxis = max(dot(lightDir, lightAxisVC), 0.0);
     float spot = (spotExponent == 0.0) ? 1.0 : pow(cosAxis, spotExponent);
     float cosTheta = -dot(dirVC, lightDir);
-    float phase;
-    //VTK::LightShaft::PhaseImpl
+#if defined(LIGHTSHAFT_PHASE_HG)
+    float hgDenominator = 1.0 + anisotropy * anisotropy - 2.0 * anisotropy * cosTheta;
+    float phase = (1.0 - anisotropy * anisotropy) /
+      (4.0 * PI * hgDenominator * sqrt(hgDenominator));
+#elif defined(LIGHTSHAFT_PHASE_RAYLEIGH)
+    float phase = 3.0 / (16.0 * PI) * (1.0 + cosTheta * cosTheta);
+#else
+    float phase = 1.0 / (4.0 * PI);
+#endif
     // Relative weight of this node in the A-weighted mean (dt/dphi = r^2 / h, h cancels).
     float a = constantA ? 1.0 :
       r * r / (attenuationCoefficients.x + r * (attenuationCoefficients.y +
@@ -243,14 +309,60 @@ void main()
     if (i == 1)
     {
       sampleVC = pointVC;
+      sampleR = r;
+      sampleSinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
     }
   }
 
-  // Visibility once per segment, at its (equiangular) midpoint.
+  // Per-segment light-space factors, once, at the (equiangular) midpoint.
   float visibility = 1.0;
-  //VTK::LightShaft::ShadowImpl
+  vec3 modulation = vec3(1.0);
+#ifdef LIGHTSHAFT_LIGHT_SPACE
+  vec4 lightClip = lightClipFromVC * vec4(sampleVC, 1.0);
+  vec2 lightNDC = lightClip.xy / max(lightClip.w, 1e-30);
+  vec2 lightUV = 0.5 * lightNDC + 0.5;
+  // The sample stands for a pixel-wide, segment-long footprint: its size in light-square widths
+  // picks the mip level, so cookie and noise are pre-filtered instead of aliasing.
+  float footprint = max(pixelFootprint.x * (-sampleVC.z) + pixelFootprint.y,
+    (x1 - x0) * sampleSinTheta);
+  float footprintInSquares = footprint / max(sampleR * lightTexelAngle, 1e-30);
+#endif
+#ifdef LIGHTSHAFT_SHADOW
+  if (lightClip.w > 0.0 && all(lessThanEqual(abs(lightNDC), vec2(1.0))))
+  {
+    float stored = texture(shadowMap, lightUV).r;
+    if (stored < 1.0)
+    {
+      float n = lightDepthRange.x;
+      float f = lightDepthRange.y;
+      float casterDepth = 2.0 * n * f / ((f + n) - (2.0 * stored - 1.0) * (f - n));
+      visibility = (lightClip.w > casterDepth * (1.0 + shadowBias)) ? 0.0 : 1.0;
+    }
+  }
+#endif
+#ifdef LIGHTSHAFT_COOKIE
+  modulation *= max(textureLod(cookieTexture, lightUV,
+    max(log2(footprintInSquares * cookieSize), 0.0)).rgb, vec3(0.0));
+#endif
+#ifdef LIGHTSHAFT_NOISE
+  float noiseLod = max(log2(footprintInSquares * noiseScale * noiseSize), 0.0);
+  float n1 = textureLod(noiseTexture, lightUV * noiseScale + noiseShift.xy, noiseLod).r;
+  float n2 = textureLod(noiseTexture, lightUV * (1.37 * noiseScale) + noiseShift.zw,
+    noiseLod + 0.45).r;
+  modulation *= 1.0 + noiseAmplitude * (n1 * n2 - 1.0);
+#endif
 
-  vec3 radiance = sigmaS * lightRadiantIntensity * (weight * visibility / max(weightSum, 1e-30)) *
-    smoothSum;
+  vec3 radiance = sigmaS * lightRadiantIntensity * modulation *
+    (weight * visibility / max(weightSum, 1e-30)) * smoothSum;
+#ifdef LIGHTSHAFT_ACCUMULATE_8BIT
+  // The talk's trick: slab k adds into channel k mod 4 (one RGBA8 buffer per colour).
+  int channel = int(mod(slabIndex + 4.0, 4.0));
+  vec4 mask = vec4(equal(ivec4(channel), ivec4(0, 1, 2, 3)));
+  vec3 displayed = accumulationScale * radiance;
+  gl_FragData[0] = displayed.r * mask;
+  gl_FragData[1] = displayed.g * mask;
+  gl_FragData[2] = displayed.b * mask;
+#else
   gl_FragData[0] = vec4(radiance, 0.0);
+#endif
 }

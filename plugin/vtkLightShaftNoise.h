@@ -1,0 +1,25 @@
+/**
+ * @file   vtkLightShaftNoise.h
+ * @brief  The tileable density noise of vtkLightShaftPass (private helper, not installed).
+ */
+
+#ifndef vtkLightShaftNoise_h
+#define vtkLightShaftNoise_h
+
+#include <vector> // For the returned texels
+
+/**
+ * A size x size tile of fractal gradient noise (octaves of Perlin-style noise whose lattice
+ * periods divide the tile, so the tile repeats seamlessly), remapped to non-negative values of
+ * mean exactly 1: 1 + 0.8 * n / max|n| with n the zero-mean noise, then renormalised. Row-major,
+ * deterministic for a given seed.
+ */
+std::vector<float> vtkLightShaftTileableNoise(int size, int octaves, unsigned int seed);
+
+/**
+ * Rescale `texels` (any non-negative values) to mean 1, in place; an all-zero input becomes all
+ * ones. Used for noise images given by the user.
+ */
+void vtkLightShaftNormalizeNoise(std::vector<float>& texels);
+
+#endif
