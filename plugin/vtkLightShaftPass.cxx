@@ -1228,11 +1228,12 @@ void vtkLightShaftPass::Internals::RenderScene(vtkLightShaftPass& self,
   };
   if (twice)
   {
-    // Without the spotlight: the composite puts its light back through the cookie.
-    const vtkTypeBool wasOn = light->GetSwitch();
-    light->SwitchOff();
+    // Without the spotlight: the composite puts its light back through the cookie. (Zero
+    // intensity rather than switching it off: with no light on, VTK would add a headlight.)
+    const double intensity = light->GetIntensity();
+    light->SetIntensity(0.0);
     renderInto(this->SceneColorUnlit.Object);
-    light->SetSwitch(wasOn);
+    light->SetIntensity(intensity);
   }
   renderInto(color);
 }
@@ -1570,6 +1571,7 @@ vtkShaderProgram* vtkLightShaftPass::Internals::ReadySliceProgram(vtkLightShaftP
   variant += accumulation[self.AccumulationPrecision];
   const std::string fragment = WithFeatures(vtkLightShaftSliceFS, defines);
 
+  this->SliceVariant = variant;
   vtkOpenGLShaderCache* cache = this->Window->GetShaderCache();
   if (this->SliceProgram && fragment == this->SliceSource)
   {
@@ -1577,7 +1579,6 @@ vtkShaderProgram* vtkLightShaftPass::Internals::ReadySliceProgram(vtkLightShaftP
   }
   this->SliceProgram = cache->ReadyShaderProgram(vtkLightShaftSliceVS, fragment.c_str(), "");
   this->SliceSource = fragment;
-  this->SliceVariant = variant;
   if (!this->SliceProgram || !this->SliceProgram->GetCompiled())
   {
     vtkErrorWithObjectMacro(&self, "Could not build the light-shaft slice shader.");
