@@ -45,6 +45,9 @@ class Spotlight:
     attenuation: tuple = (1.0, 0.0, 0.0)
     intensity: float = 1.0
     color: tuple = (1.0, 1.0, 1.0)
+    # Optional cookie: cookie(u, v) -> (n, 3) RGB factors, u, v in [0, 1] across the square
+    # that circumscribes the cone, laid out as vtkLightShaftPass lays it (see light_basis).
+    cookie: object = None
 
 
 @dataclass
@@ -169,6 +172,28 @@ def sphere_shadow_interval(origin, dirs, light, centre, radius):
     return np.where(never, np.inf, lo), np.where(never, -np.inf, hi)
 
 
+def light_basis(light):
+    """(forward, right, up) of the light's camera as vtkLightShaftPass builds it: view-up is
+    world +Y, or +X for a light aiming within ~8 degrees of the Y axis."""
+    lpos = np.asarray(light.position, float)
+    forward = _normalize(np.asarray(light.focal_point, float) - lpos)
+    up0 = np.array([0.0, 1.0, 0.0]) if abs(forward[1]) < 0.99 else np.array([1.0, 0.0, 0.0])
+    right = _normalize(np.cross(forward, up0))
+    return forward, right, np.cross(right, forward)
+
+
+def cookie_uv(light, points):
+    """Cookie coordinates (u, v) of world points, for the pass's light camera."""
+    forward, right, up = light_basis(light)
+    d = points - np.asarray(light.position, float)
+    depth = d @ forward
+    tan_half = np.tan(np.radians(min(light.cone_angle, 89.9)))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        u = 0.5 * (d @ right) / (depth * tan_half) + 0.5
+        v = 0.5 * (d @ up) / (depth * tan_half) + 0.5
+    return u, v
+
+
 def _phase(cos_theta, medium):
     if medium.phase == HENYEY_GREENSTEIN:
         g = medium.anisotropy
@@ -227,7 +252,10 @@ def _integrate_pieces(eye, dirs, t0, t1, light, medium, panels):
             cos_theta = -np.sum(dirs * ldir, axis=-1)
             atten = 1.0 / (c0 + c1 * r + c2 * r * r)
             scalar = _phase(cos_theta, medium) * spot * atten * jac * weight * half
-            total += scalar[..., None] * np.exp(-sigma_t * (r + t)[..., None])
+            term = scalar[..., None] * np.exp(-sigma_t * (r + t)[..., None])
+            if light.cookie is not None:
+                term = term * light.cookie(*cookie_uv(light, x))
+            total += term
     total *= (sigma_s * intensity)
     return np.where(valid[..., None], total, 0.0)
 
