@@ -30,6 +30,19 @@ def test_defaults():
     assert p.GetShadowMapSize() == 1024
     assert p.GetLight() is None
     assert p.GetDelegatePass() is None
+    assert p.GetCookie() is None
+    assert p.GetNoiseTexture() is None
+    assert p.GetNoiseAmplitude() == 0.0
+    assert p.GetNoiseScale() == 3.0
+    assert p.GetNoiseVelocity1() == (0.04, 0.01)
+    assert p.GetNoiseVelocity2() == (-0.015, 0.03)
+    assert p.GetTime() == 0.0
+    assert not p.GetAutomaticSliceCount()
+    assert p.GetMaximumNumberOfSlices() == 512
+    assert not p.GetJitter()
+    assert p.GetBlurRadius() == 0
+    assert p.GetDownsampleFactor() == 1
+    assert p.GetAccumulationPrecision() == vtkLightShaftPass.ACCUMULATE_FLOAT32
 
 
 @pytest.mark.parametrize("name,value", [
@@ -38,6 +51,13 @@ def test_defaults():
     ("Exposure", 3.5),
     ("Anisotropy", -0.4),
     ("PhaseFunction", vtkLightShaftPass.RAYLEIGH),
+    ("NoiseAmplitude", 0.6),
+    ("NoiseScale", 7.5),
+    ("Time", -12.25),
+    ("MaximumNumberOfSlices", 64),
+    ("BlurRadius", 5),
+    ("DownsampleFactor", 4),
+    ("AccumulationPrecision", vtkLightShaftPass.ACCUMULATE_8BIT),
 ])
 def test_scalar_round_trip(name, value):
     p = vtkLightShaftPass()
@@ -84,6 +104,12 @@ def test_boolean_macros():
     ("Exposure", -1.0, 1e9, 0.0, 1e6),
     ("Anisotropy", -5.0, 5.0, -0.99, 0.99),
     ("PhaseFunction", -3, 17, 0, 2),
+    ("NoiseAmplitude", -1.0, 3.0, 0.0, 1.0),
+    ("NoiseScale", 0.0, 1e9, 0.01, 1000.0),
+    ("MaximumNumberOfSlices", 0, 10 ** 6, 1, 4096),
+    ("BlurRadius", -2, 100, 0, 32),
+    ("DownsampleFactor", 0, 100, 1, 4),
+    ("AccumulationPrecision", -1, 7, 0, 2),
 ])
 def test_scalar_clamping(name, low, high, expect_low, expect_high):
     p = vtkLightShaftPass()
@@ -108,6 +134,12 @@ def test_vector_clamping(name):
     ("Anisotropy", (math.nan,)),
     ("Exposure", (math.inf,)),
     ("Exposure", (math.nan,)),
+    ("NoiseAmplitude", (math.nan,)),
+    ("NoiseScale", (math.inf,)),
+    ("NoiseVelocity1", (math.nan, 0.0)),
+    ("NoiseVelocity2", (0.0, -math.inf)),
+    ("Time", (math.nan,)),
+    ("Time", (math.inf,)),
 ])
 def test_non_finite_refused(messages, name, args):
     p = vtkLightShaftPass()
@@ -150,3 +182,44 @@ def test_release_without_window_is_safe():
     p = vtkLightShaftPass()
     p.ReleaseGraphicsResources(None)
     p.ReleaseGraphicsResources(None)
+
+
+def test_downsample_factor_rounds_down_to_a_power_of_two():
+    p = vtkLightShaftPass()
+    for requested, expected in [(1, 1), (2, 2), (3, 2), (4, 4), (5, 4)]:
+        p.SetDownsampleFactor(requested)
+        assert p.GetDownsampleFactor() == expected
+
+
+def test_noise_velocities_and_textures_round_trip():
+    from vtkmodules.vtkRenderingCore import vtkTexture
+    p = vtkLightShaftPass()
+    p.SetNoiseVelocity1(0.5, -0.25)
+    p.SetNoiseVelocity2(-2.0, 3.0)
+    assert p.GetNoiseVelocity1() == (0.5, -0.25)
+    assert p.GetNoiseVelocity2() == (-2.0, 3.0)
+    p.SetNoiseVelocity1(1e9, -1e9)
+    assert p.GetNoiseVelocity1() == (1e3, -1e3)
+    cookie, noise = vtkTexture(), vtkTexture()
+    p.SetCookie(cookie)
+    p.SetNoiseTexture(noise)
+    assert p.GetCookie() is cookie and p.GetNoiseTexture() is noise
+    p.SetCookie(None)
+    p.SetNoiseTexture(None)
+    assert p.GetCookie() is None and p.GetNoiseTexture() is None
+
+
+def test_named_precision_setters_and_booleans():
+    p = vtkLightShaftPass()
+    p.SetAccumulationPrecisionTo8Bit()
+    assert p.GetAccumulationPrecision() == 2
+    p.SetAccumulationPrecisionToFloat16()
+    assert p.GetAccumulationPrecision() == 1
+    p.SetAccumulationPrecisionToFloat32()
+    assert p.GetAccumulationPrecision() == 0
+    p.JitterOn()
+    p.AutomaticSliceCountOn()
+    assert p.GetJitter() and p.GetAutomaticSliceCount()
+    p.JitterOff()
+    p.AutomaticSliceCountOff()
+    assert not p.GetJitter() and not p.GetAutomaticSliceCount()
