@@ -12,7 +12,6 @@ inverse-square light seen in the picture (Rayleigh phase).
 import argparse
 import os
 import platform
-import subprocess
 import sys
 import time
 
@@ -67,22 +66,10 @@ def measure(case, slices_list, shadow_sizes, width, height):
 
 def frame_times(slices_list, width, height, frames=15):
     """Median frame time with the pass (per slice count) over the same scene without it."""
-    import statistics
     renderer, window = rh.make_window(width, height)
     scenes.sphere_and_floor(renderer)
 
-    def median_time():
-        window.Render()
-        window.WaitForCompletion()
-        samples = []
-        for _ in range(frames):
-            start = time.perf_counter()
-            window.Render()
-            window.WaitForCompletion()
-            samples.append(time.perf_counter() - start)
-        return statistics.median(samples)
-
-    plain = median_time()
+    plain = rh.median_frame_time(window, frames)
     shafts = vtkLightShaftPass()
     shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
     shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
@@ -91,7 +78,7 @@ def frame_times(slices_list, width, height, frames=15):
     rows = []
     for slices in slices_list:
         shafts.SetNumberOfSlices(slices)
-        rows.append((slices, median_time() / plain))
+        rows.append((slices, rh.median_frame_time(window, frames) / plain))
     return plain, rows
 
 

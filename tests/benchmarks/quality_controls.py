@@ -14,9 +14,7 @@ absolute times are this machine's (software rendering here); the ratios are the 
 import argparse
 import os
 import platform
-import statistics
 import sys
-import time
 
 import numpy as np
 
@@ -65,18 +63,6 @@ SETTINGS = [
 ]
 
 
-def median_frame(window, frames):
-    window.Render()
-    window.WaitForCompletion()
-    samples = []
-    for _ in range(frames):
-        start = time.perf_counter()
-        window.Render()
-        window.WaitForCompletion()
-        samples.append(time.perf_counter() - start)
-    return statistics.median(samples)
-
-
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--output")
@@ -86,7 +72,7 @@ def main():
 
     renderer, window = rh.make_window(*args.size)
     info = scenes.sphere_and_floor(renderer)
-    plain = median_frame(window, args.frames)
+    plain = rh.median_frame_time(window, args.frames)
     rows = []
     reference = None
     for name, params in SETTINGS:
@@ -99,7 +85,7 @@ def main():
             else:
                 getattr(shafts, "Set" + key)(value)
         renderer.SetPass(shafts)
-        ratio = median_frame(window, args.frames) / plain
+        ratio = rh.median_frame_time(window, args.frames) / plain
         if reference is None:
             reference = rh.reference_for(renderer, window, info, shafts)
         image = rh.in_scatter(shafts)

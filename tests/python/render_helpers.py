@@ -55,17 +55,57 @@ def screenshot(window):
     return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, 3).copy()
 
 
-def reference_for(renderer, window, info, shaft_pass, panels=4):
-    """The float64 reference L_in for a scenes.* scene as the pass is set up."""
+def reference_camera(renderer, window, size=None):
+    """The renderer's camera, for the reference (size: the viewport's, default the window's)."""
     cam = renderer.GetActiveCamera()
-    w, h = window.GetSize()
-    camera = ref.Camera(cam.GetPosition(), cam.GetFocalPoint(), cam.GetViewUp(),
-                        cam.GetViewAngle(), cam.GetClippingRange(), w, h)
-    L = info.light
-    light = ref.Spotlight(L.GetPosition(), L.GetFocalPoint(), L.GetConeAngle(), L.GetExponent(),
-                          L.GetAttenuationValues(), L.GetIntensity(), L.GetDiffuseColor())
-    medium = ref.Medium(shaft_pass.GetScatteringCoefficient(),
-                        shaft_pass.GetAbsorptionCoefficient(), shaft_pass.GetPhaseFunction(),
-                        shaft_pass.GetAnisotropy())
-    scene = ref.Scene(spheres=info.spheres, floors=info.floors)
-    return ref.in_scattered_radiance(camera, light, medium, scene, panels=panels)
+    w, h = size or window.GetSize()
+    return ref.Camera(cam.GetPosition(), cam.GetFocalPoint(), cam.GetViewUp(),
+                      cam.GetViewAngle(), cam.GetClippingRange(), w, h)
+
+
+def reference_light(light, cookie=None):
+    """A vtkLight, for the reference (optionally with a cookie function)."""
+    return ref.Spotlight(light.GetPosition(), light.GetFocalPoint(), light.GetConeAngle(),
+                         light.GetExponent(), light.GetAttenuationValues(), light.GetIntensity(),
+                         light.GetDiffuseColor(), cookie=cookie)
+
+
+def reference_medium(shaft_pass):
+    return ref.Medium(shaft_pass.GetScatteringCoefficient(),
+                      shaft_pass.GetAbsorptionCoefficient(), shaft_pass.GetPhaseFunction(),
+                      shaft_pass.GetAnisotropy())
+
+
+def reference_for(renderer, window, info, shaft_pass, panels=4, cookie=None, with_props=True,
+                  size=None):
+    """The float64 reference L_in for a scenes.* scene as the pass is set up."""
+    scene = ref.Scene(spheres=info.spheres, floors=info.floors) if with_props else ref.Scene()
+    return ref.in_scattered_radiance(reference_camera(renderer, window, size),
+                                     reference_light(info.light, cookie),
+                                     reference_medium(shaft_pass), scene, panels=panels)
+
+
+def surface_points(renderer, window, info):
+    """World points the pixel-centre rays hit (far plane where nothing), and which are floor."""
+    camera = reference_camera(renderer, window)
+    eye, dirs, forward = ref.camera_rays(camera)
+    d = dirs.reshape(-1, 3)
+    t = ref.surface_distance(eye, d, forward, camera,
+                             ref.Scene(spheres=info.spheres, floors=info.floors))
+    hit = eye + t[:, None] * d
+    return hit, np.abs(hit[:, 1]) < 1e-9
+
+
+def median_frame_time(window, frames):
+    """Median wall time of `frames` renders, each finished with glFinish (one warm-up frame)."""
+    import statistics
+    import time
+    window.Render()
+    window.WaitForCompletion()
+    samples = []
+    for _ in range(frames):
+        start = time.perf_counter()
+        window.Render()
+        window.WaitForCompletion()
+        samples.append(time.perf_counter() - start)
+    return statistics.median(samples)

@@ -63,16 +63,8 @@ def test_half_black_cookie_removes_half_the_shafts_and_floor_light():
     assert shafts.GetLastNumberOfSceneRenders() == 2
     measured = rh.in_scatter(shafts)
     plain = rh.reference_for(renderer, window, info, shafts)
-    cam = renderer.GetActiveCamera()
-    L = info.light
-    light = ref.Spotlight(L.GetPosition(), L.GetFocalPoint(), L.GetConeAngle(), L.GetExponent(),
-                          L.GetAttenuationValues(), L.GetIntensity(), L.GetDiffuseColor(),
-                          cookie=lambda u, v: np.where(u < 0.5, 1.0, 0.0)[..., None])
-    reference = ref.in_scattered_radiance(
-        ref.Camera(cam.GetPosition(), cam.GetFocalPoint(), cam.GetViewUp(), cam.GetViewAngle(),
-                   cam.GetClippingRange(), *window.GetSize()),
-        light, ref.Medium(shafts.GetScatteringCoefficient(), shafts.GetAbsorptionCoefficient()),
-        ref.Scene(spheres=info.spheres, floors=info.floors))
+    cookie = lambda u, v: np.where(u < 0.5, 1.0, 0.0)[..., None]  # noqa: E731
+    reference = rh.reference_for(renderer, window, info, shafts, cookie=cookie)
     # Pixels whose rays see only the black half: no shafts there (the reference says so, and
     # without the cookie they are lit).
     peak = plain.max()
@@ -86,15 +78,9 @@ def test_half_black_cookie_removes_half_the_shafts_and_floor_light():
     # The floor: dark where the cookie is black, lit where it is white.
     pixels = rh.screenshot(window).max(axis=-1)
     w, h = window.GetSize()
-    camera = ref.Camera(cam.GetPosition(), cam.GetFocalPoint(), cam.GetViewUp(),
-                        cam.GetViewAngle(), cam.GetClippingRange(), w, h)
-    eye, dirs, forward = ref.camera_rays(camera)
-    d = dirs.reshape(-1, 3)
-    scene = ref.Scene(spheres=info.spheres, floors=info.floors)
-    t = ref.surface_distance(eye, d, forward, camera, scene)
-    hit = eye + t[:, None] * d
-    on_floor = np.abs(hit[:, 1]) < 1e-9
-    u, _ = ref.cookie_uv(light, hit)
+    hit, on_floor = rh.surface_points(renderer, window, info)
+    L = info.light
+    u, _ = ref.cookie_uv(rh.reference_light(L), hit)
     lpos = np.asarray(L.GetPosition())
     axis = ref._normalize(np.asarray(L.GetFocalPoint()) - lpos)
     in_cone = ((hit - lpos) @ axis) / np.linalg.norm(hit - lpos, axis=1) > np.cos(np.radians(29))
@@ -212,10 +198,8 @@ def test_8bit_accumulation_error_grows_with_slices_as_predicted():
 
 def silhouette_masks(renderer, window, info):
     """Pixels on the sphere (foreground) next to shaft-lit background, and the background."""
-    cam = renderer.GetActiveCamera()
+    camera = rh.reference_camera(renderer, window)
     w, h = window.GetSize()
-    camera = ref.Camera(cam.GetPosition(), cam.GetFocalPoint(), cam.GetViewUp(),
-                        cam.GetViewAngle(), cam.GetClippingRange(), w, h)
     eye, dirs, forward = ref.camera_rays(camera)
     d = dirs.reshape(-1, 3)
     (centre, radius), = info.spheres
@@ -350,12 +334,6 @@ def test_no_shadow_map_when_nothing_can_cast_into_the_light():
     assert shafts.GetLastNumberOfShadowCasters() == 0
     assert not shafts.GetLastShadowMapRendered()
     assert "shadow" not in features(shafts)
-    cam = renderer.GetActiveCamera()
-    camera = ref.Camera(cam.GetPosition(), cam.GetFocalPoint(), cam.GetViewUp(),
-                        cam.GetViewAngle(), cam.GetClippingRange(), *window.GetSize())
-    light = ref.Spotlight(info.light.GetPosition(), info.light.GetFocalPoint(),
-                          info.light.GetConeAngle(), info.light.GetExponent())
-    medium = ref.Medium(shafts.GetScatteringCoefficient(), shafts.GetAbsorptionCoefficient())
-    reference = ref.in_scattered_radiance(camera, light, medium, ref.Scene())
+    reference = rh.reference_for(renderer, window, info, shafts, with_props=False)
     error, _ = ref.relative_rms_error(rh.in_scatter(shafts), reference)
     assert error < 0.01

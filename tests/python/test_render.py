@@ -113,12 +113,8 @@ def test_aerial_perspective_matches_transmittance():
     renderer.SetPass(shafts)
     window.Render()
     fogged = rh.screenshot(window).astype(float)
-    cam = renderer.GetActiveCamera()
-    camera = ref.Camera(cam.GetPosition(), cam.GetFocalPoint(), cam.GetViewUp(),
-                        cam.GetViewAngle(), cam.GetClippingRange(), 200, 150)
-    eye, dirs, forward = ref.camera_rays(camera)
-    t = ref.surface_distance(eye, dirs.reshape(-1, 3), forward, camera,
-                             ref.Scene(spheres=info.spheres, floors=info.floors))
+    hit, _ = rh.surface_points(renderer, window, info)
+    t = np.linalg.norm(hit - np.asarray(renderer.GetActiveCamera().GetPosition()), axis=1)
     transmittance = np.exp(-np.outer(t, [0.05, 0.1, 0.2])).reshape(150, 200, 3)
     expected = plain * transmittance
     # 8-bit rounding (and the tessellated sphere's silhouette) aside, they agree.
@@ -240,16 +236,7 @@ def test_viewport_is_honoured():
     assert tuple(shafts.GetLastViewportSize()) == (width // 2, height)
     measured = rh.in_scatter(shafts)
     assert measured.shape == (height, width // 2, 3)
-    cam = renderer.GetActiveCamera()
-    camera = ref.Camera(cam.GetPosition(), cam.GetFocalPoint(), cam.GetViewUp(),
-                        cam.GetViewAngle(), cam.GetClippingRange(), width // 2, height)
-    L = info.light
-    reference = ref.in_scattered_radiance(
-        camera,
-        ref.Spotlight(L.GetPosition(), L.GetFocalPoint(), L.GetConeAngle(), L.GetExponent(),
-                      L.GetAttenuationValues(), L.GetIntensity(), L.GetDiffuseColor()),
-        ref.Medium(shafts.GetScatteringCoefficient(), shafts.GetAbsorptionCoefficient()),
-        ref.Scene(spheres=info.spheres, floors=info.floors))
+    reference = rh.reference_for(renderer, window, info, shafts, size=(width // 2, height))
     error, _ = ref.relative_rms_error(measured, reference)
     assert error < 0.05
     # The other renderer's half is untouched.
@@ -323,16 +310,8 @@ def test_light_volume_outside_view_skips_work():
 
 def floor_shadow_masks(renderer, window, info, erode=2):
     """Analytic floor masks (lit by the spot / in the sphere's shadow), eroded by `erode` px."""
-    cam = renderer.GetActiveCamera()
     w, h = window.GetSize()
-    camera = ref.Camera(cam.GetPosition(), cam.GetFocalPoint(), cam.GetViewUp(),
-                        cam.GetViewAngle(), cam.GetClippingRange(), w, h)
-    eye, dirs, forward = ref.camera_rays(camera)
-    d = dirs.reshape(-1, 3)
-    scene = ref.Scene(spheres=info.spheres, floors=info.floors)
-    t = ref.surface_distance(eye, d, forward, camera, scene)
-    hit = eye + t[:, None] * d
-    on_floor = np.abs(hit[:, 1]) < 1e-9
+    hit, on_floor = rh.surface_points(renderer, window, info)
     light = np.asarray(info.light.GetPosition())
     axis = np.asarray(info.light.GetFocalPoint()) - light
     axis /= np.linalg.norm(axis)
