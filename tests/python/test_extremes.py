@@ -1,0 +1,224 @@
+"""Numerical stability at the extremes: every case renders finite values with no GL error, and
+agrees with the float64 reference within the bound stated per case (or degrades as documented).
+"""
+
+import numpy as np
+import pytest
+
+from lightshafts import scenes, vtkLightShaftPass
+from vtkmodules.vtkFiltersSources import vtkPlaneSource
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
+
+import lightshaft_reference as ref
+import render_helpers as rh
+
+
+def render(width=160, height=120, prepare=None, **params):
+    renderer, window = rh.make_window(width, height)
+    info = scenes.sphere_and_floor(renderer, sphere_resolution=128)
+    shafts = vtkLightShaftPass()
+    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
+    shafts.SetAbsorptionCoefficient(0.01)
+    shafts.SetNumberOfSlices(256)
+    shafts.SetShadowMapSize(2048)
+    for name, value in params.items():
+        getattr(shafts, "Set" + name)(value)
+    if prepare:
+        prepare(renderer, info, shafts)
+        renderer.ResetCameraClippingRange()
+    renderer.SetPass(shafts)
+    window.Render()
+    assert shafts.GetLastGLErrorCount() == 0
+    image = rh.in_scatter(shafts)
+    assert np.all(np.isfinite(image)), "non-finite in-scatter"
+    assert np.all(image >= 0.0)
+    pixels = rh.screenshot(window)
+    return renderer, window, info, shafts, image, pixels
+
+
+def error_against_reference(renderer, window, info, shafts, image, threshold=0.01):
+    reference = rh.reference_for(renderer, window, info, shafts)
+    assert np.all(np.isfinite(reference))
+    if reference.max() == 0.0:
+        return 0.0 if image.max() == 0.0 else np.inf
+    return ref.relative_rms_error(image, reference, threshold)[0]
+
+
+def move_camera(position, focal_point, view_up=(0.0, 1.0, 0.0)):
+    def prepare(renderer, info, shafts):
+        camera = renderer.GetActiveCamera()
+        camera.SetPosition(*position)
+        camera.SetFocalPoint(*focal_point)
+        camera.SetViewUp(*view_up)
+    return prepare
+
+
+@pytest.mark.parametrize("offset", [1e-4, 1e-2])
+def test_eye_next_to_the_light(offset):
+    # The eye sits at the apex: every ray starts inside (or at the tip of) the cone.
+    light = np.array([0.5, 6.0, 0.0])
+    args = render(prepare=move_camera(light + [offset, 0.0, 0.0], (0.0, 0.0, 0.3)))
+    assert error_against_reference(*args[:5]) < 0.02
+
+
+@pytest.mark.parametrize("direction", ["into", "away"])
+def test_view_along_the_cone_axis(direction):
+    light = np.array([0.5, 6.0, 0.0])
+    axis = -light / np.linalg.norm(light)
+    if direction == "into":  # inside the cone, between the sphere and the light, facing the light
+        eye = light + 3.5 * axis
+        focal = light
+    else:  # from behind the light, looking along the beam
+        eye = light - 2.0 * axis
+        focal = light + axis
+    args = render(prepare=move_camera(eye + [0.0, 0.0, 1e-3], focal, (0.0, 0.0, 1.0)))
+    assert error_against_reference(*args[:5]) < 0.02
+
+
+def test_light_far_behind_the_camera():
+    def prepare(renderer, info, shafts):
+        info.light.SetPosition(0.0, 3.5, 60.0)  # behind the camera (at z = 12), off-screen
+        info.light.SetFocalPoint(0.0, 1.5, 0.0)
+        info.light.SetConeAngle(4.0)
+    args = render(prepare=prepare)
+    assert args[4].max() > 0.0
+    assert error_against_reference(*args[:5]) < 0.02
+
+
+@pytest.mark.parametrize("angle", [0.5, 89.0])
+def test_extreme_cone_angles(angle):
+    def prepare(renderer, info, shafts):
+        info.light.SetConeAngle(angle)
+    args = render(prepare=prepare)
+    renderer, window, info, shafts, image, _ = args
+    if angle < 1.0:
+        # A 0.5 degree cone is a pencil about 5 cm wide at the floor: a few pixels; the
+        # comparison is over those pixels.
+        assert image.max() > 0.0
+        assert error_against_reference(*args[:5]) < 0.05
+    else:
+        # 89 degrees: the shadow-map frustum is 178 degrees wide, so a texel covers a large
+        # solid angle near the edge of the cone; the error stays bounded.
+        assert error_against_reference(*args[:5]) < 0.05
+
+
+@pytest.mark.parametrize("sigma", [0.0, 1e-6, 1.0, 1e3])
+def test_extinction_from_none_to_opaque(sigma):
+    args = render(ScatteringCoefficient=sigma, AbsorptionCoefficient=0.0)
+    renderer, window, info, shafts, image, pixels = args
+    if sigma == 0.0:
+        assert image.max() == 0.0
+    elif sigma >= 1e3:
+        # Optical depth ~1e4 along every ray: transmittance underflows to 0 in float; black
+        # shafts and a black (fully fogged) scene, no NaN.
+        assert image.max() < 1e-30
+        assert pixels.max() == 0
+    else:
+        assert error_against_reference(*args[:5]) < 0.02
+
+
+@pytest.mark.parametrize("intensity", [1e-6, 1e6])
+def test_extreme_intensities(intensity):
+    def prepare(renderer, info, shafts):
+        info.light.SetIntensity(intensity)
+    args = render(prepare=prepare)
+    assert error_against_reference(*args[:5]) < 0.01
+
+
+@pytest.mark.parametrize("slices", [1, 4096])
+def test_one_slice_and_the_maximum(slices):
+    args = render(NumberOfSlices=slices)
+    renderer, window, info, shafts, image, _ = args
+    assert shafts.GetLastNumberOfSlicesDrawn() == slices
+    error = error_against_reference(*args[:5])
+    # One slab: the whole lit depth range in one product-rule segment per pixel (a documented
+    # degradation: about 30% RMS, the energy within 10%); 4096: converged.
+    assert error < (0.35 if slices == 1 else 0.01)
+    if slices == 1:
+        assert ref.energy_error(image, rh.reference_for(renderer, window, info, shafts)) < 0.1
+
+
+@pytest.mark.parametrize("size", [64, 16384])
+def test_smallest_and_largest_shadow_map(size):
+    args = render(ShadowMapSize=size)
+    renderer, window, info, shafts, image, _ = args
+    error = error_against_reference(*args[:5])
+    # 64 texels: the sphere's shadow edges are blocky (a documented degradation); the maximum is
+    # limited to the GL implementation's largest texture.
+    assert error < (0.15 if size == 64 else 0.01)
+
+
+def test_far_to_near_ratio_of_a_million():
+    renderer, window = rh.make_window(160, 120)
+    info = scenes.sphere_and_floor(renderer, sphere_resolution=128)
+    camera = renderer.GetActiveCamera()
+    far = camera.GetClippingRange()[1] * 2.0
+    camera.SetClippingRange(far * 1e-6, far)
+    shafts = vtkLightShaftPass()
+    shafts.SetScatteringCoefficient(0.05)
+    shafts.SetNumberOfSlices(256)
+    renderer.SetPass(shafts)
+    window.Render()
+    near_used, far_used = camera.GetClippingRange()
+    assert far_used / near_used > 0.99e6
+    assert shafts.GetLastGLErrorCount() == 0
+    image = rh.in_scatter(shafts)
+    assert np.all(np.isfinite(image))
+    # 24-bit-like depth at near = 1e-6 far resolves the floor and sphere only coarsely; the
+    # pass reconstructs surface distances from that depth buffer, the reference is exact.
+    assert error_against_reference(renderer, window, info, shafts, image) < 0.05
+
+
+@pytest.mark.parametrize("size", [(1, 1), (4096, 4096)])
+def test_tiny_and_huge_windows(size):
+    renderer, window = rh.make_window(*size)
+    scenes.sphere_and_floor(renderer, sphere_resolution=64)
+    shafts = vtkLightShaftPass()
+    shafts.SetScatteringCoefficient(0.05)
+    shafts.SetNumberOfSlices(32)
+    renderer.SetPass(shafts)
+    window.Render()
+    assert shafts.GetLastGLErrorCount() == 0
+    assert tuple(shafts.GetLastViewportSize()) == size
+    image = rh.in_scatter(shafts)
+    assert image.shape == (size[1], size[0], 3)
+    assert np.all(np.isfinite(image))
+    window.SetSize(160, 120)  # leave the shared window small
+
+
+def test_occluder_touching_the_light():
+    def prepare(renderer, info, shafts):
+        # A plate just under the light, touching it, covering one side of the cone.
+        plate = vtkPlaneSource()
+        plate.SetOrigin(0.5, 6.0, -1.0)
+        plate.SetPoint1(2.0, 6.0, -1.0)
+        plate.SetPoint2(0.5, 6.0, 1.0)
+        mapper = vtkPolyDataMapper()
+        mapper.SetInputConnection(plate.GetOutputPort())
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        renderer.AddActor(actor)
+    renderer, window, info, shafts, image, _ = render(prepare=prepare)
+    assert shafts.GetLastShadowMapRendered()
+    assert image.max() > 0.0
+
+
+def test_degenerate_scene():
+    renderer, window = rh.make_window(160, 120)
+    # Zero-area geometry: a plane collapsed to a line, and the light.
+    plate = vtkPlaneSource()
+    plate.SetOrigin(0.0, 0.0, 0.0)
+    plate.SetPoint1(1.0, 0.0, 0.0)
+    plate.SetPoint2(2.0, 0.0, 0.0)
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(plate.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    renderer.AddActor(actor)
+    scenes.add_spotlight(renderer, (0.5, 6.0, 0.0), (0.0, 0.0, 0.0))
+    renderer.ResetCamera()
+    shafts = vtkLightShaftPass()
+    renderer.SetPass(shafts)
+    window.Render()
+    assert shafts.GetLastGLErrorCount() == 0
+    assert np.all(np.isfinite(rh.in_scatter(shafts)))
