@@ -6,12 +6,13 @@
 
 # The wrapped classes derive from VTK's OpenGL render passes: load those modules first so the
 # base classes are registered with VTK's Python wrapping.
+import vtkmodules.vtkCommonExecutionModel  # noqa: F401
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 import vtkmodules.vtkRenderingCore  # noqa: F401
 
-from .vtkLightShafts import vtkLightShaftPass  # noqa: F401
+from .vtkLightShafts import vtkLightShaftPass, vtkLightShaftReference  # noqa: F401
 
-__all__ = ["vtkLightShaftPass", "write_png"]
+__all__ = ["vtkLightShaftPass", "vtkLightShaftReference", "write_png"]
 
 
 def write_png(window, filename):
