@@ -899,6 +899,36 @@ void vtkLightShaftPass::SetTime(double time)
     std::numeric_limits<double>::max());
 }
 
+namespace
+{
+void ApplyQuality(vtkLightShaftPass* pass, int slices, int shadowMap, bool jitter, int blur,
+  int downsample)
+{
+  pass->SetAutomaticSliceCount(false);
+  pass->SetNumberOfSlices(slices);
+  pass->SetShadowMapSize(shadowMap);
+  pass->SetJitter(jitter);
+  pass->SetBlurRadius(blur);
+  pass->SetDownsampleFactor(downsample);
+  pass->SetAccumulationPrecision(vtkLightShaftPass::ACCUMULATE_FLOAT32);
+}
+}
+
+void vtkLightShaftPass::SetQualityToDraft()
+{
+  ApplyQuality(this, 32, 512, true, 2, 2);
+}
+
+void vtkLightShaftPass::SetQualityToInteractive()
+{
+  ApplyQuality(this, 64, 1024, true, 2, 1);
+}
+
+void vtkLightShaftPass::SetQualityToFinal()
+{
+  ApplyQuality(this, 512, 2048, false, 0, 1);
+}
+
 void vtkLightShaftPass::SetDownsampleFactor(int factor)
 {
   factor = factor >= 4 ? 4 : (factor >= 2 ? 2 : 1);

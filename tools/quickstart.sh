@@ -15,7 +15,7 @@ packages=(
   build-essential cmake pkg-config
   libvtk9-dev python3-vtk9 libglm-dev
   xvfb xauth libgl1-mesa-dri
-  python3-numpy python3-pytest python3-tqdm
+  python3-numpy python3-pytest python3-tqdm python3-matplotlib python3-skimage
 )
 missing=()
 for p in "${packages[@]}"; do

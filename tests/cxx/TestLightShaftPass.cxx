@@ -104,6 +104,8 @@ int main(int argc, char* argv[])
   shafts->SetExposure(40.0);
   shafts->SetNumberOfSlices(256);
   shafts->SetShadowMapSize(1024);
+  shafts->JitterOff();
+  shafts->SetBlurRadius(0);
   renderer->SetPass(shafts);
   window->Render();
 

@@ -35,6 +35,8 @@ def render_scene(width=320, height=240, prepare=None, **params):
     shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
     shafts.SetNumberOfSlices(HIGH_SLICES)
     shafts.SetShadowMapSize(HIGH_SHADOW_MAP)
+    shafts.JitterOff()  # measure the slab integration itself (the default blur would hide it)
+    shafts.SetBlurRadius(0)
     for name, value in params.items():
         getattr(shafts, "Set" + name)(value)
     if prepare:
@@ -164,3 +166,17 @@ def test_no_scattering_gives_no_in_scatter():
     window.Render()
     assert np.all(rh.in_scatter(shafts) == 0.0)
     assert shafts.GetLastNumberOfSlicesDrawn() == 0  # nothing to scatter: no slabs drawn
+
+
+def test_default_quality_meets_its_bound():
+    # The defaults (the Interactive preset: 64 slices, jitter, blur 2) on the same scene.
+    renderer, window = rh.make_window(320, 240)
+    info = scenes.sphere_and_floor(renderer)
+    shafts = vtkLightShaftPass()
+    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
+    shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
+    renderer.SetPass(shafts)
+    window.Render()
+    relative_rms, energy, _, _ = errors(renderer, window, info, shafts)
+    assert relative_rms < 0.01
+    assert energy < 0.005

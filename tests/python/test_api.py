@@ -26,7 +26,7 @@ def test_defaults():
     assert p.GetExposure() == 1.0
     assert p.GetAttenuateScene() is True or p.GetAttenuateScene() == 1
     assert not p.GetShadowSurfaces()
-    assert p.GetNumberOfSlices() == 128
+    assert p.GetNumberOfSlices() == 64
     assert p.GetShadowMapSize() == 1024
     assert p.GetLight() is None
     assert p.GetDelegatePass() is None
@@ -39,8 +39,8 @@ def test_defaults():
     assert p.GetTime() == 0.0
     assert not p.GetAutomaticSliceCount()
     assert p.GetMaximumNumberOfSlices() == 512
-    assert not p.GetJitter()
-    assert p.GetBlurRadius() == 0
+    assert p.GetJitter()
+    assert p.GetBlurRadius() == 2
     assert p.GetDownsampleFactor() == 1
     assert p.GetAccumulationPrecision() == vtkLightShaftPass.ACCUMULATE_FLOAT32
 
@@ -223,3 +223,19 @@ def test_named_precision_setters_and_booleans():
     p.JitterOff()
     p.AutomaticSliceCountOff()
     assert not p.GetJitter() and not p.GetAutomaticSliceCount()
+
+
+def test_quality_presets():
+    p = vtkLightShaftPass()
+    defaults = (p.GetNumberOfSlices(), p.GetShadowMapSize(), p.GetJitter(), p.GetBlurRadius(),
+                p.GetDownsampleFactor(), p.GetAccumulationPrecision(), p.GetAutomaticSliceCount())
+    p.SetQualityToDraft()
+    assert (p.GetNumberOfSlices(), p.GetShadowMapSize(), bool(p.GetJitter()), p.GetBlurRadius(),
+            p.GetDownsampleFactor()) == (32, 512, True, 2, 2)
+    p.SetQualityToFinal()
+    assert (p.GetNumberOfSlices(), p.GetShadowMapSize(), bool(p.GetJitter()), p.GetBlurRadius(),
+            p.GetDownsampleFactor()) == (512, 2048, False, 0, 1)
+    p.SetQualityToInteractive()
+    assert (p.GetNumberOfSlices(), p.GetShadowMapSize(), p.GetJitter(), p.GetBlurRadius(),
+            p.GetDownsampleFactor(), p.GetAccumulationPrecision(),
+            p.GetAutomaticSliceCount()) == defaults

@@ -21,6 +21,8 @@ def render(width=160, height=120, prepare=None, **params):
     shafts.SetAbsorptionCoefficient(0.01)
     shafts.SetNumberOfSlices(256)
     shafts.SetShadowMapSize(2048)
+    shafts.JitterOff()  # the slab integration itself
+    shafts.SetBlurRadius(0)
     for name, value in params.items():
         getattr(shafts, "Set" + name)(value)
     if prepare:

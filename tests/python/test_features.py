@@ -42,6 +42,8 @@ def shaft_scene(width=240, height=180, **params):
     shafts.SetExposure(40.0)
     shafts.SetNumberOfSlices(256)
     shafts.SetShadowMapSize(2048)
+    shafts.JitterOff()  # each test turns on what it tests
+    shafts.SetBlurRadius(0)
     for name, value in params.items():
         getattr(shafts, "Set" + name)(value)
     renderer.SetPass(shafts)

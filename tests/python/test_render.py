@@ -35,6 +35,10 @@ def shaft_scene(width=200, height=150, **params):
 def test_render_smoke_and_statistics():
     renderer, window, _, shafts = shaft_scene(NumberOfSlices=64)
     window.Render()
+    assert shafts.GetJitter()  # default: one more slab, each pixel's boundaries shifted
+    assert shafts.GetLastNumberOfSlicesDrawn() == 65
+    shafts.JitterOff()
+    window.Render()
     assert shafts.GetLastNumberOfSlicesDrawn() == 64
     assert shafts.GetLastShadowMapRendered()
     near, far = shafts.GetLastSliceDepthRange()
@@ -47,6 +51,7 @@ def test_render_smoke_and_statistics():
 
 def test_readback_shape_and_orientation():
     renderer, window, info, shafts = shaft_scene(NumberOfSlices=128)
+    info.light.SetPosition(2.5, 6.0, 0.0)  # off-centre: a mirrored image must not match
     window.Render()
     image = vtkImageData()
     assert shafts.GetInScatteredRadiance(image)

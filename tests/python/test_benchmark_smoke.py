@@ -1,0 +1,25 @@
+"""A smoke-sized run of the benchmark (tests/benchmarks/benchmark.py --smoke): it runs, and
+writes the CSV, the markdown table and the Pareto plot."""
+
+import csv
+import os
+import subprocess
+import sys
+
+BENCHMARK = os.path.join(os.path.dirname(__file__), "..", "benchmarks", "benchmark.py")
+
+
+def test_benchmark_smoke(tmp_path):
+    result = subprocess.run([sys.executable, BENCHMARK, "--smoke", "--output-dir", str(tmp_path)],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    with open(tmp_path / "benchmark.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 3
+    for row in rows:
+        assert float(row["time_ratio"]) > 0.0
+    measured = [r for r in rows if r["relative_rmse"]]
+    assert measured and all(0.0 <= float(r["relative_rmse"]) < 0.2 for r in measured)
+    assert all(0.0 < float(r["ssim"]) <= 1.0 for r in measured)
+    assert (tmp_path / "images" / "pareto.png").stat().st_size > 10000
+    assert "| setting | time ratio |" in (tmp_path / "benchmark.md").read_text()
