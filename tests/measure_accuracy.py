@@ -35,6 +35,8 @@ def measure(case, slices_list, shadow_sizes, width, height):
     shafts = vtkLightShaftPass()
     shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
     shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
+    shafts.JitterOff()  # the slab integration alone
+    shafts.SetBlurRadius(0)
     if case == "hg":
         shafts.SetPhaseFunctionToHenyeyGreenstein()
         shafts.SetAnisotropy(0.6)
@@ -74,6 +76,8 @@ def frame_times(slices_list, width, height, frames=15):
     shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
     shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
     shafts.SetShadowMapSize(2048)
+    shafts.JitterOff()
+    shafts.SetBlurRadius(0)
     renderer.SetPass(shafts)
     rows = []
     for slices in slices_list:

@@ -85,8 +85,11 @@ def white_cookie(size=64):
 def configure(shafts, sigma_s, sigma_a, params):
     shafts.SetScatteringCoefficient(*sigma_s)
     shafts.SetAbsorptionCoefficient(*sigma_a)
+    # Plain slabs unless the setting says otherwise (the presets set everything themselves).
     shafts.SetNumberOfSlices(128)
     shafts.SetShadowMapSize(1024)
+    shafts.JitterOff()
+    shafts.SetBlurRadius(0)
     for key, value in params.items():
         if key == "Cookie":
             shafts.SetCookie(white_cookie())
