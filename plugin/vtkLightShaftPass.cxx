@@ -901,7 +901,11 @@ void vtkLightShaftPass::SetTime(double time)
 
 namespace
 {
-void ApplyQuality(vtkLightShaftPass* pass, int slices, int shadowMap, bool jitter, int blur,
+void ApplyQuality(vtkLightShaftPass* pass,
+  int slices,
+  int shadowMap,
+  bool jitter,
+  int blur,
   int downsample)
 {
   pass->SetAutomaticSliceCount(false);

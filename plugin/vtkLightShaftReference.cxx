@@ -373,6 +373,21 @@ vtkLightShaftPass* vtkLightShaftReference::GetLightShaftPass()
   return this->Pass;
 }
 
+void vtkLightShaftReference::SetRelativeTolerance(double tolerance)
+{
+  if (!std::isfinite(tolerance))
+  {
+    vtkErrorMacro("RelativeTolerance: non-finite value refused; the previous value is kept.");
+    return;
+  }
+  tolerance = std::min(std::max(tolerance, 1e-14), 1e-2);
+  if (tolerance != this->RelativeTolerance)
+  {
+    this->RelativeTolerance = tolerance;
+    this->Modified();
+  }
+}
+
 vtkMTimeType vtkLightShaftReference::GetMTime()
 {
   // The scene changes without telling us: any change of the renderer, its camera, lights or

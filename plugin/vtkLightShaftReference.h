@@ -67,10 +67,10 @@ public:
 
   ///@{
   /**
-   * Relative tolerance of the adaptive quadrature on each piece, in [1e-14, 1e-2].
-   * Default is 1e-9.
+   * Relative tolerance of the adaptive quadrature on each piece, in [1e-14, 1e-2]; non-finite
+   * values are refused (error, previous value kept). Default is 1e-9.
    */
-  vtkSetClampMacro(RelativeTolerance, double, 1e-14, 1e-2);
+  void SetRelativeTolerance(double tolerance);
   vtkGetMacro(RelativeTolerance, double);
   ///@}
 

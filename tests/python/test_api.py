@@ -239,3 +239,29 @@ def test_quality_presets():
     assert (p.GetNumberOfSlices(), p.GetShadowMapSize(), p.GetJitter(), p.GetBlurRadius(),
             p.GetDownsampleFactor(), p.GetAccumulationPrecision(),
             p.GetAutomaticSliceCount()) == defaults
+
+
+def test_reference_parameters(messages):
+    from lightshafts import vtkLightShaftReference
+    r = vtkLightShaftReference()
+    assert r.GetRelativeTolerance() == 1e-9
+    assert r.GetVisibilitySamples() == 32
+    assert r.GetUseClosedForms()
+    assert r.GetRenderer() is None and r.GetLightShaftPass() is None
+    r.SetRelativeTolerance(1.0)
+    assert r.GetRelativeTolerance() == 1e-2
+    r.SetRelativeTolerance(0.0)
+    assert r.GetRelativeTolerance() == 1e-14
+    r.SetVisibilitySamples(0)
+    assert r.GetVisibilitySamples() == 2
+    r.SetVisibilitySamples(10 ** 9)
+    assert r.GetVisibilitySamples() == 100000
+    r.UseClosedFormsOff()
+    assert not r.GetUseClosedForms()
+    log = messages(r)
+    r.SetRelativeTolerance(math.nan)
+    assert r.GetRelativeTolerance() == 1e-14
+    assert len(log.errors) == 1 and "RelativeTolerance" in log.errors[0]
+    # Without a renderer and a pass, Update() reports the missing inputs.
+    r.Update()
+    assert any("SetRenderer" in e for e in log.errors)

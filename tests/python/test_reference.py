@@ -123,3 +123,14 @@ def test_the_pass_against_the_cpp_reference_and_its_speed():
     assert errors.max() <= 1e-6 * values.max()
     error, _ = ref.relative_rms_error(rh.in_scatter(shafts), values)
     assert error < 0.01
+
+
+def test_unmodelled_features_are_reported(messages):
+    renderer, window, info, shafts = scene(40, 30)
+    shafts.SetNoiseAmplitude(0.5)
+    reference = vtkLightShaftReference()
+    log = messages(reference)
+    reference.SetRenderer(renderer)
+    reference.SetLightShaftPass(shafts)
+    reference.Update()
+    assert any("noise" in e for e in log.errors)
