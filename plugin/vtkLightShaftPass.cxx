@@ -698,7 +698,6 @@ public:
     vtkRenderer* ren,
     vtkLight* light,
     const CameraFrame& camera,
-    double reach,
     LightFrame& frame);
   void RenderScene(vtkLightShaftPass& self,
     const vtkRenderState* s,
@@ -1197,7 +1196,7 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
     camera.ClipToView = glm::inverse(camera.ViewToClip);
   }
   LightFrame lightFrame;
-  const bool lightFrameValid = impl.ComputeLightFrame(*this, ren, light, camera, 0.0, lightFrame);
+  const bool lightFrameValid = impl.ComputeLightFrame(*this, ren, light, camera, lightFrame);
   impl.RenderInScatter(*this, s, lightFrame, camera, w, h);
   ostate->PopFramebufferBindings();
 
@@ -1338,7 +1337,6 @@ bool vtkLightShaftPass::Internals::ComputeLightFrame(vtkLightShaftPass& self,
   vtkRenderer* ren,
   vtkLight* light,
   const CameraFrame& camera,
-  double,
   LightFrame& frame)
 {
   frame.PositionWC = glm::make_vec3(light->GetTransformedPosition());
