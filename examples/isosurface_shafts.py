@@ -14,9 +14,9 @@ import vtkmodules.vtkInteractionStyle  # noqa: F401
 import vtkmodules.vtkRenderingFreeType  # noqa: F401  (text for the title)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 from vtkmodules.vtkRenderingCore import (
-    vtkLight, vtkRenderWindow, vtkRenderWindowInteractor, vtkRenderer, vtkTextActor)
+    vtkLight, vtkRenderWindow, vtkRenderer, vtkTextActor)
 
-from lightshafts import scenes, vtkLightShaftPass, write_png
+from lightshafts import scenes, show_or_save, vtkLightShaftPass
 
 
 def main():
@@ -53,15 +53,9 @@ def main():
     shafts.ShadowSurfacesOn()
     renderer.SetPass(shafts)
 
+    show_or_save(window, args.output, args.interactive)
     if args.interactive:
-        interactor = vtkRenderWindowInteractor()
-        interactor.SetRenderWindow(window)
-        window.Render()
-        interactor.Start()
         return
-    window.SetOffScreenRendering(1)
-    window.Render()
-    write_png(window, args.output)
     print(f"wrote {args.output}")
 
 

@@ -18,9 +18,9 @@ from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkIOImage import vtkImageReader2Factory
 from vtkmodules.vtkRenderingCore import (
-    vtkLight, vtkRenderWindow, vtkRenderWindowInteractor, vtkRenderer, vtkTexture)
+    vtkLight, vtkRenderWindow, vtkRenderer, vtkTexture)
 
-from lightshafts import scenes, vtkLightShaftPass, write_png
+from lightshafts import scenes, show_or_save, vtkLightShaftPass
 
 
 def stained_glass(size=256, panes=4):
@@ -87,15 +87,9 @@ def main():
     shafts.ShadowSurfacesOn()  # the window frame shadows the floor as it does the shafts
     renderer.SetPass(shafts)
 
+    show_or_save(window, args.output, args.interactive)
     if args.interactive:
-        interactor = vtkRenderWindowInteractor()
-        interactor.SetRenderWindow(window)
-        window.Render()
-        interactor.Start()
         return
-    window.SetOffScreenRendering(1)
-    window.Render()
-    write_png(window, args.output)
     print(f"wrote {args.output} ({shafts.GetLastShaderVariant()})")
 
 

@@ -13,9 +13,9 @@ import argparse
 import vtkmodules.vtkInteractionStyle  # noqa: F401  (default interactor style)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL back end)
 from vtkmodules.vtkRenderingCore import (
-    vtkLight, vtkRenderWindow, vtkRenderWindowInteractor, vtkRenderer)
+    vtkLight, vtkRenderWindow, vtkRenderer)
 
-from lightshafts import scenes, vtkLightShaftPass, write_png
+from lightshafts import scenes, show_or_save, vtkLightShaftPass
 
 
 def main():
@@ -49,16 +49,9 @@ def main():
     shafts.ShadowSurfacesOn()  # the floor shows the window's pattern too
     renderer.SetPass(shafts)
 
+    show_or_save(window, args.output, args.interactive)
     if args.interactive:
-        interactor = vtkRenderWindowInteractor()
-        interactor.SetRenderWindow(window)
-        window.Render()
-        interactor.Start()
         return
-
-    window.SetOffScreenRendering(1)
-    window.Render()
-    write_png(window, args.output)
     print(f"wrote {args.output}: {shafts.GetLastNumberOfSlicesDrawn()} slices, "
           f"shadow map {'rendered' if shafts.GetLastShadowMapRendered() else 'skipped'}")
 

@@ -12,7 +12,7 @@ import vtkmodules.vtkRenderingCore  # noqa: F401
 
 from .vtkLightShafts import vtkLightShaftPass, vtkLightShaftReference  # noqa: F401
 
-__all__ = ["vtkLightShaftPass", "vtkLightShaftReference", "write_png"]
+__all__ = ["vtkLightShaftPass", "vtkLightShaftReference", "write_png", "show_or_save"]
 
 
 def write_png(window, filename):
@@ -27,3 +27,20 @@ def write_png(window, filename):
     writer.SetFileName(str(filename))
     writer.SetInputConnection(grab.GetOutputPort())
     writer.Write()
+
+
+def show_or_save(window, output=None, interactive=False):
+    """Open an interactive window (needs a display), or render offscreen and write `output`."""
+    if interactive:
+        import vtkmodules.vtkInteractionStyle  # noqa: F401  (the default interactor style)
+        from vtkmodules.vtkRenderingCore import vtkRenderWindowInteractor
+
+        interactor = vtkRenderWindowInteractor()
+        interactor.SetRenderWindow(window)
+        window.Render()
+        interactor.Start()
+        return
+    window.SetOffScreenRendering(1)
+    window.Render()
+    if output:
+        write_png(window, output)

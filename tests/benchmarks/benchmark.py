@@ -33,9 +33,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 import lightshaft_reference as ref  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import scenes, vtkLightShaftPass, vtkLightShaftReference  # noqa: E402
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy  # noqa: E402
-from vtkmodules.vtkCommonDataModel import vtkImageData  # noqa: E402
-from vtkmodules.vtkRenderingCore import vtkTexture  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 SCENES = {
     "sphere-and-floor": (scenes.sphere_and_floor, (0.05, 0.04, 0.03), (0.02, 0.01, 0.03)),
@@ -72,16 +70,6 @@ SETTINGS = [
 ]
 
 
-def white_cookie(size=64):
-    image = vtkImageData()
-    image.SetDimensions(size, size, 1)
-    image.GetPointData().SetScalars(
-        numpy_to_vtk(np.full((size * size, 3), 255, np.uint8), deep=1))
-    texture = vtkTexture()
-    texture.SetInputData(image)
-    return texture
-
-
 def configure(shafts, sigma_s, sigma_a, params):
     shafts.SetScatteringCoefficient(*sigma_s)
     shafts.SetAbsorptionCoefficient(*sigma_a)
@@ -92,7 +80,7 @@ def configure(shafts, sigma_s, sigma_a, params):
     shafts.SetBlurRadius(0)
     for key, value in params.items():
         if key == "Cookie":
-            shafts.SetCookie(white_cookie())
+            shafts.SetCookie(rh.uniform_cookie())
         elif key == "Quality":
             getattr(shafts, f"SetQualityTo{value}")()
         else:

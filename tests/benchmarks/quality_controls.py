@@ -16,7 +16,6 @@ import os
 import platform
 import sys
 
-import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
@@ -24,19 +23,6 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 import lightshaft_reference as ref  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import scenes, vtkLightShaftPass  # noqa: E402
-from vtkmodules.util.numpy_support import numpy_to_vtk  # noqa: E402
-from vtkmodules.vtkCommonDataModel import vtkImageData  # noqa: E402
-from vtkmodules.vtkRenderingCore import vtkTexture  # noqa: E402
-
-
-def white_cookie(size=64):
-    image = vtkImageData()
-    image.SetDimensions(size, size, 1)
-    image.GetPointData().SetScalars(
-        numpy_to_vtk(np.full((size * size, 3), 255, np.uint8), deep=1))
-    texture = vtkTexture()
-    texture.SetInputData(image)
-    return texture
 
 
 BASE = dict(NumberOfSlices=128, ShadowMapSize=1024, Jitter=False, BlurRadius=0)
@@ -81,7 +67,7 @@ def main():
         shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
         for key, value in {**BASE, **params}.items():
             if key == "Cookie":
-                shafts.SetCookie(white_cookie())
+                shafts.SetCookie(rh.uniform_cookie())
             else:
                 getattr(shafts, "Set" + key)(value)
         renderer.SetPass(shafts)

@@ -109,3 +109,16 @@ def median_frame_time(window, frames):
         window.WaitForCompletion()
         samples.append(time.perf_counter() - start)
     return statistics.median(samples)
+
+
+def uniform_cookie(size=64, value=255):
+    """A vtkTexture of one uniform grey level (a cookie that changes nothing but the cost)."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkRenderingCore import vtkTexture
+    image = vtkImageData()
+    image.SetDimensions(size, size, 1)
+    image.GetPointData().SetScalars(
+        numpy_to_vtk(np.full((size * size, 3), value, np.uint8), deep=1))
+    texture = vtkTexture()
+    texture.SetInputData(image)
+    return texture
