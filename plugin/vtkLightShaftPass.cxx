@@ -248,6 +248,7 @@ struct LightFrame
   double Far = 1.0;
   glm::dmat4 Projection{ 1.0 };
   glm::dmat4 ViewToLightClip{ 1.0 };
+  glm::dmat4 WorldToLightClip{ 1.0 };
   double RadiantIntensity[3] = { 0.0, 0.0, 0.0 };
   double Exponent = 1.0;
   double Attenuation[3] = { 1.0, 0.0, 0.0 }; // c0, c1, c2 (all zero is treated as no falloff)
@@ -511,6 +512,9 @@ public:
   vtkSmartPointer<vtkOpenGLFramebufferObject> SceneFramebuffer;
   vtkSmartPointer<vtkOpenGLFramebufferObject> WorkFramebuffer;
   vtkSmartPointer<vtkOpenGLFramebufferObject> ShadowFramebuffer;
+
+  // The light camera of the last shadow map (GetLastShadowMap).
+  glm::dmat4 LastWorldToLightClip{ 1.0 };
 
   // The last frame's L_in (full resolution) when InScatterValid.
   vtkTextureObject* FinalInScatter = nullptr;
@@ -1413,7 +1417,8 @@ bool vtkLightShaftPass::Internals::ComputeLightFrame(vtkLightShaftPass& self,
   lightCamera->SetExplicitProjectionTransformMatrix(explicitProjection);
   lightCamera->SetUseExplicitProjectionTransformMatrix(true);
   const glm::dmat4 lightView = FromVTKMatrix(lightCamera->GetViewTransformMatrix());
-  frame.ViewToLightClip = frame.Projection * lightView * glm::inverse(camera.WorldToView);
+  frame.WorldToLightClip = frame.Projection * lightView;
+  frame.ViewToLightClip = frame.WorldToLightClip * glm::inverse(camera.WorldToView);
   return true;
 }
 
@@ -1478,6 +1483,9 @@ bool vtkLightShaftPass::Internals::RenderShadowMap(vtkLightShaftPass& self,
   sceneCamera->UnRegister(&self);
 
   self.LastShadowMapRendered = true;
+  self.LastLightDepthRange[0] = frame.Near;
+  self.LastLightDepthRange[1] = frame.Far;
+  this->LastWorldToLightClip = frame.WorldToLightClip;
   return true;
 }
 
@@ -1945,7 +1953,8 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
     // inside the caster, where no view ray goes.
     const double texelAngle =
       2.0 * std::tan(boundingHalfAngle) / this->ShadowMap.Object->GetWidth();
-    program->SetUniformf("shadowBias", static_cast<float>(2.0 * texelAngle + 1e-4));
+    self.LastShadowBias = static_cast<float>(2.0 * texelAngle + 1e-4);
+    program->SetUniformf("shadowBias", static_cast<float>(self.LastShadowBias));
   }
   if (cookie)
   {
@@ -2249,6 +2258,34 @@ bool vtkLightShaftPass::GetInScatteredRadiance(vtkImageData* out)
     ostate->PopFramebufferBindings();
   }
   out->GetPointData()->SetScalars(radiance);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightShaftPass::GetLastShadowMap(vtkImageData* depths, vtkMatrix4x4* worldToLightClip)
+{
+  Internals& impl = *this->Impl;
+  vtkTextureObject* map = impl.ShadowMap.Object;
+  if (!depths || !worldToLightClip || !this->LastShadowMapRendered || !impl.Window || !map ||
+      !impl.ShadowFramebuffer)
+  {
+    return false;
+  }
+  const int size = static_cast<int>(map->GetWidth());
+  depths->Initialize();
+  depths->SetDimensions(size, size, 1);
+  vtkNew<vtkFloatArray> values;
+  values->SetName("Depth");
+  values->SetNumberOfTuples(static_cast<vtkIdType>(size) * size);
+  impl.Window->MakeCurrent();
+  vtkOpenGLState* ostate = impl.Window->GetState();
+  ostate->PushFramebufferBindings();
+  impl.ShadowFramebuffer->Bind(GL_READ_FRAMEBUFFER);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, size, size, GL_DEPTH_COMPONENT, GL_FLOAT, values->GetPointer(0));
+  ostate->PopFramebufferBindings();
+  depths->GetPointData()->SetScalars(values);
+  ToVTKMatrix(impl.LastWorldToLightClip, worldToLightClip);
   return true;
 }
 

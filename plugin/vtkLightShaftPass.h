@@ -60,6 +60,7 @@
 
 class vtkImageData;
 class vtkLight;
+class vtkMatrix4x4;
 class vtkTexture;
 
 class VTKLIGHTSHAFTS_EXPORT vtkLightShaftPass : public vtkImageProcessingPass
@@ -395,6 +396,18 @@ public:
    * fragment source.
    */
   vtkGetMacro(LastNumberOfShadowCasters, int);
+
+  /**
+   * The last frame's shadow map, for a reference that uses the same visibility
+   * (vtkLightShaftReference::SetVisibilityModeToShadowMap): `depths` gets the depth-buffer
+   * values (float, N x N, 1 = nothing), `worldToLightClip` the light camera's world-to-clip
+   * matrix; GetLastLightDepthRange() and GetLastShadowBias() give its near/far and the relative
+   * depth tolerance of the lookup (lit when w <= stored depth * (1 + bias), nearest texel).
+   * Returns false when the last frame rendered no shadow map.
+   */
+  bool GetLastShadowMap(vtkImageData* depths, vtkMatrix4x4* worldToLightClip);
+  vtkGetVector2Macro(LastLightDepthRange, double);
+  vtkGetMacro(LastShadowBias, double);
   vtkGetMacro(LastNumberOfSceneRenders, int);
   const char* GetLastShaderVariant();
   const char* GetLastSliceShaderSource();
@@ -433,6 +446,8 @@ protected:
   int LastViewportSize[2] = { 0, 0 };
   int LastGLErrorCount = 0;
   int LastNumberOfShadowCasters = 0;
+  double LastLightDepthRange[2] = { 0.0, 0.0 };
+  double LastShadowBias = 0.0;
   int LastNumberOfSceneRenders = 0;
 
 private:

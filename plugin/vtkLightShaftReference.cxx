@@ -3,6 +3,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkGenericCell.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -568,6 +569,56 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
   // VTK 9.1's vtkModifiedBSPTree keeps a scratch cell per tree, so each thread gets its own.
   vtkSMPThreadLocal<std::vector<vtkSmartPointer<vtkModifiedBSPTree>>> threadLocators;
 
+  // SHADOW_MAP visibility: the pass's own depth map and light camera.
+  vtkNew<vtkImageData> shadowDepths;
+  vtkNew<vtkMatrix4x4> worldToLightClip;
+  const bool useShadowMap = this->VisibilityMode == SHADOW_MAP;
+  int shadowSize = 0;
+  const float* shadowTexels = nullptr;
+  double lightNear = 0.0;
+  double lightFar = 0.0;
+  double shadowBias = 0.0;
+  if (useShadowMap)
+  {
+    if (!pass->GetLastShadowMap(shadowDepths, worldToLightClip))
+    {
+      vtkErrorMacro("SHADOW_MAP visibility: the pass rendered no shadow map in its last frame.");
+      return 0;
+    }
+    shadowSize = shadowDepths->GetDimensions()[0];
+    shadowTexels =
+      vtkFloatArray::SafeDownCast(shadowDepths->GetPointData()->GetScalars())->GetPointer(0);
+    lightNear = pass->GetLastLightDepthRange()[0];
+    lightFar = pass->GetLastLightDepthRange()[1];
+    shadowBias = pass->GetLastShadowBias();
+  }
+  auto shadowMapVisible = [&](const Vec& x)
+  {
+    double clip[4];
+    const double point[4] = { x[0], x[1], x[2], 1.0 };
+    worldToLightClip->MultiplyPoint(point, clip);
+    if (clip[3] <= 0.0)
+    {
+      return true;
+    }
+    const double u = clip[0] / clip[3];
+    const double v = clip[1] / clip[3];
+    if (std::abs(u) > 1.0 || std::abs(v) > 1.0)
+    {
+      return true;
+    }
+    const int i = std::min(static_cast<int>((0.5 * u + 0.5) * shadowSize), shadowSize - 1);
+    const int j = std::min(static_cast<int>((0.5 * v + 0.5) * shadowSize), shadowSize - 1);
+    const double stored = shadowTexels[static_cast<size_t>(j) * shadowSize + i];
+    if (stored >= 1.0)
+    {
+      return true;
+    }
+    const double caster = 2.0 * lightNear * lightFar /
+                          ((lightFar + lightNear) - (2.0 * stored - 1.0) * (lightFar - lightNear));
+    return clip[3] <= caster * (1.0 + shadowBias);
+  };
+
   // The camera's pixel-centre rays (independent of VTK's matrices).
   vtkCamera* camera = ren->GetActiveCamera();
   const double* eye = camera->GetPosition();
@@ -674,6 +725,10 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
       };
       auto visible = [&](const Vec& x)
       {
+        if (useShadowMap)
+        {
+          return shadowMapVisible(x);
+        }
         const Vec toLight = model.Light - x;
         const double distance = Norm(toLight);
         const Vec step = (1e-9 * (distance + 1.0) / std::max(distance, 1e-300)) * toLight;
@@ -843,6 +898,7 @@ void vtkLightShaftReference::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Renderer: " << this->Renderer.Get() << "\n";
   os << indent << "LightShaftPass: " << this->Pass.Get() << "\n";
+  os << indent << "VisibilityMode: " << this->VisibilityMode << "\n";
   os << indent << "RelativeTolerance: " << this->RelativeTolerance << "\n";
   os << indent << "VisibilitySamples: " << this->VisibilitySamples << "\n";
   os << indent << "UseClosedForms: " << this->UseClosedForms << "\n";

@@ -24,8 +24,12 @@
  * quadrature's estimated absolute error per pixel, summed over the pieces, double RGB).
  * Pixels run in parallel with vtkSMPTools.
  *
- * Not yet modelled: the pass's cookie and noise (an error is reported when they are on) and a
- * visibility mode using the pass's own shadow map; parallel projection is supported.
+ * Visibility: EXACT (default) as above, or SHADOW_MAP: the depth map the pass rendered in its
+ * last frame, looked up as the pass does (nearest texel, same relative bias), so that comparing
+ * the pass with both references separates the shadow map's error from the integration's.
+ *
+ * Not yet modelled: the pass's cookie and noise (an error is reported when they are on).
+ * Parallel projection is supported.
  *
  * @sa vtkLightShaftPass
  */
@@ -46,6 +50,23 @@ public:
   static vtkLightShaftReference* New();
   vtkTypeMacro(vtkLightShaftReference, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// How V(x) is decided.
+  enum VisibilityModeType
+  {
+    EXACT = 0,     ///< rays to the light against the scene's polygons
+    SHADOW_MAP = 1 ///< the pass's last shadow map, nearest texel
+  };
+
+  ///@{
+  /**
+   * EXACT or SHADOW_MAP (see the class description). Default is EXACT.
+   */
+  vtkSetClampMacro(VisibilityMode, int, EXACT, SHADOW_MAP);
+  vtkGetMacro(VisibilityMode, int);
+  void SetVisibilityModeToExact() { this->SetVisibilityMode(EXACT); }
+  void SetVisibilityModeToShadowMap() { this->SetVisibilityMode(SHADOW_MAP); }
+  ///@}
 
   ///@{
   /**
@@ -106,6 +127,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   vtkMTimeType GetMTime() override;
 
+  int VisibilityMode = EXACT;
   double RelativeTolerance = 1e-9;
   int VisibilitySamples = 32;
   bool UseClosedForms = true;

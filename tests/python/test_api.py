@@ -258,6 +258,12 @@ def test_reference_parameters(messages):
     assert r.GetVisibilitySamples() == 100000
     r.UseClosedFormsOff()
     assert not r.GetUseClosedForms()
+    assert r.GetVisibilityMode() == vtkLightShaftReference.EXACT
+    r.SetVisibilityModeToShadowMap()
+    assert r.GetVisibilityMode() == vtkLightShaftReference.SHADOW_MAP
+    r.SetVisibilityMode(7)
+    assert r.GetVisibilityMode() == vtkLightShaftReference.SHADOW_MAP
+    r.SetVisibilityModeToExact()
     log = messages(r)
     r.SetRelativeTolerance(math.nan)
     assert r.GetRelativeTolerance() == 1e-14

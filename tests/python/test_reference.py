@@ -134,3 +134,61 @@ def test_unmodelled_features_are_reported(messages):
     reference.SetLightShaftPass(shafts)
     reference.Update()
     assert any("noise" in e for e in log.errors)
+
+
+def test_shadow_map_visibility_separates_shadow_map_error():
+    # A coarse shadow map (16^2): the pass is far from the exact reference near the sphere's
+    # shadow (3.3% measured), close to the reference that uses its own shadow map (0.08%: the
+    # integration error, the same as with a 2048^2 map).
+    renderer, window, info, shafts = scene(200, 150)
+    shafts.SetNumberOfSlices(512)
+    shafts.JitterOff()
+    shafts.SetBlurRadius(0)
+    shafts.SetShadowMapSize(16)
+    window.Render()
+    assert shafts.GetLastShadowMapRendered()
+    measured = rh.in_scatter(shafts)
+    exact, _, _ = cpp_reference(renderer, shafts)
+    same_map, _, reference = cpp_reference(renderer, shafts, VisibilityMode=1,
+                                           VisibilitySamples=256)
+    assert reference.GetVisibilityMode() == vtkLightShaftReference.SHADOW_MAP
+    error_exact, _ = ref.relative_rms_error(measured, exact)
+    error_same_map, _ = ref.relative_rms_error(measured, same_map)
+    assert error_exact > 0.02
+    assert error_same_map < 0.1 * error_exact
+    assert error_same_map < 0.005
+
+
+def test_shadow_map_visibility_needs_a_shadow_map(messages):
+    renderer, window, info, shafts = scene(40, 30)
+    shafts.SetScatteringCoefficient(0.0)  # nothing scatters: no shadow map is rendered
+    window.Render()
+    reference = vtkLightShaftReference()
+    log = messages(reference)
+    reference.SetRenderer(renderer)
+    reference.SetLightShaftPass(shafts)
+    reference.SetVisibilityModeToShadowMap()
+    reference.Update()
+    assert any("shadow map" in e for e in log.errors)
+
+
+@pytest.mark.parametrize("offset", [1e-3, 1e-6])
+def test_closed_forms_near_the_light_line(offset):
+    # gamma -> 0 and h -> 0: the centre pixel's ray passes `offset` from the light (odd image
+    # size, camera aimed just beside the light). Closed form and quadrature agree per pixel.
+    renderer, window, info, shafts = scene(41, 31, sphere=False, sigma_s=(0.05,) * 3,
+                                           sigma_a=(0.01, 0.0, 0.02))
+    info.light.SetAttenuationValues(0.0, 0.0, 1.0)
+    info.light.SetExponent(0.0)
+    renderer.RemoveActor(info.actors[1])
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(0.5, 6.0, 10.0)
+    camera.SetFocalPoint(0.5 + offset, 6.0, 0.0)
+    window.Render()
+    closed, _, reference = cpp_reference(renderer, shafts, RelativeTolerance=1e-12)
+    quadrature, _, _ = cpp_reference(renderer, shafts, UseClosedForms=False,
+                                     RelativeTolerance=1e-12)
+    assert np.all(np.isfinite(closed)) and np.all(np.isfinite(quadrature))
+    lit = quadrature > 0
+    assert lit.sum() > 100
+    assert np.max(np.abs(closed[lit] / quadrature[lit] - 1.0)) < 1e-7
