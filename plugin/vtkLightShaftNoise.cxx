@@ -1,5 +1,10 @@
 #include "vtkLightShaftNoise.h"
 
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
+#include "vtkTexture.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -93,4 +98,43 @@ void vtkLightShaftNormalizeNoise(std::vector<float>& texels)
   {
     value = mean > 0.0 ? static_cast<float>(value / mean) : 1.0f;
   }
+}
+
+bool vtkLightShaftImageToRGB(vtkTexture* texture, std::vector<float>& rgb, int& width, int& height)
+{
+  if (!texture)
+  {
+    return false;
+  }
+  if (texture->GetNumberOfInputPorts() > 0 && texture->GetNumberOfInputConnections(0) > 0)
+  {
+    texture->GetInputAlgorithm()->Update();
+  }
+  auto* image = vtkImageData::SafeDownCast(texture->GetInputDataObject(0, 0));
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  if (!scalars || scalars->GetNumberOfTuples() == 0)
+  {
+    return false;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  width = dims[0];
+  height = dims[1];
+  if (width < 1 || height < 1 || scalars->GetNumberOfTuples() < vtkIdType(width) * height)
+  {
+    return false;
+  }
+  const int components = scalars->GetNumberOfComponents();
+  const double scale = scalars->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+  rgb.resize(static_cast<size_t>(width) * height * 3);
+  for (vtkIdType i = 0; i < vtkIdType(width) * height; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const int source = (components >= 3) ? c : 0; // grey (+ alpha) images: grey in R, G, B
+      const double value = scalars->GetComponent(i, source) * scale;
+      rgb[i * 3 + c] = static_cast<float>(std::isfinite(value) ? std::max(value, 0.0) : 0.0);
+    }
+  }
+  return true;
 }

@@ -8,6 +8,8 @@
 
 #include <vector> // For the returned texels
 
+class vtkTexture;
+
 /**
  * A size x size tile of fractal gradient noise (octaves of Perlin-style noise whose lattice
  * periods divide the tile, so the tile repeats seamlessly), remapped to non-negative values of
@@ -21,5 +23,13 @@ std::vector<float> vtkLightShaftTileableNoise(int size, int octaves, unsigned in
  * ones. Used for noise images given by the user.
  */
 void vtkLightShaftNormalizeNoise(std::vector<float>& texels);
+
+/**
+ * A texture's input image (any scalar type, 1-4 components) as RGB floats, row 0 at the bottom;
+ * 8-bit images map 255 to 1, others are used as they are (clamped to >= 0). Grey images fill
+ * R, G and B. Returns false when there is no usable image. Shared by vtkLightShaftPass and
+ * vtkLightShaftReference so both read cookies and noise images the same way.
+ */
+bool vtkLightShaftImageToRGB(vtkTexture* texture, std::vector<float>& rgb, int& width, int& height);
 
 #endif

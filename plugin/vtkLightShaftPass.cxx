@@ -383,47 +383,6 @@ bool AnyPositive(const double v[3])
   return v[0] > 0.0 || v[1] > 0.0 || v[2] > 0.0;
 }
 
-// An image (any scalar type, 1-4 components) as RGB floats, row 0 at the bottom; 8-bit images
-// map 255 to 1. Returns false when there is no usable image.
-bool ImageToRGB(vtkTexture* texture, std::vector<float>& rgb, int& width, int& height)
-{
-  if (!texture)
-  {
-    return false;
-  }
-  if (texture->GetNumberOfInputPorts() > 0 && texture->GetNumberOfInputConnections(0) > 0)
-  {
-    texture->GetInputAlgorithm()->Update();
-  }
-  auto* image = vtkImageData::SafeDownCast(texture->GetInputDataObject(0, 0));
-  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
-  if (!scalars || scalars->GetNumberOfTuples() == 0)
-  {
-    return false;
-  }
-  int dims[3];
-  image->GetDimensions(dims);
-  width = dims[0];
-  height = dims[1];
-  if (width < 1 || height < 1 || scalars->GetNumberOfTuples() < vtkIdType(width) * height)
-  {
-    return false;
-  }
-  const int components = scalars->GetNumberOfComponents();
-  const double scale = scalars->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
-  rgb.resize(static_cast<size_t>(width) * height * 3);
-  for (vtkIdType i = 0; i < vtkIdType(width) * height; ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const int source = (components >= 3) ? c : 0; // grey (+ alpha) images: grey in R, G, B
-      const double value = scalars->GetComponent(i, source) * scale;
-      rgb[i * 3 + c] = static_cast<float>(std::isfinite(value) ? std::max(value, 0.0) : 0.0);
-    }
-  }
-  return true;
-}
-
 // A mipmapped, linearly filtered texture from float texels (1 or 3 components).
 void UploadMipmapped(vtkSmartPointer<vtkTextureObject>& texture,
   vtkOpenGLRenderWindow* window,
@@ -1506,7 +1465,7 @@ bool vtkLightShaftPass::Internals::ReadyCookie(vtkLightShaftPass& self)
   std::vector<float> rgb;
   int width = 0;
   int height = 0;
-  if (!ImageToRGB(cookie, rgb, width, height))
+  if (!vtkLightShaftImageToRGB(cookie, rgb, width, height))
   {
     if (!this->WarnedCookie)
     {
@@ -1534,7 +1493,7 @@ bool vtkLightShaftPass::Internals::ReadyNoise(vtkLightShaftPass& self)
     std::vector<float> rgb;
     int width = 0;
     int height = 0;
-    if (ImageToRGB(this->NoiseImage, rgb, width, height))
+    if (vtkLightShaftImageToRGB(this->NoiseImage, rgb, width, height))
     {
       std::vector<float> texels(static_cast<size_t>(width) * height);
       for (size_t i = 0; i < texels.size(); ++i)

@@ -10,6 +10,7 @@
 #include "vtkInformationVector.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkLightShaftNoise.h"
 #include "vtkLightShaftPass.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
@@ -171,6 +172,114 @@ struct Model
   int Phase = vtkLightShaftPass::ISOTROPIC;
   double Anisotropy = 0.0;
 
+  // The light camera as vtkLightShaftPass builds it, for cookie and noise coordinates.
+  Vec Right{ 1.0, 0.0, 0.0 };
+  Vec Up{ 0.0, 1.0, 0.0 };
+  double SquareTangent = 1.0; // tan of the (clamped) cone half-angle
+  std::vector<float> Cookie;  // RGB, row 0 at the bottom; empty: no cookie
+  int CookieWidth = 0;
+  int CookieHeight = 0;
+  std::vector<float> Noise; // mean 1, tiled; empty: homogeneous
+  int NoiseWidth = 0;
+  int NoiseHeight = 0;
+  double NoiseAmplitude = 0.0;
+  double NoiseScale = 1.0;
+  double NoiseShift[4] = { 0.0, 0.0, 0.0, 0.0 };
+
+  // Bilinear lookup as GL does it (texel centres at (i + 0.5) / size), clamped or repeated.
+  static double Lookup(const std::vector<float>& texels,
+    int width,
+    int height,
+    int components,
+    int component,
+    double u,
+    double v,
+    bool repeat)
+  {
+    double x = u * width - 0.5;
+    double y = v * height - 0.5;
+    if (!repeat)
+    {
+      x = std::min(std::max(x, 0.0), width - 1.0);
+      y = std::min(std::max(y, 0.0), height - 1.0);
+    }
+    const double fx = std::floor(x);
+    const double fy = std::floor(y);
+    const double ax = x - fx;
+    const double ay = y - fy;
+    auto texel = [&](long i, long j)
+    {
+      if (repeat)
+      {
+        i = ((i % width) + width) % width;
+        j = ((j % height) + height) % height;
+      }
+      else
+      {
+        i = std::min(std::max(i, 0L), static_cast<long>(width) - 1);
+        j = std::min(std::max(j, 0L), static_cast<long>(height) - 1);
+      }
+      return static_cast<double>(
+        texels[(static_cast<size_t>(j) * width + i) * components + component]);
+    };
+    const long i0 = static_cast<long>(fx);
+    const long j0 = static_cast<long>(fy);
+    return (1.0 - ay) * ((1.0 - ax) * texel(i0, j0) + ax * texel(i0 + 1, j0)) +
+           ay * ((1.0 - ax) * texel(i0, j0 + 1) + ax * texel(i0 + 1, j0 + 1));
+  }
+
+  // Cookie colour times noise density at x (1 when neither is in use).
+  RGB Modulation(const Vec& x) const
+  {
+    RGB out{ 1.0, 1.0, 1.0 };
+    if (this->Cookie.empty() && this->Noise.empty())
+    {
+      return out;
+    }
+    const Vec d = x - this->Light;
+    const double depth = Dot(d, this->Axis);
+    if (depth <= 0.0)
+    {
+      return out;
+    }
+    const double u = 0.5 * Dot(d, this->Right) / (depth * this->SquareTangent) + 0.5;
+    const double v = 0.5 * Dot(d, this->Up) / (depth * this->SquareTangent) + 0.5;
+    if (!this->Cookie.empty())
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        out[c] = Lookup(this->Cookie, this->CookieWidth, this->CookieHeight, 3, c, u, v, false);
+      }
+    }
+    if (!this->Noise.empty())
+    {
+      const double s1 = this->NoiseScale;
+      const double s2 = 1.37 * this->NoiseScale;
+      const double n1 = Lookup(this->Noise,
+        this->NoiseWidth,
+        this->NoiseHeight,
+        1,
+        0,
+        u * s1 + this->NoiseShift[0],
+        v * s1 + this->NoiseShift[1],
+        true);
+      const double n2 = Lookup(this->Noise,
+        this->NoiseWidth,
+        this->NoiseHeight,
+        1,
+        0,
+        u * s2 + this->NoiseShift[2],
+        v * s2 + this->NoiseShift[3],
+        true);
+      const double density = 1.0 + this->NoiseAmplitude * (n1 * n2 - 1.0);
+      for (double& channel : out)
+      {
+        channel *= density;
+      }
+    }
+    return out;
+  }
+
   double PhaseValue(double cosTheta) const
   {
     switch (this->Phase)
@@ -214,9 +323,11 @@ struct Model
     const double a =
       1.0 / (this->Attenuation[0] + r * (this->Attenuation[1] + this->Attenuation[2] * r));
     const double scalar = this->PhaseValue(-Dot(dir, lightDir)) * spot * a;
+    const RGB modulation = this->Modulation(x);
     for (int c = 0; c < 3; ++c)
     {
-      out[c] = this->SigmaS[c] * this->Intensity[c] * scalar * std::exp(-this->SigmaT[c] * (r + t));
+      out[c] = this->SigmaS[c] * this->Intensity[c] * scalar * modulation[c] *
+               std::exp(-this->SigmaT[c] * (r + t));
     }
     return out;
   }
@@ -457,11 +568,6 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
     vtkErrorMacro("SetRenderer and SetLightShaftPass are required.");
     return 0;
   }
-  if (pass->GetCookie() || pass->GetNoiseAmplitude() > 0.0)
-  {
-    vtkErrorMacro("The reference does not model the cookie or the noise yet.");
-    return 0;
-  }
   const int width = std::max(ren->GetSize()[0], 1);
   const int height = std::max(ren->GetSize()[1], 1);
   output->SetExtent(0, width - 1, 0, height - 1, 0, 0);
@@ -520,6 +626,50 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
   }
   model.Phase = pass->GetPhaseFunction();
   model.Anisotropy = pass->GetAnisotropy();
+
+  // Cookie and noise, read and laid out as the pass reads and lays them out (level 0 of their
+  // textures, bilinear; the pass pre-filters by footprint, which differs only where the texture
+  // varies within a pixel's footprint).
+  const Vec lightUp = std::abs(model.Axis[1]) < 0.99 ? Vec{ 0.0, 1.0, 0.0 } : Vec{ 1.0, 0.0, 0.0 };
+  model.Right = Normalized(Cross(model.Axis, lightUp));
+  model.Up = Cross(model.Right, model.Axis);
+  model.SquareTangent = std::tan(
+    std::min(vtkMath::RadiansFromDegrees(light->GetConeAngle()), vtkMath::Pi() * 89.9 / 180.0));
+  if (pass->GetCookie() &&
+      !vtkLightShaftImageToRGB(
+        pass->GetCookie(), model.Cookie, model.CookieWidth, model.CookieHeight))
+  {
+    model.Cookie.clear(); // the pass ignores an empty cookie too
+  }
+  if (pass->GetNoiseAmplitude() > 0.0)
+  {
+    std::vector<float> rgb;
+    if (pass->GetNoiseTexture() &&
+        vtkLightShaftImageToRGB(pass->GetNoiseTexture(), rgb, model.NoiseWidth, model.NoiseHeight))
+    {
+      model.Noise.resize(static_cast<size_t>(model.NoiseWidth) * model.NoiseHeight);
+      for (size_t i = 0; i < model.Noise.size(); ++i)
+      {
+        model.Noise[i] = rgb[3 * i];
+      }
+      vtkLightShaftNormalizeNoise(model.Noise);
+    }
+    else
+    {
+      model.NoiseWidth = model.NoiseHeight = 256; // the pass's generated noise
+      model.Noise = vtkLightShaftTileableNoise(256, 5, 2004u);
+    }
+    model.NoiseAmplitude = pass->GetNoiseAmplitude();
+    model.NoiseScale = pass->GetNoiseScale();
+    const double* v1 = pass->GetNoiseVelocity1();
+    const double* v2 = pass->GetNoiseVelocity2();
+    const double time = pass->GetTime();
+    auto wrap = [](double value) { return value - std::floor(value); };
+    model.NoiseShift[0] = wrap(v1[0] * time);
+    model.NoiseShift[1] = wrap(v1[1] * time);
+    model.NoiseShift[2] = wrap(v2[0] * time + 0.37);
+    model.NoiseShift[3] = wrap(v2[1] * time + 0.61);
+  }
 
   // The opaque polygonal props, in world coordinates, for surfaces and shadows: one mesh and
   // bounding box per prop (the boxes reject most queries before any tree is searched).
@@ -637,9 +787,10 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
 
   const double tolerance = this->RelativeTolerance;
   const int samples = this->VisibilitySamples;
-  const bool closedForms = this->UseClosedForms && model.Attenuation[0] == 0.0 &&
-                           model.Attenuation[1] == 0.0 && model.Attenuation[2] > 0.0 &&
-                           model.Exponent == 0.0 && model.Phase == vtkLightShaftPass::ISOTROPIC;
+  const bool closedForms = this->UseClosedForms && model.Cookie.empty() && model.Noise.empty() &&
+                           model.Attenuation[0] == 0.0 && model.Attenuation[1] == 0.0 &&
+                           model.Attenuation[2] > 0.0 && model.Exponent == 0.0 &&
+                           model.Phase == vtkLightShaftPass::ISOTROPIC;
   std::atomic<vtkIdType> closedFormPixels(0);
   vtkSMPThreadLocalObject<vtkGenericCell> cells;
   double* radianceOut = radiance->GetPointer(0);
