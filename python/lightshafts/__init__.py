@@ -10,9 +10,11 @@ import vtkmodules.vtkCommonExecutionModel  # noqa: F401
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 import vtkmodules.vtkRenderingCore  # noqa: F401
 
-from .vtkLightShafts import vtkLightShaftPass, vtkLightShaftReference  # noqa: F401
+from .vtkLightShafts import (  # noqa: F401
+    vtkLightShaftFetchFloor, vtkLightShaftPass, vtkLightShaftReference)
 
-__all__ = ["vtkLightShaftPass", "vtkLightShaftReference", "write_png", "show_or_save"]
+__all__ = ["vtkLightShaftPass", "vtkLightShaftReference", "vtkLightShaftFetchFloor", "write_png",
+           "show_or_save"]
 
 
 def write_png(window, filename):

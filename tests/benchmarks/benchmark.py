@@ -14,6 +14,12 @@ sigma 1.5, K1 0.01, K2 0.03, population covariance) after one fixed tone map
 x -> 1 - exp(-x / m), m the reference's 99th percentile. Settings whose medium the reference
 does not model (cookie, noise) get no error columns.
 
+The fetch floor (vtkLightShaftFetchFloor): for the slice-count settings and the presets, a
+trivial full-screen shader doing as many texture fetches per pixel as the slabs do (two per slab
+and covered in-scatter pixel: scene depth and shadow map, averaged over the screen); the column
+"slab cost / fetch floor" is (pass time - time without the pass) / fetch-floor time, so 1 would
+mean the slabs cost no more than their fetches.
+
 Writes benchmark.csv, benchmark.md and images/pareto.png into --output-dir. --smoke runs a
 tiny version (one scene, three settings, 2 frames) for the test suite.
 """
@@ -32,7 +38,8 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
 import render_helpers as rh  # noqa: E402
-from lightshafts import scenes, vtkLightShaftPass, vtkLightShaftReference  # noqa: E402
+from lightshafts import (  # noqa: E402
+    scenes, vtkLightShaftFetchFloor, vtkLightShaftPass, vtkLightShaftReference)
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 SCENES = {
@@ -149,7 +156,7 @@ def main():
     if args.smoke:
         args.size, args.frames = (96, 72), 2
         scene_names = scene_names[:1]
-        settings = [SETTINGS[1], SETTINGS[11], SETTINGS[17]]
+        settings = [SETTINGS[1], SETTINGS[11], SETTINGS[17], SETTINGS[19]]
     os.makedirs(os.path.join(args.output_dir, "images"), exist_ok=True)
 
     rows = []
@@ -167,7 +174,16 @@ def main():
             assert shafts.GetLastGLErrorCount() == 0
             row = dict(scene=name, family=family, setting=label, time_ratio=ratio,
                        plain_ms=1000 * plain, slabs=shafts.GetLastNumberOfSlicesDrawn(),
-                       rmse="", relative_rmse="", psnr_db="", ssim="")
+                       rmse="", relative_rmse="", psnr_db="", ssim="", fetches_per_pixel="",
+                       over_fetch_floor="")
+            if family in ("slices", "presets"):
+                lit = float(np.mean(rh.in_scatter(shafts).max(axis=-1) > 0.0))
+                factor = shafts.GetDownsampleFactor()
+                fetches = int(round(2 * row["slabs"] * lit / (factor * factor)))
+                floor = vtkLightShaftFetchFloor().Measure(window, *args.size, fetches,
+                                                          args.frames)
+                row["fetches_per_pixel"] = fetches
+                row["over_fetch_floor"] = (ratio - 1.0) * plain / floor if floor > 0 else ""
             if "Cookie" not in params and "NoiseAmplitude" not in params:
                 if reference is None:
                     reference = reference_image(renderer, shafts)
@@ -196,15 +212,19 @@ def main():
         scene_rows = [r for r in rows if r["scene"] == name]
         lines += [f"## {name} ({args.size[0]}x{args.size[1]}, without the pass "
                   f"{scene_rows[0]['plain_ms']:.1f} ms)", "",
-                  "| setting | time ratio | relative RMSE | RMSE | PSNR (dB) | SSIM | slabs |",
-                  "|---|---:|---:|---:|---:|---:|---:|"]
+                  "| setting | time ratio | relative RMSE | RMSE | PSNR (dB) | SSIM | slabs | "
+                  "fetches per pixel | slab cost / fetch floor |",
+                  "|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
         for r in scene_rows:
             if r["relative_rmse"] == "":
                 errors = "— | — | — | —"
             else:
                 errors = (f"{100 * r['relative_rmse']:.2f}% | {r['rmse']:.2e} | "
                           f"{r['psnr_db']:.1f} | {r['ssim']:.4f}")
-            lines.append(f"| {r['setting']} | {r['time_ratio']:.2f} | {errors} | {r['slabs']} |")
+            floor = (f"{r['fetches_per_pixel']} | {r['over_fetch_floor']:.1f}"
+                     if r["over_fetch_floor"] != "" else "— | —")
+            lines.append(f"| {r['setting']} | {r['time_ratio']:.2f} | {errors} | {r['slabs']} | "
+                         f"{floor} |")
         lines.append("")
     lines += [f"Machine: {platform.machine()}, {os.cpu_count()} cores, Mesa llvmpipe (software "
               "OpenGL) under Xvfb; only the ratios carry over to other machines.", "",

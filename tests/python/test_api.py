@@ -271,3 +271,15 @@ def test_reference_parameters(messages):
     # Without a renderer and a pass, Update() reports the missing inputs.
     r.Update()
     assert any("SetRenderer" in e for e in log.errors)
+
+
+def test_fetch_floor_measures_more_for_more_fetches():
+    import render_helpers as rh
+    from lightshafts import vtkLightShaftFetchFloor
+    renderer, window = rh.make_window(64, 48)
+    window.Render()
+    floor = vtkLightShaftFetchFloor()
+    few = floor.Measure(window, 256, 256, 1, 3)
+    many = floor.Measure(window, 256, 256, 400, 3)
+    assert 0.0 < few < many
+    assert floor.Measure(None, 16, 16, 1, 1) == -1.0

@@ -15,7 +15,8 @@ def test_benchmark_smoke(tmp_path):
     assert result.returncode == 0, result.stderr
     with open(tmp_path / "benchmark.csv") as f:
         rows = list(csv.DictReader(f))
-    assert len(rows) == 3
+    assert len(rows) == 4
+    assert any(r["over_fetch_floor"] for r in rows)  # the fetch floor was measured
     for row in rows:
         assert float(row["time_ratio"]) > 0.0
     measured = [r for r in rows if r["relative_rmse"]]
