@@ -28,6 +28,8 @@
  * last frame, looked up as the pass does (nearest texel, same relative bias), so that comparing
  * the pass with both references separates the shadow map's error from the integration's.
  *
+ * No regularisation of A(r) near the light, as in the pass: both integrate the model exactly.
+ *
  * The pass's cookie and noise density are modelled (level 0 of their images, bilinear, laid out
  * as the pass lays them out). Parallel projection is supported.
  *
