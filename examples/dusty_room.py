@@ -14,7 +14,7 @@ import os
 import vtkmodules.vtkInteractionStyle  # noqa: F401
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 from vtkmodules.vtkRenderingCore import (
-    vtkLight, vtkRenderWindow, vtkRenderer, vtkWindowToImageFilter)
+    vtkRenderWindow, vtkRenderer, vtkWindowToImageFilter)
 
 from lightshafts import scenes, vtkLightShaftPass, write_png
 
@@ -47,10 +47,7 @@ def main():
     window.SetMultiSamples(0)
     window.SetOffScreenRendering(1)
     scenes.window_room(renderer)
-    fill = vtkLight()
-    fill.SetLightTypeToHeadlight()
-    fill.SetIntensity(0.12)
-    renderer.AddLight(fill)
+    scenes.add_fill_light(renderer, 0.12)
 
     shafts = vtkLightShaftPass()
     shafts.SetScatteringCoefficient(0.06, 0.057, 0.052)

@@ -14,7 +14,7 @@ import vtkmodules.vtkInteractionStyle  # noqa: F401
 import vtkmodules.vtkRenderingFreeType  # noqa: F401  (text for the title)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 from vtkmodules.vtkRenderingCore import (
-    vtkLight, vtkRenderWindow, vtkRenderer, vtkTextActor)
+    vtkRenderWindow, vtkRenderer, vtkTextActor)
 
 from lightshafts import scenes, show_or_save, vtkLightShaftPass
 
@@ -34,10 +34,7 @@ def main():
     window.SetSize(*args.size)
     window.SetMultiSamples(0)
     scenes.isosurface(renderer, iso_value=args.iso)
-    fill = vtkLight()
-    fill.SetLightTypeToHeadlight()
-    fill.SetIntensity(0.2)
-    renderer.AddLight(fill)
+    scenes.add_fill_light(renderer, 0.2)
     title = vtkTextActor()
     title.SetInput(f"Wavelet isosurface {args.iso:g}")
     title.GetTextProperty().SetFontSize(22)

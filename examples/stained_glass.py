@@ -18,7 +18,7 @@ from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkIOImage import vtkImageReader2Factory
 from vtkmodules.vtkRenderingCore import (
-    vtkLight, vtkRenderWindow, vtkRenderer, vtkTexture)
+    vtkRenderWindow, vtkRenderer, vtkTexture)
 
 from lightshafts import scenes, show_or_save, vtkLightShaftPass
 
@@ -70,10 +70,7 @@ def main():
     info = scenes.window_room(renderer)
     info.light.SetColor(1.0, 1.0, 1.0)
     info.light.SetIntensity(1.6)
-    fill = vtkLight()
-    fill.SetLightTypeToHeadlight()
-    fill.SetIntensity(0.1)
-    renderer.AddLight(fill)
+    scenes.add_fill_light(renderer, 0.1)
 
     shafts = vtkLightShaftPass()
     shafts.SetScatteringCoefficient(0.05)

@@ -13,7 +13,7 @@ import argparse
 import vtkmodules.vtkInteractionStyle  # noqa: F401  (default interactor style)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL back end)
 from vtkmodules.vtkRenderingCore import (
-    vtkLight, vtkRenderWindow, vtkRenderer)
+    vtkRenderWindow, vtkRenderer)
 
 from lightshafts import scenes, show_or_save, vtkLightShaftPass
 
@@ -33,10 +33,7 @@ def main():
     window.SetSize(*args.size)
     window.SetMultiSamples(0)
     scenes.window_room(renderer)
-    fill = vtkLight()  # a dim headlight so the room is not pitch black (it makes no shafts)
-    fill.SetLightTypeToHeadlight()
-    fill.SetIntensity(0.12)
-    renderer.AddLight(fill)
+    scenes.add_fill_light(renderer, 0.12)
 
     shafts = vtkLightShaftPass()
     shafts.SetScatteringCoefficient(0.05, 0.047, 0.043)  # per world unit

@@ -44,6 +44,15 @@ def add_spotlight(renderer, position, focal_point, cone_angle=30.0, intensity=1.
     return light
 
 
+def add_fill_light(renderer, intensity=0.12):
+    """A dim headlight so a room is not pitch black; it is no spotlight, so it makes no shafts."""
+    light = vtkLight()
+    light.SetLightTypeToHeadlight()
+    light.SetIntensity(intensity)
+    renderer.AddLight(light)
+    return light
+
+
 def sphere_and_floor(renderer, sphere_resolution=256, floor_half_size=6.0):
     """A spotlight above a sphere over a square floor: the core test scene.
 

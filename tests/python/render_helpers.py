@@ -35,6 +35,23 @@ def make_window(width=320, height=240):
     return renderer, window
 
 
+def plain_slab_pass(sigma_s=(0.05, 0.04, 0.03), sigma_a=(0.01, 0.01, 0.01), slices=256,
+                    shadow_map=2048, **params):
+    """A vtkLightShaftPass measuring the slab integration itself (no jitter, no blur), then
+    Set<name>(value) for each keyword."""
+    from lightshafts import vtkLightShaftPass
+    shafts = vtkLightShaftPass()
+    shafts.SetScatteringCoefficient(*sigma_s)
+    shafts.SetAbsorptionCoefficient(*sigma_a)
+    shafts.SetNumberOfSlices(slices)
+    shafts.SetShadowMapSize(shadow_map)
+    shafts.JitterOff()
+    shafts.SetBlurRadius(0)
+    for name, value in params.items():
+        getattr(shafts, "Set" + name)(value)
+    return shafts
+
+
 def in_scatter(shaft_pass):
     """The pass's last L_in as (height, width, 3), row 0 at the bottom."""
     image = vtkImageData()

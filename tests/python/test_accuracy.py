@@ -30,15 +30,9 @@ def render_scene(width=320, height=240, prepare=None, **params):
     change the light, camera or pass before the first frame."""
     renderer, window = rh.make_window(width, height)
     info = scenes.sphere_and_floor(renderer)
-    shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
-    shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
-    shafts.SetNumberOfSlices(HIGH_SLICES)
-    shafts.SetShadowMapSize(HIGH_SHADOW_MAP)
-    shafts.JitterOff()  # measure the slab integration itself (the default blur would hide it)
-    shafts.SetBlurRadius(0)
-    for name, value in params.items():
-        getattr(shafts, "Set" + name)(value)
+    # The slab integration itself (the default blur would hide it).
+    shafts = rh.plain_slab_pass(sigma_a=(0.02, 0.01, 0.03), slices=HIGH_SLICES,
+                                shadow_map=HIGH_SHADOW_MAP, **params)
     if prepare:
         prepare(renderer, info, shafts)
         renderer.ResetCameraClippingRange()

@@ -16,15 +16,7 @@ import render_helpers as rh
 def render(width=160, height=120, prepare=None, **params):
     renderer, window = rh.make_window(width, height)
     info = scenes.sphere_and_floor(renderer, sphere_resolution=128)
-    shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
-    shafts.SetAbsorptionCoefficient(0.01)
-    shafts.SetNumberOfSlices(256)
-    shafts.SetShadowMapSize(2048)
-    shafts.JitterOff()  # the slab integration itself
-    shafts.SetBlurRadius(0)
-    for name, value in params.items():
-        getattr(shafts, "Set" + name)(value)
+    shafts = rh.plain_slab_pass(**params)
     if prepare:
         prepare(renderer, info, shafts)
         renderer.ResetCameraClippingRange()

@@ -36,16 +36,8 @@ def half_black(size=64):
 def shaft_scene(width=240, height=180, **params):
     renderer, window = rh.make_window(width, height)
     info = scenes.sphere_and_floor(renderer, sphere_resolution=128)
-    shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
-    shafts.SetAbsorptionCoefficient(0.01)
-    shafts.SetExposure(40.0)
-    shafts.SetNumberOfSlices(256)
-    shafts.SetShadowMapSize(2048)
-    shafts.JitterOff()  # each test turns on what it tests
-    shafts.SetBlurRadius(0)
-    for name, value in params.items():
-        getattr(shafts, "Set" + name)(value)
+    # Plain slabs: each test turns on what it tests.
+    shafts = rh.plain_slab_pass(**{"Exposure": 40.0, **params})
     renderer.SetPass(shafts)
     window.Render()
     return renderer, window, info, shafts
