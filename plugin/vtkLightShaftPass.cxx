@@ -331,20 +331,43 @@ struct OwnedTexture
   }
 };
 
+std::string JoinDefines(const std::vector<std::string>& defines)
+{
+  std::string features;
+  for (const auto& define : defines)
+  {
+    features += "#define " + define + "\n";
+  }
+  return features;
+}
+
+std::string WithFeatures(const char* source, const std::vector<std::string>& defines)
+{
+  std::string out = source;
+  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Features", JoinDefines(defines));
+  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Common", vtkLightShaftCommon);
+  return out;
+}
+
 /**
- * A full-screen pass, rebuilt only when its fragment source (its feature variant) changes.
+ * A full-screen pass, rebuilt only when its feature variant (its #defines) changes; the source
+ * is assembled only then.
  */
 struct FullScreenPass
 {
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
-  std::string Source;
+  std::string Key;
 
-  vtkShaderProgram* Ready(vtkOpenGLRenderWindow* window, const std::string& fragment)
+  vtkShaderProgram* Ready(vtkOpenGLRenderWindow* window,
+    const char* source,
+    const std::vector<std::string>& defines = {})
   {
-    if (!this->Quad || this->Source != fragment)
+    const std::string key = JoinDefines(defines);
+    if (!this->Quad || this->Key != key)
     {
+      const std::string fragment = WithFeatures(source, defines);
       this->Quad.reset(new vtkOpenGLQuadHelper(window, nullptr, fragment.c_str(), ""));
-      this->Source = fragment;
+      this->Key = key;
     }
     else
     {
@@ -361,22 +384,9 @@ struct FullScreenPass
       this->Quad->ReleaseGraphicsResources(w);
     }
     this->Quad.reset();
-    this->Source.clear();
+    this->Key.clear();
   }
 };
-
-std::string WithFeatures(const char* source, const std::vector<std::string>& defines)
-{
-  std::string features;
-  for (const auto& define : defines)
-  {
-    features += "#define " + define + "\n";
-  }
-  std::string out = source;
-  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Features", features);
-  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Common", vtkLightShaftCommon);
-  return out;
-}
 
 bool AnyPositive(const double v[3])
 {
@@ -483,6 +493,7 @@ public:
   // changes.
   vtkShaderProgram* SliceProgram = nullptr;
   std::string SliceSource;
+  std::string SliceKey;
   std::string SliceVariant;
   vtkSmartPointer<vtkOpenGLVertexArrayObject> SliceArray;
   vtkSmartPointer<vtkOpenGLBufferObject> SliceBuffer;
@@ -622,6 +633,7 @@ public:
     this->SliceProgram = nullptr;
     this->SliceArrayProgram = nullptr;
     this->SliceSource.clear();
+    this->SliceKey.clear();
     for (FullScreenPass* p :
       { &this->Composite, &this->DepthDownsample, &this->Resolve, &this->Blur, &this->Upsample })
     {
@@ -1568,21 +1580,23 @@ vtkShaderProgram* vtkLightShaftPass::Internals::ReadySliceProgram(vtkLightShaftP
   }
   const char* accumulation[] = { " accumulate=float32", " accumulate=float16", " accumulate=8bit" };
   variant += accumulation[self.AccumulationPrecision];
-  const std::string fragment = WithFeatures(vtkLightShaftSliceFS, defines);
-
   this->SliceVariant = variant;
   vtkOpenGLShaderCache* cache = this->Window->GetShaderCache();
-  if (this->SliceProgram && fragment == this->SliceSource)
+  const std::string key = JoinDefines(defines);
+  if (this->SliceProgram && key == this->SliceKey)
   {
     return cache->ReadyShaderProgram(this->SliceProgram);
   }
+  const std::string fragment = WithFeatures(vtkLightShaftSliceFS, defines);
   this->SliceProgram = cache->ReadyShaderProgram(vtkLightShaftSliceVS, fragment.c_str(), "");
   this->SliceSource = fragment;
+  this->SliceKey = key;
   if (!this->SliceProgram || !this->SliceProgram->GetCompiled())
   {
     vtkErrorWithObjectMacro(&self, "Could not build the light-shaft slice shader.");
     this->SliceProgram = nullptr;
     this->SliceSource.clear();
+    this->SliceKey.clear();
     return nullptr;
   }
   if (!this->SliceArray)
@@ -1625,7 +1639,7 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
     slabDepth = this->ReducedDepth.Ensure(renWin, TextureKind::Depth, lw, lh);
     this->BindWork(nullptr, slabDepth, lw, lh);
     if (vtkShaderProgram* program =
-          this->DepthDownsample.Ready(renWin, WithFeatures(vtkLightShaftDepthDownsampleFS, {})))
+          this->DepthDownsample.Ready(renWin, vtkLightShaftDepthDownsampleFS))
     {
       ostate->vtkglEnable(GL_DEPTH_TEST);
       ostate->vtkglDepthFunc(GL_ALWAYS);
@@ -1999,8 +2013,7 @@ void vtkLightShaftPass::Internals::PostProcess(vtkLightShaftPass& self,
   {
     vtkTextureObject* resolved = this->Resolved.Ensure(renWin, TextureKind::RGBA32F, lw, lh);
     this->BindWork(resolved, nullptr, lw, lh);
-    if (vtkShaderProgram* program =
-          this->Resolve.Ready(renWin, WithFeatures(vtkLightShaftResolveFS, {})))
+    if (vtkShaderProgram* program = this->Resolve.Ready(renWin, vtkLightShaftResolveFS))
     {
       const char* names[3] = { "accumulatedRed", "accumulatedGreen", "accumulatedBlue" };
       for (int c = 0; c < 3; ++c)
@@ -2021,7 +2034,7 @@ void vtkLightShaftPass::Internals::PostProcess(vtkLightShaftPass& self,
 
   if (self.BlurRadius > 0)
   {
-    vtkShaderProgram* program = this->Blur.Ready(renWin, WithFeatures(vtkLightShaftBlurFS, {}));
+    vtkShaderProgram* program = this->Blur.Ready(renWin, vtkLightShaftBlurFS);
     vtkTextureObject* temporary = this->BlurTemporary.Ensure(renWin, TextureKind::RGBA32F, lw, lh);
     vtkTextureObject* blurred = this->Blurred.Ensure(renWin, TextureKind::RGBA32F, lw, lh);
     if (program)
@@ -2055,8 +2068,7 @@ void vtkLightShaftPass::Internals::PostProcess(vtkLightShaftPass& self,
   {
     vtkTextureObject* upsampled = this->Upsampled.Ensure(renWin, TextureKind::RGBA32F, w, h);
     this->BindWork(upsampled, nullptr, w, h);
-    if (vtkShaderProgram* program =
-          this->Upsample.Ready(renWin, WithFeatures(vtkLightShaftUpsampleFS, {})))
+    if (vtkShaderProgram* program = this->Upsample.Ready(renWin, vtkLightShaftUpsampleFS))
     {
       current->Activate();
       slabDepth->Activate();
@@ -2104,8 +2116,7 @@ void vtkLightShaftPass::Internals::RenderComposite(vtkLightShaftPass& self,
   {
     defines.emplace_back("LIGHTSHAFT_COOKIE_SURFACES");
   }
-  vtkShaderProgram* program =
-    this->Composite.Ready(renWin, WithFeatures(vtkLightShaftCompositeFS, defines));
+  vtkShaderProgram* program = this->Composite.Ready(renWin, vtkLightShaftCompositeFS, defines);
   if (!program)
   {
     vtkErrorWithObjectMacro(&self, "Could not build the light-shaft composite shader.");
