@@ -44,6 +44,8 @@
 #include "vtkLightShaftCompositeFS.h"
 #include "vtkLightShaftDepthDownsampleFS.h"
 #include "vtkLightShaftNoise.h"
+#include "vtkLightShaftOcclusionFS.h"
+#include "vtkLightShaftRadialBlurFS.h"
 #include "vtkLightShaftResolveFS.h"
 #include "vtkLightShaftSliceFS.h"
 #include "vtkLightShaftSliceVS.h"
@@ -444,6 +446,8 @@ public:
   bool WarnedNoLight = false;
   bool WarnedCookie = false;
   bool WarnedNoise = false;
+  bool WarnedAnalyticShadows = false;
+  bool EightBitThisFrame = false;
 
   vtkSmartPointer<vtkTexture> Cookie;
   vtkSmartPointer<vtkTexture> NoiseImage;
@@ -473,6 +477,10 @@ public:
   OwnedTexture Blurred;
   OwnedTexture Upsampled;
   OwnedTexture ShadowMap;
+  OwnedTexture OcclusionMask;
+  OwnedTexture RadialOutput;
+  OwnedTexture GatherTemporary;
+  OwnedTexture Gathered;
   vtkSmartPointer<vtkTextureObject> CookieTexture;
   vtkMTimeType CookieUploadTime = 0;
   vtkSmartPointer<vtkTextureObject> NoiseTexture;
@@ -505,6 +513,8 @@ public:
   FullScreenPass Resolve;
   FullScreenPass Blur;
   FullScreenPass Upsample;
+  FullScreenPass Occlusion;
+  FullScreenPass RadialBlur;
 
   // Track the window whose context holds our GL objects. When it goes away first, free them
   // while its context still exists (at DeleteEvent the window is still whole).
@@ -598,7 +608,11 @@ public:
            &this->BlurTemporary,
            &this->Blurred,
            &this->Upsampled,
-           &this->ShadowMap })
+           &this->ShadowMap,
+           &this->OcclusionMask,
+           &this->RadialOutput,
+           &this->GatherTemporary,
+           &this->Gathered })
     {
       t->Release(w);
     }
@@ -634,8 +648,13 @@ public:
     this->SliceArrayProgram = nullptr;
     this->SliceSource.clear();
     this->SliceKey.clear();
-    for (FullScreenPass* p :
-      { &this->Composite, &this->DepthDownsample, &this->Resolve, &this->Blur, &this->Upsample })
+    for (FullScreenPass* p : { &this->Composite,
+           &this->DepthDownsample,
+           &this->Resolve,
+           &this->Blur,
+           &this->Upsample,
+           &this->Occlusion,
+           &this->RadialBlur })
     {
       p->Release(w);
     }
@@ -689,12 +708,26 @@ public:
     int h);
   bool RenderShadowMap(vtkLightShaftPass& self, const vtkRenderState* s, LightFrame& frame);
   vtkShaderProgram* ReadySliceProgram(vtkLightShaftPass& self,
+    int method,
     bool shadows,
     bool cookie,
     bool noise);
   bool ReadyCookie(vtkLightShaftPass& self);
   bool ReadyNoise(vtkLightShaftPass& self);
+  vtkTextureObject* Gather(vtkLightShaftPass& self,
+    vtkTextureObject* source,
+    const CameraFrame& camera,
+    vtkTextureObject* slabDepth,
+    int lw,
+    int lh);
+  vtkTextureObject* RenderRadialBlur(vtkLightShaftPass& self,
+    const CameraFrame& camera,
+    const LightFrame& light,
+    vtkTextureObject* slabDepth,
+    int lw,
+    int lh);
   void PostProcess(vtkLightShaftPass& self,
+    vtkTextureObject* current,
     const CameraFrame& camera,
     vtkTextureObject* slabDepth,
     int w,
@@ -873,6 +906,40 @@ void vtkLightShaftPass::SetTime(double time)
     std::numeric_limits<double>::max());
 }
 
+void vtkLightShaftPass::SetDecay(double decay)
+{
+  SetClamped(this, "Decay", &this->Decay, { decay }, 0.0, 1.0);
+}
+
+void vtkLightShaftPass::SetDensity(double density)
+{
+  SetClamped(this, "Density", &this->Density, { density }, 0.0, 1.0);
+}
+
+void vtkLightShaftPass::SetWeight(double weight)
+{
+  SetClamped(this, "Weight", &this->Weight, { weight }, 0.0, 1.0);
+}
+
+const char* vtkLightShaftPass::GetMethodName(int method)
+{
+  switch (method)
+  {
+    case SLICES:
+      return "slices";
+    case RAY_MARCH:
+      return "ray-march";
+    case RADIAL_BLUR:
+      return "radial-blur";
+    case ANALYTIC:
+      return "analytic";
+    case AUTOMATIC:
+      return "automatic";
+    default:
+      return "none";
+  }
+}
+
 namespace
 {
 void ApplyQuality(vtkLightShaftPass* pass,
@@ -1020,6 +1087,8 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   this->LastShadowMapRendered = false;
   this->LastNumberOfShadowCasters = 0;
   this->LastNumberOfSceneRenders = 0;
+  this->LastMethod = -1;
+  this->LastNumberOfPostPasses = 0;
   this->LastSliceDepthRange[0] = this->LastSliceDepthRange[1] = 0.0;
   impl.InScatterValid = false;
   impl.FinalInScatter = nullptr;
@@ -1542,24 +1611,33 @@ bool vtkLightShaftPass::Internals::ReadyNoise(vtkLightShaftPass& self)
 
 //------------------------------------------------------------------------------
 vtkShaderProgram* vtkLightShaftPass::Internals::ReadySliceProgram(vtkLightShaftPass& self,
+  int method,
   bool shadows,
   bool cookie,
   bool noise)
 {
   std::vector<std::string> defines;
-  std::string variant;
+  std::string variant = std::string("method=") + vtkLightShaftPass::GetMethodName(method) + " ";
+  if (method == RAY_MARCH)
+  {
+    defines.emplace_back("LIGHTSHAFT_RAY_MARCH");
+  }
+  else if (method == ANALYTIC || method == RADIAL_BLUR)
+  {
+    defines.emplace_back("LIGHTSHAFT_ANALYTIC");
+  }
   switch (self.PhaseFunction)
   {
     case HENYEY_GREENSTEIN:
       defines.emplace_back("LIGHTSHAFT_PHASE_HG");
-      variant = "phase=henyey-greenstein";
+      variant += "phase=henyey-greenstein";
       break;
     case RAYLEIGH:
       defines.emplace_back("LIGHTSHAFT_PHASE_RAYLEIGH");
-      variant = "phase=rayleigh";
+      variant += "phase=rayleigh";
       break;
     default:
-      variant = "phase=isotropic";
+      variant += "phase=isotropic";
       break;
   }
   auto feature = [&](bool on, const char* define, const char* name)
@@ -1573,13 +1651,16 @@ vtkShaderProgram* vtkLightShaftPass::Internals::ReadySliceProgram(vtkLightShaftP
   feature(shadows, "LIGHTSHAFT_SHADOW", "shadow");
   feature(cookie, "LIGHTSHAFT_COOKIE", "cookie");
   feature(noise, "LIGHTSHAFT_NOISE", "noise");
-  feature(self.Jitter, "LIGHTSHAFT_JITTER", "jitter");
-  if (self.AccumulationPrecision == ACCUMULATE_8BIT)
+  feature(method == SLICES && self.Jitter, "LIGHTSHAFT_JITTER", "jitter");
+  if (this->EightBitThisFrame)
   {
     defines.emplace_back("LIGHTSHAFT_ACCUMULATE_8BIT");
   }
   const char* accumulation[] = { " accumulate=float32", " accumulate=float16", " accumulate=8bit" };
-  variant += accumulation[self.AccumulationPrecision];
+  variant +=
+    accumulation[(self.AccumulationPrecision == ACCUMULATE_8BIT && !this->EightBitThisFrame)
+                   ? ACCUMULATE_FLOAT32
+                   : self.AccumulationPrecision];
   this->SliceVariant = variant;
   vtkOpenGLShaderCache* cache = this->Window->GetShaderCache();
   const std::string key = JoinDefines(defines);
@@ -1619,10 +1700,29 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
 {
   vtkOpenGLRenderWindow* renWin = this->Window;
   vtkOpenGLState* ostate = renWin->GetState();
+  // The method: AUTOMATIC takes the exact unshadowed integral when nothing can shadow the
+  // light's volume and the medium is homogeneous, else the slabs.
+  const bool noiseOn = self.NoiseAmplitude > 0.0;
+  int method = self.Method;
+  if (method == AUTOMATIC)
+  {
+    method = (light.Casters.empty() && !noiseOn) ? ANALYTIC : SLICES;
+  }
+  if (method == ANALYTIC && !light.Casters.empty() && !this->WarnedAnalyticShadows)
+  {
+    vtkWarningWithObjectMacro(&self,
+      "Method ANALYTIC ignores shadows, but "
+        << light.Casters.size()
+        << " prop(s) reach into the light's volume: use SLICES or AUTOMATIC for shadowed shafts.");
+    this->WarnedAnalyticShadows = true;
+  }
+  const bool slabs = method == SLICES;
   const int factor = self.DownsampleFactor;
   const int lw = (w + factor - 1) / factor;
   const int lh = (h + factor - 1) / factor;
-  const bool eightBit = self.AccumulationPrecision == ACCUMULATE_8BIT;
+  // The four-channel 8-bit trick is a slab technique; the other methods add up in float.
+  const bool eightBit = slabs && self.AccumulationPrecision == ACCUMULATE_8BIT;
+  this->EightBitThisFrame = eightBit;
   const TextureKind accumulationKind =
     eightBit ? TextureKind::RGBA8
              : (self.AccumulationPrecision == ACCUMULATE_FLOAT16 ? TextureKind::RGBA16F
@@ -1778,10 +1878,13 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   self.LastSliceDepthRange[0] = nearest;
   self.LastSliceDepthRange[1] = deepest;
 
+  self.LastMethod = method;
+  const bool jitter = slabs && self.Jitter;
+
   // How many slabs: fixed, or (automatic) as many slabs of thickness far / maximum as the lit
-  // depth range needs.
-  int slices = self.NumberOfSlices;
-  if (self.AutomaticSliceCount)
+  // depth range needs. The per-pixel methods draw one slab over the whole lit range.
+  int slices = slabs ? self.NumberOfSlices : 1;
+  if (slabs && self.AutomaticSliceCount)
   {
     const double spacing = farDepth / self.MaximumNumberOfSlices;
     slices = static_cast<int>(std::ceil((deepest - nearest) / spacing - 1e-9));
@@ -1790,7 +1893,7 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   const double thickness = (deepest - nearest) / slices;
   // With jitter a pixel's slab k spans [k - 1 + o, k + o] thicknesses (o in (0, 1)): one more
   // slab, and footprints covering two thicknesses.
-  const int drawnSlabs = self.Jitter ? slices + 1 : slices;
+  const int drawnSlabs = jitter ? slices + 1 : slices;
 
   // Slabs: for each, the screen footprint of the lit polytope between its two depths.
   std::vector<float>& vertices = this->SliceVertices;
@@ -1799,7 +1902,7 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   int drawn = 0;
   for (int k = 0; k < drawnSlabs; ++k)
   {
-    const double za = std::max(nearest, nearest + (self.Jitter ? k - 1 : k) * thickness);
+    const double za = std::max(nearest, nearest + (jitter ? k - 1 : k) * thickness);
     const double zb = std::min(deepest, nearest + (k + 1) * thickness);
     footprint.clear();
     auto addPoint = [&](const glm::dvec3& p)
@@ -1853,10 +1956,12 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   }
 
   // Shadow map of the casters, seen from the light (skipped when nothing can shadow).
-  const bool shadows = this->RenderShadowMap(self, s, light);
+  // Only the slabs and the march look up a shadow map.
+  const bool shadows =
+    (method == SLICES || method == RAY_MARCH) && this->RenderShadowMap(self, s, light);
   const bool cookie = this->Cookie && this->CookieTexture;
-  const bool noise = self.NoiseAmplitude > 0.0 && this->ReadyNoise(self);
-  vtkShaderProgram* program = this->ReadySliceProgram(self, shadows, cookie, noise);
+  const bool noise = noiseOn && this->ReadyNoise(self);
+  vtkShaderProgram* program = this->ReadySliceProgram(self, method, shadows, cookie, noise);
   if (!program)
   {
     return;
@@ -1952,6 +2057,21 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
       wrap(self.NoiseVelocity2[1] * self.Time + 0.61) };
     program->SetUniform4f("noiseShift", shift);
   }
+  if (method == RAY_MARCH)
+  {
+    program->SetUniformi("numberOfSteps", self.NumberOfSteps);
+    program->SetUniformi("interleaveSize", self.InterleaveSize);
+  }
+  else if (method == ANALYTIC || method == RADIAL_BLUR)
+  {
+    // One piece is exact (closed-form A) when the other factors are constant along the ray;
+    // cookie and noise vary across the light's square: 16 pieces sample them.
+    const bool constantFactors = self.PhaseFunction == ISOTROPIC && light.Exponent == 0.0 &&
+                                 !AnyPositive(sigmaT) && !cookie && !noise;
+    program->SetUniformi("analyticPieces", constantFactors ? 1 : ((cookie || noise) ? 16 : 4));
+    program->SetUniformf(
+      "maximumSigmaT", static_cast<float>(std::max({ sigmaT[0], sigmaT[1], sigmaT[2] })));
+  }
   if (eightBit)
   {
     program->SetUniformf(
@@ -1991,12 +2111,154 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   ostate->vtkglDisable(GL_BLEND);
   self.LastNumberOfSlicesDrawn = drawn;
 
-  this->PostProcess(self, camera, slabDepth, w, h, lw, lh);
+  vtkTextureObject* current = this->Accumulation[0].Object;
+  if (method == RADIAL_BLUR)
+  {
+    current = this->RenderRadialBlur(self, camera, light, slabDepth, lw, lh);
+  }
+  if (method == RAY_MARCH && self.InterleaveSize > 1)
+  {
+    current = this->Gather(self, current, camera, slabDepth, lw, lh);
+  }
+  this->PostProcess(self, current, camera, slabDepth, w, h, lw, lh);
   this->InScatterValid = true;
 }
 
 //------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftPass::Internals::Gather(vtkLightShaftPass& self,
+  vtkTextureObject* source,
+  const CameraFrame& camera,
+  vtkTextureObject* slabDepth,
+  int lw,
+  int lh)
+{
+  // Interleaved sampling's gather: two separable passes, each an unweighted, depth-aware mean
+  // over InterleaveSize consecutive pixels (the blur shader's box mode).
+  vtkOpenGLRenderWindow* renWin = this->Window;
+  vtkShaderProgram* program = this->Blur.Ready(renWin, vtkLightShaftBlurFS);
+  if (!program)
+  {
+    return source;
+  }
+  vtkTextureObject* temporary = this->GatherTemporary.Ensure(renWin, TextureKind::RGBA32F, lw, lh);
+  vtkTextureObject* gathered = this->Gathered.Ensure(renWin, TextureKind::RGBA32F, lw, lh);
+  auto invProjection = ToFloatColumnMajor(camera.ClipToView);
+  const float targetSize[2] = { static_cast<float>(lw), static_cast<float>(lh) };
+  const int directions[2][2] = { { 1, 0 }, { 0, 1 } };
+  vtkTextureObject* sources[2] = { source, temporary };
+  vtkTextureObject* outputs[2] = { temporary, gathered };
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    this->BindWork(outputs[pass], nullptr, lw, lh);
+    renWin->GetShaderCache()->ReadyShaderProgram(program);
+    sources[pass]->Activate();
+    slabDepth->Activate();
+    program->SetUniformi("source", sources[pass]->GetTextureUnit());
+    program->SetUniformi("sceneDepth", slabDepth->GetTextureUnit());
+    program->SetUniformMatrix4x4("invProjectionDCVC", invProjection.data());
+    program->SetUniform2f("targetSize", targetSize);
+    program->SetUniform2i("direction", directions[pass]);
+    program->SetUniformi("radius", 0);
+    program->SetUniformi("boxWidth", self.InterleaveSize);
+    program->SetUniformf("depthTolerance", 0.05f);
+    this->Blur.Quad->Render();
+    slabDepth->Deactivate();
+    sources[pass]->Deactivate();
+  }
+  self.LastNumberOfPostPasses += 2;
+  return gathered;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftPass::Internals::RenderRadialBlur(vtkLightShaftPass& self,
+  const CameraFrame& camera,
+  const LightFrame& light,
+  vtkTextureObject* slabDepth,
+  int lw,
+  int lh)
+{
+  vtkOpenGLRenderWindow* renWin = this->Window;
+  vtkTextureObject* unshadowed = this->Accumulation[0].Object;
+  // Nothing reaches into the light's volume: nothing to blur, the unshadowed integral is exact.
+  if (light.Casters.empty() || self.Weight <= 0.0)
+  {
+    return unshadowed;
+  }
+
+  // Where the light projects, and how much to trust it: the blur fades out as the light nears
+  // the camera plane (its projection runs off to infinity, then mirrors behind the camera).
+  const glm::dvec4 lightClip = camera.ViewToClip * glm::dvec4(light.PositionVC, 1.0);
+  const bool perspective = camera.ViewToClip[2][3] != 0.0;
+  double fade = 1.0;
+  float lightUV[2] = { 0.5f, 0.5f };
+  if (perspective)
+  {
+    const double inFront = -light.PositionVC.z / std::max(glm::length(light.PositionVC), 1e-30);
+    fade = vtkMath::ClampValue(inFront / 0.1, 0.0, 1.0);
+  }
+  if (fade <= 0.0 || !(std::abs(lightClip.w) > 0.0))
+  {
+    return unshadowed;
+  }
+  for (int i = 0; i < 2; ++i)
+  {
+    // Clamped far outside the screen: the walk is cut at the screen's edge anyway.
+    lightUV[i] =
+      static_cast<float>(vtkMath::ClampValue(0.5 * lightClip[i] / lightClip.w + 0.5, -1e6, 1e6));
+  }
+
+  // Occlusion pre-pass at half the in-scatter resolution.
+  const int mw = std::max(1, (lw + 1) / 2);
+  const int mh = std::max(1, (lh + 1) / 2);
+  auto invProjection = ToFloatColumnMajor(camera.ClipToView);
+  vtkTextureObject* mask = this->OcclusionMask.Ensure(renWin, TextureKind::RGBA32F, mw, mh);
+  this->BindWork(mask, nullptr, mw, mh);
+  if (vtkShaderProgram* program = this->Occlusion.Ready(renWin, vtkLightShaftOcclusionFS))
+  {
+    slabDepth->Activate();
+    program->SetUniformi("sceneDepth", slabDepth->GetTextureUnit());
+    program->SetUniformMatrix4x4("invProjectionDCVC", invProjection.data());
+    const float size[2] = { static_cast<float>(lw), static_cast<float>(lh) };
+    program->SetUniform2f("targetSize", size);
+    program->SetUniform3f("lightPositionVC", ToFloat3(light.PositionVC).data());
+    program->SetUniform3f("lightAxisVC", ToFloat3(light.AxisVC).data());
+    program->SetUniformf("cosConeAngle", static_cast<float>(std::cos(light.ConeHalfAngle)));
+    this->Occlusion.Quad->Render();
+    slabDepth->Deactivate();
+  }
+  else
+  {
+    return unshadowed;
+  }
+
+  vtkTextureObject* output = this->RadialOutput.Ensure(renWin, TextureKind::RGBA32F, lw, lh);
+  this->BindWork(output, nullptr, lw, lh);
+  vtkShaderProgram* program = this->RadialBlur.Ready(renWin, vtkLightShaftRadialBlurFS);
+  if (!program)
+  {
+    return unshadowed;
+  }
+  unshadowed->Activate();
+  mask->Activate();
+  program->SetUniformi("unshadowed", unshadowed->GetTextureUnit());
+  program->SetUniformi("occlusion", mask->GetTextureUnit());
+  program->SetUniform2f("lightUV", lightUV);
+  program->SetUniformf("fade", static_cast<float>(fade));
+  program->SetUniformi("samples", self.RadialSamples);
+  program->SetUniformf("decay", static_cast<float>(self.Decay));
+  program->SetUniformf("weight", static_cast<float>(self.Weight));
+  program->SetUniformf("density", static_cast<float>(self.Density));
+  program->SetUniformi("stochastic", self.RadialJitter ? 1 : 0);
+  this->RadialBlur.Quad->Render();
+  mask->Deactivate();
+  unshadowed->Deactivate();
+  self.LastNumberOfPostPasses += 2;
+  return output;
+}
+
+//------------------------------------------------------------------------------
 void vtkLightShaftPass::Internals::PostProcess(vtkLightShaftPass& self,
+  vtkTextureObject* current,
   const CameraFrame& camera,
   vtkTextureObject* slabDepth,
   int w,
@@ -2005,11 +2267,10 @@ void vtkLightShaftPass::Internals::PostProcess(vtkLightShaftPass& self,
   int lh)
 {
   vtkOpenGLRenderWindow* renWin = this->Window;
-  vtkTextureObject* current = this->Accumulation[0].Object;
   auto invProjection = ToFloatColumnMajor(camera.ClipToView);
   constexpr float depthTolerance = 0.05f; // relative view-depth difference of "same surface"
 
-  if (self.AccumulationPrecision == ACCUMULATE_8BIT)
+  if (this->EightBitThisFrame)
   {
     vtkTextureObject* resolved = this->Resolved.Ensure(renWin, TextureKind::RGBA32F, lw, lh);
     this->BindWork(resolved, nullptr, lw, lh);
@@ -2055,8 +2316,10 @@ void vtkLightShaftPass::Internals::PostProcess(vtkLightShaftPass& self,
         program->SetUniform2f("targetSize", targetSize);
         program->SetUniform2i("direction", directions[pass]);
         program->SetUniformi("radius", self.BlurRadius);
+        program->SetUniformi("boxWidth", 0);
         program->SetUniformf("depthTolerance", depthTolerance);
         this->Blur.Quad->Render();
+        ++self.LastNumberOfPostPasses;
         slabDepth->Deactivate();
         sources[pass]->Deactivate();
       }
@@ -2081,6 +2344,7 @@ void vtkLightShaftPass::Internals::PostProcess(vtkLightShaftPass& self,
       program->SetUniform2f("fullSize", fullSize);
       program->SetUniformf("depthTolerance", depthTolerance);
       this->Upsample.Quad->Render();
+      ++self.LastNumberOfPostPasses;
       this->SceneDepth.Object->Deactivate();
       slabDepth->Deactivate();
       current->Deactivate();
@@ -2292,6 +2556,15 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutomaticSliceCount: " << this->AutomaticSliceCount << "\n";
   os << indent << "MaximumNumberOfSlices: " << this->MaximumNumberOfSlices << "\n";
   os << indent << "Jitter: " << this->Jitter << "\n";
+  os << indent << "Method: " << GetMethodName(this->Method) << "\n";
+  os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
+  os << indent << "InterleaveSize: " << this->InterleaveSize << "\n";
+  os << indent << "RadialSamples: " << this->RadialSamples << "\n";
+  os << indent << "Decay: " << this->Decay << "\n";
+  os << indent << "Density: " << this->Density << "\n";
+  os << indent << "Weight: " << this->Weight << "\n";
+  os << indent << "RadialJitter: " << this->RadialJitter << "\n";
+  os << indent << "LastMethod: " << GetMethodName(this->LastMethod) << "\n";
   os << indent << "BlurRadius: " << this->BlurRadius << "\n";
   os << indent << "DownsampleFactor: " << this->DownsampleFactor << "\n";
   os << indent << "AccumulationPrecision: " << this->AccumulationPrecision << "\n";

@@ -86,6 +86,16 @@ public:
     ACCUMULATE_8BIT = 2     ///< 8-bit fixed point, the GDC 2004 talk's four-channel trick
   };
 
+  /// How the in-scattered radiance is computed (the same model and parameters for all).
+  enum MethodType
+  {
+    SLICES = 0,      ///< view-aligned slabs, shadow-mapped (Mitchell, GDC 2004; Dobashi et al.)
+    RAY_MARCH = 1,   ///< per-pixel march with interleaved sampling (Toth & Umenhoffer 2009)
+    RADIAL_BLUR = 2, ///< screen-space radial blur of an occlusion buffer (GPU Gems 3, ch. 13)
+    ANALYTIC = 3,    ///< unshadowed closed form per pixel (exact when nothing occludes)
+    AUTOMATIC = 4    ///< ANALYTIC when the scene allows it, else SLICES (GetLastMethod says)
+  };
+
   /**
    * Render the scene and its light shafts. Called by the renderer.
    */
@@ -348,6 +358,81 @@ public:
 
   ///@{
   /**
+   * The method that computes the in-scattered radiance; every parameter that is not
+   * method-specific (light, coefficients, phase, cookie, noise, Time, Exposure, read-outs)
+   * means the same in all of them.
+   * - SLICES: view-aligned slabs (NumberOfSlices, Jitter, AutomaticSliceCount, precision).
+   * - RAY_MARCH: one full-screen-footprint pass marching NumberOfSteps segments per pixel
+   *   through the lit part of its ray (steps shorten towards the light when A falls off; the
+   *   1/r^2 term is integrated exactly per step), with interleaved sampling over
+   *   InterleaveSize^2 pixel blocks and the separable gather passes that re-assemble them.
+   * - RADIAL_BLUR: the unshadowed in-scatter (as ANALYTIC) darkened by a screen-space radial
+   *   blur of an occlusion buffer towards the light's screen position (RadialSamples, Decay,
+   *   Weight, Density, RadialJitter). No shadow map. Fast, but its shadows are approximate:
+   *   see README for the measured error.
+   * - ANALYTIC: the unshadowed integral per pixel, exact in closed form for an isotropic,
+   *   exponent-0, non-absorbing medium, and integrated to float precision otherwise. Ignores
+   *   shadows and noise (a warning says so when they would matter); the cookie is kept.
+   * - AUTOMATIC: ANALYTIC when nothing casts a shadow into the light's volume and the noise is
+   *   off, else SLICES. GetLastMethod() reports the choice.
+   * Default is SLICES.
+   */
+  vtkSetClampMacro(Method, int, SLICES, AUTOMATIC);
+  vtkGetMacro(Method, int);
+  void SetMethodToSlices() { this->SetMethod(SLICES); }
+  void SetMethodToRayMarch() { this->SetMethod(RAY_MARCH); }
+  void SetMethodToRadialBlur() { this->SetMethod(RADIAL_BLUR); }
+  void SetMethodToAnalytic() { this->SetMethod(ANALYTIC); }
+  void SetMethodToAutomatic() { this->SetMethod(AUTOMATIC); }
+  static const char* GetMethodName(int method);
+  ///@}
+
+  ///@{
+  /**
+   * RAY_MARCH: segments marched per pixel through the lit part of its ray, in [1, 4096].
+   * Default is 32.
+   */
+  vtkSetClampMacro(NumberOfSteps, int, 1, 4096);
+  vtkGetMacro(NumberOfSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * RAY_MARCH: side M of the interleaved-sampling block, in [1, 8]: the M^2 pixels of a block
+   * shift their step boundaries by different fractions of a step, and two separable,
+   * depth-aware gather passes (M pixels wide) average the block back, so each pixel sees
+   * M^2 x NumberOfSteps samples for the price of NumberOfSteps. 1 = off. Default is 4.
+   */
+  vtkSetClampMacro(InterleaveSize, int, 1, 8);
+  vtkGetMacro(InterleaveSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * RADIAL_BLUR controls, after GPU Gems 3 ch. 13: RadialSamples taken from each pixel
+   * towards the light's screen position, in [1, 1024] (default 64); Decay, the factor by which
+   * each farther sample's influence falls, in [0, 1] (default 1: all equal); Density, the
+   * fraction of the way to the light the samples cover, in [0, 1] (default 1); Weight, how
+   * strongly the blurred occlusion darkens the shafts, in [0, 1] (default 1; 0 gives the
+   * unshadowed ANALYTIC image). The chapter's Exposure is the shared Exposure. Non-finite
+   * values are refused. RadialJitter offsets each pixel's samples by its own fraction of a
+   * step (stochastic sampling: banding becomes noise); default is on.
+   */
+  vtkSetClampMacro(RadialSamples, int, 1, 1024);
+  vtkGetMacro(RadialSamples, int);
+  void SetDecay(double decay);
+  vtkGetMacro(Decay, double);
+  void SetDensity(double density);
+  vtkGetMacro(Density, double);
+  void SetWeight(double weight);
+  vtkGetMacro(Weight, double);
+  vtkSetMacro(RadialJitter, bool);
+  vtkGetMacro(RadialJitter, bool);
+  vtkBooleanMacro(RadialJitter, bool);
+  ///@}
+
+  ///@{
+  /**
    * Quality presets, chosen from the measured speed/error front (docs/benchmark.md):
    * - Draft: 32 slices, jitter, blur radius 2, half-resolution in-scatter, 512^2 shadow map;
    * - Interactive: 64 slices, jitter, blur radius 2, 1024^2 shadow map, full resolution (the
@@ -377,6 +462,10 @@ public:
    */
   vtkGetMacro(LastNumberOfSlicesDrawn, int);
   vtkGetMacro(LastShadowMapRendered, bool);
+  /// The method the last frame used (AUTOMATIC resolved; -1 when no shafts were computed).
+  vtkGetMacro(LastMethod, int);
+  /// Full-screen-sized passes the last frame ran after the slabs/march (gather, blur, etc.).
+  vtkGetMacro(LastNumberOfPostPasses, int);
   vtkGetVector2Macro(LastSliceDepthRange, double);
   vtkGetVector2Macro(LastViewportSize, int);
   ///@}
@@ -438,6 +527,14 @@ protected:
   int BlurRadius = 2;
   int DownsampleFactor = 1;
   int AccumulationPrecision = ACCUMULATE_FLOAT32;
+  int Method = SLICES;
+  int NumberOfSteps = 32;
+  int InterleaveSize = 4;
+  int RadialSamples = 64;
+  double Decay = 1.0;
+  double Density = 1.0;
+  double Weight = 1.0;
+  bool RadialJitter = true;
 
   // Last-frame statistics.
   int LastNumberOfSlicesDrawn = 0;
@@ -449,6 +546,8 @@ protected:
   double LastLightDepthRange[2] = { 0.0, 0.0 };
   double LastShadowBias = 0.0;
   int LastNumberOfSceneRenders = 0;
+  int LastMethod = -1;
+  int LastNumberOfPostPasses = 0;
 
 private:
   void RenderFrame(const vtkRenderState* s);

@@ -3,7 +3,9 @@
 
 // One direction of a separable, depth-aware Gaussian blur of the in-scattered radiance: taps
 // whose surface lies at a different depth (relative difference above depthTolerance) get no
-// weight, so shafts do not bleed across silhouettes.
+// weight, so shafts do not bleed across silhouettes. With boxWidth > 0 it is instead the
+// gather of interleaved sampling: an unweighted mean over boxWidth consecutive pixels, which
+// holds every one of the block's offsets with the same weight.
 in vec2 texCoord;
 
 //VTK::LightShaft::Common
@@ -12,6 +14,7 @@ uniform sampler2D source;
 uniform ivec2 direction; // (1, 0) or (0, 1)
 uniform int radius;
 uniform float depthTolerance;
+uniform int boxWidth;
 
 void main()
 {
@@ -22,7 +25,12 @@ void main()
   float sigma = max(0.5 * float(radius), 0.5);
   vec3 sum = vec3(0.0);
   float weights = 0.0;
-  for (int i = -radius; i <= radius; ++i)
+  // The gather is centred: an even width takes the two end taps (the same residue) at half
+  // weight, so the image does not shift by half a pixel.
+  int first = (boxWidth > 0) ? -(boxWidth / 2) : -radius;
+  int last = (boxWidth > 0) ? boxWidth / 2 : radius;
+  bool halfEnds = boxWidth > 0 && (boxWidth % 2) == 0;
+  for (int i = first; i <= last; ++i)
   {
     ivec2 q = p + i * direction;
     if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size)))
@@ -35,7 +43,8 @@ void main()
     {
       continue;
     }
-    float w = exp(-0.5 * float(i * i) / (sigma * sigma));
+    float w = (boxWidth > 0) ? ((halfEnds && abs(i) == boxWidth / 2) ? 0.5 : 1.0) :
+      exp(-0.5 * float(i * i) / (sigma * sigma));
     sum += w * texelFetch(source, q, 0).rgb;
     weights += w;
   }

@@ -3,13 +3,16 @@
 
 // Features compiled in (#defines): LIGHTSHAFT_PHASE_HG / _RAYLEIGH (else isotropic),
 // LIGHTSHAFT_SHADOW, LIGHTSHAFT_COOKIE, LIGHTSHAFT_NOISE, LIGHTSHAFT_JITTER,
-// LIGHTSHAFT_ACCUMULATE_8BIT. Code for a feature that is off is not compiled.
+// LIGHTSHAFT_ACCUMULATE_8BIT, and the method: slabs (none), LIGHTSHAFT_RAY_MARCH (one slab
+// spanning the lit depth range, marched in NumberOfSteps segments per pixel) or
+// LIGHTSHAFT_ANALYTIC (one slab, no shadow: the whole lit interval integrated in pieces fine
+// enough for float precision). Code for a feature that is off is not compiled.
 //VTK::LightShaft::Features
 #if defined(LIGHTSHAFT_SHADOW) || defined(LIGHTSHAFT_COOKIE) || defined(LIGHTSHAFT_NOISE)
 #define LIGHTSHAFT_LIGHT_SPACE
 #endif
 
-// One slab of the pixel's view ray: integrates the in-scattered radiance
+// One segment of the pixel's view ray: integrates the in-scattered radiance
 //   sigma_s p(cos theta) I S(x) A(r) V(x) exp(-sigma_t (r + t)) dt
 // over the part of the slab that lies inside the spot cone and in front of the scene surface.
 // A(r) = 1 / (c0 + c1 r + c2 r^2) is integrated in closed form (c1 = 0) or by Gauss-Legendre
@@ -63,6 +66,16 @@ uniform float noiseSize;        // texels across one tile
 uniform float noiseAmplitude;
 uniform float noiseScale;       // tiles across the light's square (layer 1; layer 2 is 1.37x)
 uniform vec4 noiseShift;        // both layers' scroll offsets at the current time, in tiles
+#endif
+
+#ifdef LIGHTSHAFT_RAY_MARCH
+uniform int numberOfSteps;
+uniform int interleaveSize;     // M: the pixels of an M x M block march with M^2 offsets
+#endif
+
+#ifdef LIGHTSHAFT_ANALYTIC
+uniform int analyticPieces;     // pieces of the lit interval (1 when the closed form is exact)
+uniform float maximumSigmaT;    // largest extinction coefficient (more pieces in thick media)
 #endif
 
 #ifdef LIGHTSHAFT_ACCUMULATE_8BIT
@@ -214,53 +227,12 @@ float lightShaftAttenuationIntegral(float x0, float x1, float h2)
   return sum * half_;
 }
 
-void main()
+// The in-scattered radiance over the piece x in [x0, x1] of the ray originVC + t dirVC, where
+// x = t + b is measured from the foot of the perpendicular from the light (squared length h2)
+// and the piece lies inside the cone and in front of the surface. Shadow, cookie and noise are
+// looked up once, at the piece's (equiangular) midpoint.
+vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, float x1)
 {
-  vec3 originVC;
-  vec3 dirVC;
-  vec2 ndc;
-  lightShaftViewRay(gl_FragCoord.xy, originVC, dirVC, ndc);
-
-  // The slab [near, far] in view depth, as ray parameters; cut at the scene surface.
-  float slabOffset = 0.0;
-#ifdef LIGHTSHAFT_JITTER
-  // 4x4 ordered (Bayer) offsets: neighbouring pixels sample between each other's boundaries.
-  ivec2 cell = ivec2(gl_FragCoord.xy) & 3;
-  const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0,
-    9.0, 15.0, 7.0, 13.0, 5.0);
-  slabOffset = (bayer[cell.y * 4 + cell.x] + 0.5) / 16.0 - 1.0;
-#endif
-  // Neighbouring slabs compute their shared boundary with the same expression: no gap.
-  float nearDepth =
-    clamp(slabStart + (slabIndex + slabOffset) * slabThickness, slabStart, slabEnd);
-  float farDepth = (slabIndex == lastSlab) ? slabEnd :
-    clamp(slabStart + (slabIndex + 1.0 + slabOffset) * slabThickness, slabStart, slabEnd);
-  float tPerDepth = -1.0 / dirVC.z;
-  float ta = nearDepth * tPerDepth;
-  float tb = farDepth * tPerDepth;
-  float depth = texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r;
-  tb = min(tb, lightShaftSurfaceDistance(ndc, depth, dirVC));
-
-  // Work relative to the foot of the perpendicular from the light to the ray, x = t + b:
-  // the cone quadratic then has coefficients of the size of h, not of the eye-light distance,
-  // which keeps rays passing next to the apex accurate in float.
-  vec3 m = originVC - lightPositionVC;
-  float b = dot(m, dirVC);
-  vec3 foot = m - b * dirVC;
-  float h2 = dot(foot, foot);
-  float coneIn;
-  float coneOut;
-  if (!lightShaftConeInterval(foot, dirVC, coneIn, coneOut))
-  {
-    discard;
-  }
-  float x0 = max(ta + b, coneIn);
-  float x1 = min(tb + b, coneOut);
-  if (x1 <= x0)
-  {
-    discard;
-  }
-
   // Product rule: the exact integral of A(r) over the segment times the A-weighted mean of the
   // smooth factors (phase, spot, extinction), the mean taken with 3-point Gauss-Legendre in
   // t (constant A) or in the equiangular angle phi, x = h tan(phi) (falling A), where those
@@ -352,8 +324,117 @@ void main()
   modulation *= 1.0 + noiseAmplitude * (n1 * n2 - 1.0);
 #endif
 
-  vec3 radiance = sigmaS * lightRadiantIntensity * modulation *
+  return sigmaS * lightRadiantIntensity * modulation *
     (weight * visibility / max(weightSum, 1e-30)) * smoothSum;
+}
+
+// Where the pieces of [x0, x1] start and end: uniform in x (constant A) or in the equiangular
+// angle (falling A: the pieces shorten towards the light, where the integrand changes fastest).
+float lightShaftPieceBoundary(float u0, float u1, float fraction, float h, bool constantA)
+{
+  float u = mix(u0, u1, clamp(fraction, 0.0, 1.0));
+  return constantA ? u : h * tan(u);
+}
+
+void main()
+{
+  vec3 originVC;
+  vec3 dirVC;
+  vec2 ndc;
+  lightShaftViewRay(gl_FragCoord.xy, originVC, dirVC, ndc);
+
+  // The slab [near, far] in view depth, as ray parameters; cut at the scene surface.
+  float slabOffset = 0.0;
+#ifdef LIGHTSHAFT_JITTER
+  // 4x4 ordered (Bayer) offsets: neighbouring pixels sample between each other's boundaries.
+  ivec2 cell = ivec2(gl_FragCoord.xy) & 3;
+  const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0,
+    9.0, 15.0, 7.0, 13.0, 5.0);
+  slabOffset = (bayer[cell.y * 4 + cell.x] + 0.5) / 16.0 - 1.0;
+#endif
+  // Neighbouring slabs compute their shared boundary with the same expression: no gap.
+  float nearDepth =
+    clamp(slabStart + (slabIndex + slabOffset) * slabThickness, slabStart, slabEnd);
+  float farDepth = (slabIndex == lastSlab) ? slabEnd :
+    clamp(slabStart + (slabIndex + 1.0 + slabOffset) * slabThickness, slabStart, slabEnd);
+  float tPerDepth = -1.0 / dirVC.z;
+  float ta = nearDepth * tPerDepth;
+  float tb = farDepth * tPerDepth;
+  float depth = texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r;
+  tb = min(tb, lightShaftSurfaceDistance(ndc, depth, dirVC));
+
+  // Work relative to the foot of the perpendicular from the light to the ray, x = t + b:
+  // the cone quadratic then has coefficients of the size of h, not of the eye-light distance,
+  // which keeps rays passing next to the apex accurate in float.
+  vec3 m = originVC - lightPositionVC;
+  float b = dot(m, dirVC);
+  vec3 foot = m - b * dirVC;
+  float h2 = dot(foot, foot);
+  float coneIn;
+  float coneOut;
+  if (!lightShaftConeInterval(foot, dirVC, coneIn, coneOut))
+  {
+    discard;
+  }
+  float x0 = max(ta + b, coneIn);
+  float x1 = min(tb + b, coneOut);
+  if (x1 <= x0)
+  {
+    discard;
+  }
+
+#if defined(LIGHTSHAFT_RAY_MARCH) || defined(LIGHTSHAFT_ANALYTIC)
+  bool constantA = attenuationCoefficients.y == 0.0 && attenuationCoefficients.z == 0.0;
+  float h = max(sqrt(h2), 1e-6 * max(abs(x0), abs(x1)) + 1e-30);
+  float u0 = constantA ? x0 : atan(x0, h);
+  float u1 = constantA ? x1 : atan(x1, h);
+  vec3 radiance = vec3(0.0);
+#endif
+#if defined(LIGHTSHAFT_RAY_MARCH)
+  // Interleaved sampling: the M^2 pixels of a block shift the step boundaries by different
+  // fractions o of a step, so the block together takes M^2 N samples; the gather passes that
+  // follow average the block back. Step j spans [j - 1 + o, j + o] steps, clamped.
+  float offset = 1.0;
+  if (interleaveSize > 1)
+  {
+    ivec2 cellM = ivec2(gl_FragCoord.xy) % interleaveSize;
+    int cellIndex = cellM.y * interleaveSize + cellM.x;
+    // Scatter neighbouring indices across the step: multiplying by cells / 2 + 1 (coprime
+    // with cells for every M) permutes 0 .. M^2 - 1.
+    int cells = interleaveSize * interleaveSize;
+    int scrambled = (cellIndex * (cells / 2 + 1)) % cells;
+    offset = (float(scrambled) + 0.5) / float(cells);
+  }
+  float steps = float(numberOfSteps);
+  float xa = x0;
+  for (int j = 0; j <= numberOfSteps; ++j)
+  {
+    float xb = lightShaftPieceBoundary(u0, u1, (float(j) + offset) / steps, h, constantA);
+    xb = (j == numberOfSteps) ? x1 : min(xb, x1);
+    if (xb > xa)
+    {
+      radiance += lightShaftSegment(originVC, dirVC, b, h2, xa, xb);
+    }
+    xa = max(xa, xb);
+  }
+#elif defined(LIGHTSHAFT_ANALYTIC)
+  // Nothing occludes: the integrand is smooth over the whole lit interval. The closed form of
+  // A(r) is exact on its own when the other factors are constant (analyticPieces = 1); else
+  // 3-point Gauss-Legendre per piece, with enough pieces that the extinction across a piece
+  // stays below ~0.5 (float precision for the smooth factors).
+  int pieces = clamp(max(analyticPieces, int(ceil(2.0 * maximumSigmaT * (x1 - x0)))), 1, 64);
+  float xa = x0;
+  for (int j = 1; j <= pieces; ++j)
+  {
+    float xb = (j == pieces) ? x1 :
+      lightShaftPieceBoundary(u0, u1, float(j) / float(pieces), h, constantA);
+    radiance += lightShaftSegment(originVC, dirVC, b, h2, xa, xb);
+    xa = xb;
+  }
+#else
+  vec3 radiance = lightShaftSegment(originVC, dirVC, b, h2, x0, x1);
+#endif
+
 #ifdef LIGHTSHAFT_ACCUMULATE_8BIT
   // The talk's trick: slab k adds into channel k mod 4 (one RGBA8 buffer per colour).
   int channel = int(mod(slabIndex + 4.0, 4.0));
@@ -362,6 +443,11 @@ void main()
   gl_FragData[0] = displayed.r * mask;
   gl_FragData[1] = displayed.g * mask;
   gl_FragData[2] = displayed.b * mask;
+#elif defined(LIGHTSHAFT_ANALYTIC)
+  // Alpha: the light distance at the lit interval's (equiangular) middle, which the radial
+  // blur compares its occluders with.
+  float xMiddle = lightShaftPieceBoundary(u0, u1, 0.5, h, constantA);
+  gl_FragData[0] = vec4(radiance, sqrt(h2 + xMiddle * xMiddle));
 #else
   gl_FragData[0] = vec4(radiance, 0.0);
 #endif

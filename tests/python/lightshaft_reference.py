@@ -260,8 +260,9 @@ def _integrate_pieces(eye, dirs, t0, t1, light, medium, panels):
     return np.where(valid[..., None], total, 0.0)
 
 
-def in_scattered_radiance(cam, light, medium, scene, panels=4, rows_per_chunk=32):
-    """L_in as an array (height, width, 3), row 0 at the bottom."""
+def in_scattered_radiance(cam, light, medium, scene, panels=4, rows_per_chunk=32, shadows=True):
+    """L_in as an array (height, width, 3), row 0 at the bottom. shadows=False: the spheres
+    stop view rays but cast no shadow (what an unshadowed method computes)."""
     eye, dirs, forward = camera_rays(cam)
     out = np.zeros((cam.height, cam.width, 3))
     lpos = np.asarray(light.position, float)
@@ -275,7 +276,7 @@ def in_scattered_radiance(cam, light, medium, scene, panels=4, rows_per_chunk=32
         hi = np.minimum(hi, t_s)
         # Lit pieces: [lo, hi] minus the union of shadow intervals (spheres may overlap).
         pieces = [(lo, hi)]
-        for centre, radius in scene.spheres:
+        for centre, radius in (scene.spheres if shadows else []):
             s0, s1 = sphere_shadow_interval(eye, d, lpos, centre, radius)
             no_shadow = s0 >= s1
             s0 = np.where(no_shadow, np.inf, s0)

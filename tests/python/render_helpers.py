@@ -94,12 +94,14 @@ def reference_medium(shaft_pass):
 
 
 def reference_for(renderer, window, info, shaft_pass, panels=4, cookie=None, with_props=True,
-                  size=None):
-    """The float64 reference L_in for a scenes.* scene as the pass is set up."""
+                  size=None, shadows=True):
+    """The float64 reference L_in for a scenes.* scene as the pass is set up (shadows=False:
+    surfaces stop the rays but cast no shadow)."""
     scene = ref.Scene(spheres=info.spheres, floors=info.floors) if with_props else ref.Scene()
     return ref.in_scattered_radiance(reference_camera(renderer, window, size),
                                      reference_light(info.light, cookie),
-                                     reference_medium(shaft_pass), scene, panels=panels)
+                                     reference_medium(shaft_pass), scene, panels=panels,
+                                     shadows=shadows)
 
 
 def surface_points(renderer, window, info):

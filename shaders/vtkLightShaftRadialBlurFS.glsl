@@ -1,0 +1,65 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+
+// Screen-space radial blur (GPU Gems 3, ch. 13) applied to the visibility of the shafts: each
+// pixel walks towards the light's screen position, counts the occlusion-buffer samples that
+// hold an occluder nearer to the light than its own shaft (decay^i weighted), and darkens the
+// unshadowed in-scatter (rgb of `unshadowed`; alpha: the shaft's distance to the light) by that
+// fraction times weight. Samples off the screen have no data and count as unoccluded.
+in vec2 texCoord;
+
+uniform sampler2D unshadowed;
+uniform sampler2D occlusion;
+uniform vec2 lightUV;        // the light's position in texture coordinates (may be off-screen)
+uniform float fade;          // 1 with the light in front of the camera, 0 at or behind it
+uniform int samples;
+uniform float decay;
+uniform float weight;
+uniform float density;       // fraction of the way to the light the samples cover
+uniform int stochastic;      // per-pixel offset of the sample positions
+
+void main()
+{
+  vec4 shaft = texture(unshadowed, texCoord);
+  if (fade <= 0.0 || samples < 1 || weight <= 0.0 || all(equal(shaft.rgb, vec3(0.0))))
+  {
+    gl_FragData[0] = vec4(shaft.rgb, 0.0);
+    return;
+  }
+  vec2 toLight = lightUV - texCoord;
+  // Keep the walk on the screen: beyond it the occlusion buffer has no data (the guard band
+  // is the unshadowed in-scatter itself, which never depends on where the light projects).
+  float reach = density;
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    if (toLight[axis] > 1e-9)
+    {
+      reach = min(reach, (1.0 - texCoord[axis]) / toLight[axis]);
+    }
+    else if (toLight[axis] < -1e-9)
+    {
+      reach = min(reach, -texCoord[axis] / toLight[axis]);
+    }
+  }
+  vec2 step = toLight * (max(reach, 0.0) / float(samples));
+  float start = 0.5;
+  if (stochastic != 0)
+  {
+    // Interleaved gradient noise: a different offset for each pixel, stable over frames.
+    start = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+  }
+  float shaftDistance = shaft.a;
+  float illuminationDecay = 1.0;
+  float visible = 0.0;
+  float total = 0.0;
+  for (int i = 0; i < samples; ++i)
+  {
+    vec2 uv = texCoord + (float(i) + start) * step;
+    float occluderDistance = texture(occlusion, uv).r;
+    visible += illuminationDecay * ((occluderDistance < 0.99 * shaftDistance) ? 0.0 : 1.0);
+    total += illuminationDecay;
+    illuminationDecay *= decay;
+  }
+  float visibility = (total > 0.0) ? visible / total : 1.0;
+  gl_FragData[0] = vec4(shaft.rgb * (1.0 - weight * fade * (1.0 - visibility)), 0.0);
+}
