@@ -390,7 +390,7 @@ public:
   ///@{
   /**
    * RAY_MARCH: segments marched per pixel through the lit part of its ray, in [1, 4096].
-   * Default is 32.
+   * Default is 16.
    */
   vtkSetClampMacro(NumberOfSteps, int, 1, 4096);
   vtkGetMacro(NumberOfSteps, int);
@@ -401,7 +401,9 @@ public:
    * RAY_MARCH: side M of the interleaved-sampling block, in [1, 8]: the M^2 pixels of a block
    * shift their step boundaries by different fractions of a step, and two separable,
    * depth-aware gather passes (M pixels wide) average the block back, so each pixel sees
-   * M^2 x NumberOfSteps samples for the price of NumberOfSteps. 1 = off. Default is 4.
+   * M^2 x NumberOfSteps samples for the price of NumberOfSteps. 1 = off. Even sizes gather
+   * over M + 1 pixels with half-weight ends (centred, no half-pixel shift). Default is 2
+   * (measured best on the benchmark: docs/benchmark.md).
    */
   vtkSetClampMacro(InterleaveSize, int, 1, 8);
   vtkGetMacro(InterleaveSize, int);
@@ -528,8 +530,8 @@ protected:
   int DownsampleFactor = 1;
   int AccumulationPrecision = ACCUMULATE_FLOAT32;
   int Method = SLICES;
-  int NumberOfSteps = 32;
-  int InterleaveSize = 4;
+  int NumberOfSteps = 16;
+  int InterleaveSize = 2;
   int RadialSamples = 64;
   double Decay = 1.0;
   double Density = 1.0;

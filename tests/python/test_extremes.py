@@ -1,5 +1,11 @@
 """Numerical stability at the extremes: every case renders finite values with no GL error, and
 agrees with the float64 reference within the bound stated per case (or degrades as documented).
+
+Every case runs for every method (the `method` fixture). SLICES and RAY_MARCH (256 slices or
+steps, no jitter/interleave/blur) share the bounds; ANALYTIC is compared with the unshadowed
+reference (what it computes), at the same bounds; RADIAL_BLUR's screen-space shadows are
+approximate, so its bound is RADIAL_BLUR_BOUND against the shadowed reference, and the case is
+also required to stay finite and GL-error free.
 """
 
 import numpy as np
@@ -13,10 +19,44 @@ import lightshaft_reference as ref
 import render_helpers as rh
 
 
+METHODS = ["slices", "ray-march", "radial-blur", "analytic"]
+# RADIAL_BLUR measures 6% on the test scene's default view (README); at the extremes (eye in
+# the beam, light behind the camera, pencil cones) its screen-space shadows are worse.
+RADIAL_BLUR_BOUND = 0.3
+_method = "slices"
+
+
+@pytest.fixture(params=METHODS, autouse=True)
+def method(request):
+    global _method
+    _method = request.param
+    yield request.param
+    _method = "slices"
+
+
+def use_method(shafts, method=None):
+    """Switch a pass set up for plain slabs to `method` with comparable settings."""
+    method = method or _method
+    if method == "ray-march":
+        shafts.SetMethodToRayMarch()
+        shafts.SetNumberOfSteps(shafts.GetNumberOfSlices())
+        shafts.SetInterleaveSize(1)
+    elif method == "radial-blur":
+        shafts.SetMethodToRadialBlur()
+    elif method == "analytic":
+        shafts.SetMethodToAnalytic()
+
+
+def bound(value):
+    """The case's stated bound for the current method."""
+    return max(value, RADIAL_BLUR_BOUND) if _method == "radial-blur" else value
+
+
 def render(width=160, height=120, prepare=None, **params):
     renderer, window = rh.make_window(width, height)
     info = scenes.sphere_and_floor(renderer, sphere_resolution=128)
     shafts = rh.plain_slab_pass(**params)
+    use_method(shafts)
     if prepare:
         prepare(renderer, info, shafts)
         renderer.ResetCameraClippingRange()
@@ -31,11 +71,13 @@ def render(width=160, height=120, prepare=None, **params):
 
 
 def error_against_reference(renderer, window, info, shafts, image, threshold=0.01):
-    reference = rh.reference_for(renderer, window, info, shafts)
+    reference = rh.reference_for(renderer, window, info, shafts,
+                                 shadows=_method != "analytic")
     assert np.all(np.isfinite(reference))
     if reference.max() == 0.0:
         return 0.0 if image.max() == 0.0 else np.inf
-    return ref.relative_rms_error(image, reference, threshold)[0]
+    error = ref.relative_rms_error(image, reference, threshold)[0]
+    return error
 
 
 def move_camera(position, focal_point, view_up=(0.0, 1.0, 0.0)):
@@ -52,7 +94,7 @@ def test_eye_next_to_the_light(offset):
     # The eye sits at the apex: every ray starts inside (or at the tip of) the cone.
     light = np.array([0.5, 6.0, 0.0])
     args = render(prepare=move_camera(light + [offset, 0.0, 0.0], (0.0, 0.0, 0.3)))
-    assert error_against_reference(*args[:5]) < 0.02
+    assert error_against_reference(*args[:5]) < bound(0.02)
 
 
 @pytest.mark.parametrize("direction", ["into", "away"])
@@ -66,7 +108,7 @@ def test_view_along_the_cone_axis(direction):
         eye = light - 2.0 * axis
         focal = light + axis
     args = render(prepare=move_camera(eye + [0.0, 0.0, 1e-3], focal, (0.0, 0.0, 1.0)))
-    assert error_against_reference(*args[:5]) < 0.02
+    assert error_against_reference(*args[:5]) < bound(0.02)
 
 
 def test_light_far_behind_the_camera():
@@ -76,7 +118,7 @@ def test_light_far_behind_the_camera():
         info.light.SetConeAngle(4.0)
     args = render(prepare=prepare)
     assert args[4].max() > 0.0
-    assert error_against_reference(*args[:5]) < 0.02
+    assert error_against_reference(*args[:5]) < bound(0.02)
 
 
 @pytest.mark.parametrize("angle", [0.5, 89.0])
@@ -89,11 +131,11 @@ def test_extreme_cone_angles(angle):
         # A 0.5 degree cone is a pencil about 5 cm wide at the floor: a few pixels; the
         # comparison is over those pixels.
         assert image.max() > 0.0
-        assert error_against_reference(*args[:5]) < 0.05
+        assert error_against_reference(*args[:5]) < bound(0.05)
     else:
         # 89 degrees: the shadow-map frustum is 178 degrees wide, so a texel covers a large
         # solid angle near the edge of the cone; the error stays bounded.
-        assert error_against_reference(*args[:5]) < 0.05
+        assert error_against_reference(*args[:5]) < bound(0.05)
 
 
 @pytest.mark.parametrize("sigma", [0.0, 1e-6, 1.0, 1e3])
@@ -108,7 +150,7 @@ def test_extinction_from_none_to_opaque(sigma):
         assert image.max() < 1e-30
         assert pixels.max() == 0
     else:
-        assert error_against_reference(*args[:5]) < 0.02
+        assert error_against_reference(*args[:5]) < bound(0.02)
 
 
 @pytest.mark.parametrize("intensity", [1e-6, 1e6])
@@ -116,14 +158,17 @@ def test_extreme_intensities(intensity):
     def prepare(renderer, info, shafts):
         info.light.SetIntensity(intensity)
     args = render(prepare=prepare)
-    assert error_against_reference(*args[:5]) < 0.01
+    assert error_against_reference(*args[:5]) < bound(0.01)
 
 
 @pytest.mark.parametrize("slices", [1, 4096])
-def test_one_slice_and_the_maximum(slices):
+def test_one_slice_and_the_maximum(method, slices):
+    if method not in ("slices", "ray-march"):
+        pytest.skip("slices / steps are SLICES and RAY_MARCH parameters")
     args = render(NumberOfSlices=slices)
     renderer, window, info, shafts, image, _ = args
-    assert shafts.GetLastNumberOfSlicesDrawn() == slices
+    # RAY_MARCH: one slab over the lit range, `slices` steps per pixel.
+    assert shafts.GetLastNumberOfSlicesDrawn() == (slices if method == "slices" else 1)
     error = error_against_reference(*args[:5])
     # One slab: the whole lit depth range in one product-rule segment per pixel (a documented
     # degradation: about 30% RMS, the energy within 10%); 4096: converged.
@@ -133,7 +178,9 @@ def test_one_slice_and_the_maximum(slices):
 
 
 @pytest.mark.parametrize("size", [64, 16384])
-def test_smallest_and_largest_shadow_map(size):
+def test_smallest_and_largest_shadow_map(method, size):
+    if method not in ("slices", "ray-march"):
+        pytest.skip("only SLICES and RAY_MARCH use a shadow map")
     args = render(ShadowMapSize=size)
     renderer, window, info, shafts, image, _ = args
     error = error_against_reference(*args[:5])
@@ -151,6 +198,7 @@ def test_far_to_near_ratio_of_a_million():
     shafts = vtkLightShaftPass()
     shafts.SetScatteringCoefficient(0.05)
     shafts.SetNumberOfSlices(256)
+    use_method(shafts)
     renderer.SetPass(shafts)
     window.Render()
     near_used, far_used = camera.GetClippingRange()
@@ -160,7 +208,7 @@ def test_far_to_near_ratio_of_a_million():
     assert np.all(np.isfinite(image))
     # 24-bit-like depth at near = 1e-6 far resolves the floor and sphere only coarsely; the
     # pass reconstructs surface distances from that depth buffer, the reference is exact.
-    assert error_against_reference(renderer, window, info, shafts, image) < 0.05
+    assert error_against_reference(renderer, window, info, shafts, image) < bound(0.05)
 
 
 @pytest.mark.parametrize("size", [(1, 1), (4096, 4096)])
@@ -170,6 +218,7 @@ def test_tiny_and_huge_windows(size):
     shafts = vtkLightShaftPass()
     shafts.SetScatteringCoefficient(0.05)
     shafts.SetNumberOfSlices(32)
+    use_method(shafts)
     renderer.SetPass(shafts)
     window.Render()
     assert shafts.GetLastGLErrorCount() == 0
@@ -193,7 +242,7 @@ def test_occluder_touching_the_light():
         actor.SetMapper(mapper)
         renderer.AddActor(actor)
     renderer, window, info, shafts, image, _ = render(prepare=prepare)
-    assert shafts.GetLastShadowMapRendered()
+    assert shafts.GetLastShadowMapRendered() == (_method in ("slices", "ray-march"))
     assert image.max() > 0.0
 
 
@@ -212,6 +261,7 @@ def test_degenerate_scene():
     scenes.add_spotlight(renderer, (0.5, 6.0, 0.0), (0.0, 0.0, 0.0))
     renderer.ResetCamera()
     shafts = vtkLightShaftPass()
+    use_method(shafts)
     renderer.SetPass(shafts)
     window.Render()
     assert shafts.GetLastGLErrorCount() == 0

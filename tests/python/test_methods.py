@@ -1,0 +1,382 @@
+"""The methods (SetMethod): parameters, accuracy against the float64 reference with a stated
+bound per method, what each computes and skips, and invariants that must hold for all of them.
+
+Scene: scenes.sphere_and_floor at 320x240, the accuracy tests' medium, no jitter or blur unless
+a test says otherwise. Bounds, with what was measured on llvmpipe (README "Methods"):
+- RAY_MARCH, 512 steps, no interleave: 1% (measured 0.045%); error falls with steps;
+  interleaving (2x2, 3x3, 4x4 at 16 steps) beats no interleave at 16 steps (measured 0.53 /
+  0.57 / 0.69% against 1.04%).
+- ANALYTIC against the unshadowed reference: 1e-3 (measured 2e-5 to 8e-5 over phase
+  functions, attenuation, spot exponent and a thick medium; the rest is the sphere's facets).
+- RADIAL_BLUR against the shadowed reference: 10% (measured 6.2%), and better than ignoring the
+  shadow (ANALYTIC: 13.4%).
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from lightshafts import scenes, vtkLightShaftPass
+
+import lightshaft_reference as ref
+import render_helpers as rh
+
+METHODS = {
+    "slices": vtkLightShaftPass.SLICES,
+    "ray-march": vtkLightShaftPass.RAY_MARCH,
+    "radial-blur": vtkLightShaftPass.RADIAL_BLUR,
+    "analytic": vtkLightShaftPass.ANALYTIC,
+    "automatic": vtkLightShaftPass.AUTOMATIC,
+}
+
+
+def render_scene(prepare=None, width=320, height=240, **params):
+    renderer, window = rh.make_window(width, height)
+    info = scenes.sphere_and_floor(renderer)
+    shafts = rh.plain_slab_pass(sigma_a=(0.02, 0.01, 0.03), slices=128, **params)
+    if prepare:
+        prepare(renderer, info, shafts)
+        renderer.ResetCameraClippingRange()
+    renderer.SetPass(shafts)
+    window.Render()
+    assert shafts.GetLastGLErrorCount() == 0
+    return renderer, window, info, shafts
+
+
+def error(renderer, window, info, shafts, shadows=True, reference=None):
+    if reference is None:
+        reference = rh.reference_for(renderer, window, info, shafts, shadows=shadows)
+    image = rh.in_scatter(shafts)
+    assert np.all(np.isfinite(image))
+    relative, pixels = ref.relative_rms_error(image, reference)
+    assert pixels > 500
+    return relative
+
+
+# --- parameters -----------------------------------------------------------------------------
+
+def test_method_defaults_and_names():
+    p = vtkLightShaftPass()
+    assert p.GetMethod() == vtkLightShaftPass.SLICES
+    assert p.GetNumberOfSteps() == 16
+    assert p.GetInterleaveSize() == 2
+    assert p.GetRadialSamples() == 64
+    assert (p.GetDecay(), p.GetDensity(), p.GetWeight()) == (1.0, 1.0, 1.0)
+    assert p.GetRadialJitter()
+    assert p.GetLastMethod() == -1
+    for name, value in METHODS.items():
+        assert vtkLightShaftPass.GetMethodName(value) == name
+    assert vtkLightShaftPass.GetMethodName(99) == "none"
+
+
+def test_named_method_setters_and_clamping():
+    p = vtkLightShaftPass()
+    for setter, value in [("RayMarch", 1), ("RadialBlur", 2), ("Analytic", 3), ("Automatic", 4),
+                          ("Slices", 0)]:
+        getattr(p, "SetMethodTo" + setter)()
+        assert p.GetMethod() == value
+    p.SetMethod(-3)
+    assert p.GetMethod() == vtkLightShaftPass.SLICES
+    p.SetMethod(17)
+    assert p.GetMethod() == vtkLightShaftPass.AUTOMATIC
+    for name, low, high, expect in [("NumberOfSteps", 0, 10**6, (1, 4096)),
+                                    ("InterleaveSize", 0, 99, (1, 8)),
+                                    ("RadialSamples", -5, 10**6, (1, 1024)),
+                                    ("Decay", -1.0, 2.0, (0.0, 1.0)),
+                                    ("Density", -1.0, 2.0, (0.0, 1.0)),
+                                    ("Weight", -1.0, 2.0, (0.0, 1.0))]:
+        getattr(p, "Set" + name)(low)
+        assert getattr(p, "Get" + name)() == expect[0], name
+        getattr(p, "Set" + name)(high)
+        assert getattr(p, "Get" + name)() == expect[1], name
+    p.RadialJitterOff()
+    assert not p.GetRadialJitter()
+
+
+@pytest.mark.parametrize("name", ["Decay", "Density", "Weight"])
+def test_non_finite_radial_controls_refused(messages, name):
+    p = vtkLightShaftPass()
+    log = messages(p)
+    getattr(p, "Set" + name)(0.5)
+    for bad in (math.nan, math.inf):
+        getattr(p, "Set" + name)(bad)
+        assert getattr(p, "Get" + name)() == 0.5
+    assert len(log.errors) == 2 and all(name in m for m in log.errors)
+
+
+# --- accuracy -------------------------------------------------------------------------------
+
+def test_ray_march_matches_the_reference_and_converges():
+    renderer, window, info, shafts = render_scene(Method=vtkLightShaftPass.RAY_MARCH,
+                                                  InterleaveSize=1)
+    reference = rh.reference_for(renderer, window, info, shafts)
+    errors = []
+    for steps in (8, 32, 128, 512):
+        shafts.SetNumberOfSteps(steps)
+        window.Render()
+        assert shafts.GetLastMethod() == vtkLightShaftPass.RAY_MARCH
+        assert shafts.GetLastNumberOfSlicesDrawn() == 1  # one slab over the lit range
+        assert shafts.GetLastShadowMapRendered()
+        errors.append(error(renderer, window, info, shafts, reference=reference))
+    assert all(a > b for a, b in zip(errors, errors[1:])), errors
+    assert errors[-1] < 0.01
+    assert ref.energy_error(rh.in_scatter(shafts), reference) < 0.005
+
+
+def test_interleaved_sampling_beats_the_same_steps_without_it():
+    renderer, window, info, shafts = render_scene(Method=vtkLightShaftPass.RAY_MARCH,
+                                                  NumberOfSteps=16, InterleaveSize=1)
+    reference = rh.reference_for(renderer, window, info, shafts)
+    plain = error(renderer, window, info, shafts, reference=reference)
+    assert shafts.GetLastNumberOfPostPasses() == 0
+    for size in (2, 3, 4):
+        shafts.SetInterleaveSize(size)
+        window.Render()
+        assert shafts.GetLastNumberOfPostPasses() == 2  # the two gather passes
+        interleaved = error(renderer, window, info, shafts, reference=reference)
+        assert interleaved < 0.8 * plain, (size, interleaved, plain)
+        assert interleaved < 0.01
+
+
+@pytest.mark.parametrize("case", ["isotropic", "henyey-greenstein", "rayleigh", "inverse-square",
+                                  "spot-exponent", "thick", "no-extinction"])
+def test_analytic_is_exact_without_shadows(case):
+    def prepare(renderer, info, shafts):
+        if case == "henyey-greenstein":
+            shafts.SetPhaseFunctionToHenyeyGreenstein()
+            shafts.SetAnisotropy(0.6)
+        elif case == "rayleigh":
+            shafts.SetPhaseFunctionToRayleigh()
+        elif case == "inverse-square":
+            info.light.SetAttenuationValues(0.0, 0.0, 1.0)
+        elif case == "spot-exponent":
+            info.light.SetExponent(5.0)
+        elif case == "thick":
+            shafts.SetScatteringCoefficient(2.0)
+        elif case == "no-extinction":
+            shafts.SetScatteringCoefficient(1e-7)
+            shafts.SetAbsorptionCoefficient(0.0)
+    renderer, window, info, shafts = render_scene(prepare, Method=vtkLightShaftPass.ANALYTIC)
+    assert shafts.GetLastMethod() == vtkLightShaftPass.ANALYTIC
+    assert not shafts.GetLastShadowMapRendered()
+    assert error(renderer, window, info, shafts, shadows=False) < 1e-3
+
+
+def remove_props(renderer, info, shafts):
+    renderer.RemoveAllViewProps()
+
+
+def test_automatic_takes_the_exact_path_when_nothing_shadows():
+    renderer, window, info, shafts = render_scene(remove_props, Method=vtkLightShaftPass.AUTOMATIC)
+    assert shafts.GetLastMethod() == vtkLightShaftPass.ANALYTIC
+    assert shafts.GetLastNumberOfShadowCasters() == 0
+    reference = rh.reference_for(renderer, window, info, shafts, with_props=False)
+    assert error(renderer, window, info, shafts, reference=reference) < 1e-3
+
+
+def test_automatic_uses_slices_with_casters_or_noise():
+    renderer, window, info, shafts = render_scene(Method=vtkLightShaftPass.AUTOMATIC)
+    assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES
+    assert shafts.GetLastShadowMapRendered()
+    renderer.RemoveAllViewProps()
+    shafts.SetNoiseAmplitude(0.5)
+    window.Render()
+    assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES
+    assert "noise" in shafts.GetLastShaderVariant()
+
+
+def test_analytic_warns_once_when_props_could_shadow(messages):
+    renderer, window, info, shafts = render_scene()
+    log = messages(shafts)
+    shafts.SetMethodToAnalytic()
+    window.Render()
+    window.Render()
+    warnings = [m for m in log.warnings if "ANALYTIC ignores shadows" in m]
+    assert len(warnings) == 1
+
+
+def test_radial_blur_shadows_approximately():
+    renderer, window, info, shafts = render_scene(Method=vtkLightShaftPass.RADIAL_BLUR)
+    assert shafts.GetLastMethod() == vtkLightShaftPass.RADIAL_BLUR
+    assert not shafts.GetLastShadowMapRendered()
+    assert shafts.GetLastNumberOfPostPasses() == 2  # occlusion pre-pass and radial walk
+    reference = rh.reference_for(renderer, window, info, shafts)
+    radial = error(renderer, window, info, shafts, reference=reference)
+    blurred = rh.in_scatter(shafts)
+    shafts.SetMethodToAnalytic()
+    window.Render()
+    unshadowed = error(renderer, window, info, shafts, reference=reference)
+    assert radial < 0.10
+    assert radial < 0.6 * unshadowed, (radial, unshadowed)
+    # It only ever darkens the unshadowed integral.
+    assert np.all(blurred <= rh.in_scatter(shafts) * (1 + 1e-6) + 1e-12)
+
+
+def test_radial_blur_is_the_analytic_image_when_nothing_can_occlude():
+    renderer, window, info, shafts = render_scene(remove_props,
+                                                  Method=vtkLightShaftPass.RADIAL_BLUR)
+    assert shafts.GetLastNumberOfPostPasses() == 0  # no occlusion pass, no walk
+    radial = rh.in_scatter(shafts)
+    shafts.SetMethodToAnalytic()
+    window.Render()
+    np.testing.assert_array_equal(radial, rh.in_scatter(shafts))
+
+
+def test_radial_blur_weight_zero_and_light_behind_the_camera_give_the_analytic_image():
+    renderer, window, info, shafts = render_scene(Method=vtkLightShaftPass.RADIAL_BLUR,
+                                                  Weight=0.0)
+    weightless = rh.in_scatter(shafts)
+    shafts.SetMethodToAnalytic()
+    window.Render()
+    np.testing.assert_array_equal(weightless, rh.in_scatter(shafts))
+
+    # Light behind the camera: its projection would mirror; the blur fades out entirely.
+    info.light.SetPosition(0.0, 3.5, 60.0)
+    info.light.SetFocalPoint(0.0, 1.5, 0.0)
+    info.light.SetConeAngle(4.0)
+    window.Render()
+    analytic = rh.in_scatter(shafts)
+    shafts.SetMethodToRadialBlur()
+    shafts.SetWeight(1.0)
+    window.Render()
+    assert shafts.GetLastGLErrorCount() == 0
+    assert analytic.max() > 0.0
+    np.testing.assert_array_equal(rh.in_scatter(shafts), analytic)
+
+
+def test_radial_blur_with_the_light_off_screen():
+    def prepare(renderer, info, shafts):
+        camera = renderer.GetActiveCamera()
+        camera.SetFocalPoint(0.0, 0.5, 0.0)
+        camera.SetPosition(0.0, 1.5, 9.0)  # the light (y = 6) projects above the top edge
+    renderer, window, info, shafts = render_scene(prepare, Method=vtkLightShaftPass.RADIAL_BLUR)
+    camera = renderer.GetActiveCamera()
+    renderer.SetWorldPoint(*info.light.GetPosition(), 1.0)
+    renderer.WorldToDisplay()
+    assert renderer.GetDisplayPoint()[1] > 240  # really off-screen
+    assert error(renderer, window, info, shafts) < 0.3
+
+
+def test_radial_controls_change_the_image_deterministically():
+    renderer, window, info, shafts = render_scene(Method=vtkLightShaftPass.RADIAL_BLUR)
+    first = rh.in_scatter(shafts)
+    window.Render()
+    np.testing.assert_array_equal(first, rh.in_scatter(shafts))  # stochastic, but fixed
+    for name, value in [("Decay", 0.9), ("Density", 0.5), ("RadialSamples", 8),
+                        ("RadialJitter", False)]:
+        getattr(shafts, "Set" + name)(value)
+        window.Render()
+        assert not np.array_equal(first, rh.in_scatter(shafts)), name
+        first = rh.in_scatter(shafts)
+
+
+# --- invariants and what is computed ---------------------------------------------------------
+
+@pytest.mark.parametrize("method", list(METHODS))
+def test_zero_medium_and_zero_exposure_leave_the_scene_identical(method):
+    renderer, window = rh.make_window(200, 150)
+    scenes.sphere_and_floor(renderer, sphere_resolution=64)
+    window.Render()
+    plain = rh.screenshot(window)
+    shafts = vtkLightShaftPass()
+    shafts.SetMethod(METHODS[method])
+    shafts.SetScatteringCoefficient(0.0)
+    renderer.SetPass(shafts)
+    window.Render()
+    np.testing.assert_array_equal(rh.screenshot(window), plain)
+    shafts.SetScatteringCoefficient(0.1)
+    shafts.SetExposure(0.0)
+    shafts.AttenuateSceneOff()
+    window.Render()
+    assert shafts.GetLastGLErrorCount() == 0
+    assert rh.in_scatter(shafts).max() > 0.0
+    np.testing.assert_array_equal(rh.screenshot(window), plain)
+
+
+@pytest.mark.parametrize("method", list(METHODS))
+def test_every_method_survives_resizes_and_viewports_without_gl_errors(method):
+    renderer, window = rh.make_window(160, 120)
+    scenes.sphere_and_floor(renderer, sphere_resolution=32)
+    shafts = vtkLightShaftPass()
+    shafts.SetMethod(METHODS[method])
+    shafts.SetDownsampleFactor(2)
+    renderer.SetPass(shafts)
+    for size in [(160, 120), (1, 1), (97, 61), (160, 120)]:
+        window.SetSize(*size)
+        window.Render()
+        assert shafts.GetLastGLErrorCount() == 0
+        image = rh.in_scatter(shafts)
+        assert image.shape == (size[1], size[0], 3)
+        assert np.all(np.isfinite(image))
+    renderer.SetViewport(0.25, 0.0, 1.0, 0.5)
+    window.Render()
+    assert shafts.GetLastGLErrorCount() == 0
+    assert tuple(shafts.GetLastViewportSize()) == (120, 60)
+    shafts.ReleaseGraphicsResources(window)
+    shafts.ReleaseGraphicsResources(window)
+    window.Render()
+    assert shafts.GetLastGLErrorCount() == 0
+
+
+def test_each_method_compiles_only_what_it_uses():
+    renderer, window, info, shafts = render_scene()
+    variants = {}
+    for name, value in METHODS.items():
+        shafts.SetMethod(value)
+        shafts.JitterOn()
+        window.Render()
+        variants[name] = shafts.GetLastShaderVariant()
+        assert variants[name].startswith("method=")
+    assert "shadow" in variants["slices"] and "jitter" in variants["slices"]
+    assert "shadow" in variants["ray-march"] and "jitter" not in variants["ray-march"]
+    for name in ("radial-blur", "analytic"):
+        assert "shadow" not in variants[name] and "jitter" not in variants[name]
+    assert "LIGHTSHAFT_RAY_MARCH" not in variants["slices"]
+    shafts.SetMethodToAnalytic()
+    window.Render()
+    source = shafts.GetLastSliceShaderSource()
+    assert "#define LIGHTSHAFT_ANALYTIC" in source
+    assert "#define LIGHTSHAFT_SHADOW" not in source
+
+
+@pytest.mark.parametrize("method", ["ray-march", "radial-blur", "analytic"])
+def test_cookie_colours_the_shafts_in_every_method(method):
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    from vtkmodules.vtkRenderingCore import vtkTexture
+    # Left half of the light's square red, right half blue.
+    size = 64
+    rgb = np.zeros((size, size, 3), np.uint8)
+    rgb[:, : size // 2, 0] = 255
+    rgb[:, size // 2:, 2] = 255
+    image = vtkImageData()
+    image.SetDimensions(size, size, 1)
+    image.GetPointData().SetScalars(numpy_to_vtk(rgb.reshape(-1, 3), deep=1))
+    cookie = vtkTexture()
+    cookie.SetInputData(image)
+    renderer, window, info, shafts = render_scene(Method=METHODS[method])
+    plain = rh.in_scatter(shafts)
+    shafts.SetCookie(cookie)
+    window.Render()
+    assert "cookie" in shafts.GetLastShaderVariant()
+    coloured = rh.in_scatter(shafts)
+    assert np.all(np.isfinite(coloured))
+    # Green is gone, red and blue each keep a part of the uncoloured shafts.
+    assert coloured[..., 1].max() < 1e-3 * plain[..., 1].max()
+    assert coloured[..., 0].sum() > 0.2 * plain[..., 0].sum()
+    assert coloured[..., 2].sum() > 0.2 * plain[..., 2].sum()
+
+
+@pytest.mark.parametrize("method", ["ray-march", "radial-blur", "analytic"])
+def test_noise_keeps_the_mean_in_every_method(method):
+    renderer, window, info, shafts = render_scene(Method=METHODS[method])
+    plain = rh.in_scatter(shafts).sum()
+    shafts.SetNoiseAmplitude(1.0)
+    window.Render()
+    noisy = rh.in_scatter(shafts)
+    assert "noise" in shafts.GetLastShaderVariant()
+    assert abs(noisy.sum() / plain - 1.0) < 0.05
+    shafts.SetTime(3.0)
+    window.Render()
+    assert not np.array_equal(noisy, rh.in_scatter(shafts))
