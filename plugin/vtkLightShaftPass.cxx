@@ -43,6 +43,7 @@
 #include "vtkLightShaftCommon.h"
 #include "vtkLightShaftCompositeFS.h"
 #include "vtkLightShaftDepthDownsampleFS.h"
+#include "vtkLightShaftIntegrand.h"
 #include "vtkLightShaftNoise.h"
 #include "vtkLightShaftOcclusionFS.h"
 #include "vtkLightShaftRadialBlurFS.h"
@@ -348,6 +349,7 @@ std::string WithFeatures(const char* source, const std::vector<std::string>& def
   std::string out = source;
   vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Features", JoinDefines(defines));
   vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Common", vtkLightShaftCommon);
+  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Integrand", vtkLightShaftIntegrand);
   return out;
 }
 
@@ -1652,6 +1654,7 @@ vtkShaderProgram* vtkLightShaftPass::Internals::ReadySliceProgram(vtkLightShaftP
   feature(cookie, "LIGHTSHAFT_COOKIE", "cookie");
   feature(noise, "LIGHTSHAFT_NOISE", "noise");
   feature(method == SLICES && self.Jitter, "LIGHTSHAFT_JITTER", "jitter");
+  feature(method == SLICES && self.LatticeResolution > 0, "LIGHTSHAFT_LATTICE", "lattice");
   if (this->EightBitThisFrame)
   {
     defines.emplace_back("LIGHTSHAFT_ACCUMULATE_8BIT");
@@ -1669,7 +1672,8 @@ vtkShaderProgram* vtkLightShaftPass::Internals::ReadySliceProgram(vtkLightShaftP
     return cache->ReadyShaderProgram(this->SliceProgram);
   }
   const std::string fragment = WithFeatures(vtkLightShaftSliceFS, defines);
-  this->SliceProgram = cache->ReadyShaderProgram(vtkLightShaftSliceVS, fragment.c_str(), "");
+  const std::string vertex = WithFeatures(vtkLightShaftSliceVS, defines);
+  this->SliceProgram = cache->ReadyShaderProgram(vertex.c_str(), fragment.c_str(), "");
   this->SliceSource = fragment;
   this->SliceKey = key;
   if (!this->SliceProgram || !this->SliceProgram->GetCompiled())
@@ -1895,7 +1899,9 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   // slab, and footprints covering two thicknesses.
   const int drawnSlabs = jitter ? slices + 1 : slices;
 
-  // Slabs: for each, the screen footprint of the lit polytope between its two depths.
+  // Slabs: for each, the screen footprint of the lit polytope between its two depths (as a
+  // lattice of n x n cells when the smooth factors are evaluated per lattice vertex).
+  const int lattice = slabs ? self.LatticeResolution : 0;
   std::vector<float>& vertices = this->SliceVertices;
   vertices.clear();
   std::vector<glm::dvec2> footprint;
@@ -1938,6 +1944,40 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
       continue;
     }
     ++drawn;
+    if (lattice > 0)
+    {
+      // The lattice spans the footprint's bounding rectangle (fragments outside the light's
+      // volume are discarded by the cone test, as at the hull's edges).
+      glm::dvec2 low = hull[0];
+      glm::dvec2 high = hull[0];
+      for (const glm::dvec2& p : hull)
+      {
+        low = glm::min(low, p);
+        high = glm::max(high, p);
+      }
+      auto corner = [&](int i, int j)
+      { return low + (high - low) * glm::dvec2(double(i) / lattice, double(j) / lattice); };
+      for (int j = 0; j < lattice; ++j)
+      {
+        for (int i = 0; i < lattice; ++i)
+        {
+          for (const glm::dvec2& p : { corner(i, j),
+                 corner(i + 1, j),
+                 corner(i + 1, j + 1),
+                 corner(i, j),
+                 corner(i + 1, j + 1),
+                 corner(i, j + 1) })
+          {
+            vertices.insert(vertices.end(),
+              { static_cast<float>(p.x),
+                static_cast<float>(p.y),
+                static_cast<float>(k),
+                static_cast<float>(za) });
+          }
+        }
+      }
+      continue;
+    }
     for (size_t i = 1; i + 1 < hull.size(); ++i)
     {
       for (const glm::dvec2& p : { hull[0], hull[i], hull[i + 1] })
@@ -1992,6 +2032,10 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   program->SetUniformf("slabEnd", static_cast<float>(deepest));
   program->SetUniformf("slabThickness", static_cast<float>(thickness));
   program->SetUniformf("lastSlab", static_cast<float>(drawnSlabs - 1));
+  if (lattice > 0)
+  {
+    program->SetUniformf("latticeSlabShift", jitter ? -0.5f : 0.0f);
+  }
   slabDepth->Activate();
   program->SetUniformi("sceneDepth", slabDepth->GetTextureUnit());
   program->SetUniform3f("lightPositionVC", ToFloat3(lightVC).data());
@@ -2557,6 +2601,7 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNumberOfSlices: " << this->MaximumNumberOfSlices << "\n";
   os << indent << "Jitter: " << this->Jitter << "\n";
   os << indent << "Method: " << GetMethodName(this->Method) << "\n";
+  os << indent << "LatticeResolution: " << this->LatticeResolution << "\n";
   os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
   os << indent << "InterleaveSize: " << this->InterleaveSize << "\n";
   os << indent << "RadialSamples: " << this->RadialSamples << "\n";

@@ -389,6 +389,18 @@ public:
 
   ///@{
   /**
+   * SLICES: evaluate the smooth part of the integrand (the mean of phase, spot and extinction
+   * over each slab) at the vertices of an n x n lattice laid over each slab's footprint and
+   * interpolate it, as Chen, Li and Wang do; the closed-form A(r) integral, the cone and
+   * surface clipping, shadow, cookie and noise stay per pixel. In [0, 256]; 0 = per pixel.
+   * Default is 0.
+   */
+  vtkSetClampMacro(LatticeResolution, int, 0, 256);
+  vtkGetMacro(LatticeResolution, int);
+  ///@}
+
+  ///@{
+  /**
    * RAY_MARCH: segments marched per pixel through the lit part of its ray, in [1, 4096].
    * Default is 16.
    */
@@ -530,6 +542,7 @@ protected:
   int DownsampleFactor = 1;
   int AccumulationPrecision = ACCUMULATE_FLOAT32;
   int Method = SLICES;
+  int LatticeResolution = 0;
   int NumberOfSteps = 16;
   int InterleaveSize = 2;
   int RadialSamples = 64;

@@ -5,17 +5,23 @@ uniform mat4 invProjectionDCVC; // inverse of the scene camera's projection (DC 
 uniform vec2 targetSize;        // size of the off-screen targets in pixels
 uniform sampler2D sceneDepth;   // the delegate's depth buffer
 
-// Ray through the centre of pixel `fragCoord` (in target pixels): origin on the camera plane
-// (the eye for a perspective camera), unit direction. Also returns the pixel's NDC.
-void lightShaftViewRay(vec2 fragCoord, out vec3 originVC, out vec3 dirVC, out vec2 ndc)
+// Ray through the point `ndc` of the screen (or the centre of pixel `fragCoord`, in target
+// pixels, whose NDC it also returns): origin on the camera plane (the eye for a perspective
+// camera), unit direction.
+void lightShaftViewRayNDC(vec2 ndc, out vec3 originVC, out vec3 dirVC)
 {
-  ndc = 2.0 * fragCoord / targetSize - 1.0;
   vec4 nearVC = invProjectionDCVC * vec4(ndc, -1.0, 1.0);
   vec4 farVC = invProjectionDCVC * vec4(ndc, 1.0, 1.0);
   nearVC.xyz /= nearVC.w;
   farVC.xyz /= farVC.w;
   dirVC = normalize(farVC.xyz - nearVC.xyz);
   originVC = nearVC.xyz - dirVC * (nearVC.z / dirVC.z);
+}
+
+void lightShaftViewRay(vec2 fragCoord, out vec3 originVC, out vec3 dirVC, out vec2 ndc)
+{
+  ndc = 2.0 * fragCoord / targetSize - 1.0;
+  lightShaftViewRayNDC(ndc, originVC, dirVC);
 }
 
 // Distance along the ray from its origin to the surface whose depth-buffer value is `depth`

@@ -29,18 +29,12 @@ uniform float slabThickness;
 uniform float lastSlab;
 
 //VTK::LightShaft::Common
+//VTK::LightShaft::Integrand
 
-uniform vec3 lightPositionVC;
-uniform vec3 lightAxisVC;      // unit spot direction
-uniform float cosConeAngle;    // cos of the cone half-angle
-uniform float spotExponent;
-uniform vec3 attenuationCoefficients; // c0, c1, c2
-uniform vec3 lightRadiantIntensity;   // intensity * colour
-uniform vec3 sigmaS;
-uniform vec3 sigmaT;
-
-#ifdef LIGHTSHAFT_PHASE_HG
-uniform float anisotropy;
+#ifdef LIGHTSHAFT_LATTICE
+// The smooth factors' mean over this slab, evaluated at the lattice's vertices (Chen, Li and
+// Wang) and interpolated; shadow, cookie and noise stay per pixel.
+in vec3 latticeSmooth;
 #endif
 
 #ifdef LIGHTSHAFT_LIGHT_SPACE
@@ -81,8 +75,6 @@ uniform float maximumSigmaT;    // largest extinction coefficient (more pieces i
 #ifdef LIGHTSHAFT_ACCUMULATE_8BIT
 uniform float accumulationScale; // Exposure: the talk's buffers hold displayed values
 #endif
-
-const float PI = 3.14159265358979;
 
 // The parameter interval of the line m + t dir (m relative to the apex) inside the spot cone's forward nappe.
 // The nappe is convex (half-angle < 90 degrees), so the intersection is one interval.
@@ -234,57 +226,23 @@ float lightShaftAttenuationIntegral(float x0, float x1, float h2)
 vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, float x1)
 {
   // Product rule: the exact integral of A(r) over the segment times the A-weighted mean of the
-  // smooth factors (phase, spot, extinction), the mean taken with 3-point Gauss-Legendre in
-  // t (constant A) or in the equiangular angle phi, x = h tan(phi) (falling A), where those
-  // factors are smooth even when the ray passes close to the light.
+  // smooth factors (phase, spot, extinction; lightShaftSmoothMean).
   float weight = lightShaftAttenuationIntegral(x0, x1, h2);
   bool constantA = attenuationCoefficients.y == 0.0 && attenuationCoefficients.z == 0.0;
   float h = max(sqrt(h2), 1e-6 * max(abs(x0), abs(x1)) + 1e-30);
   float u0 = constantA ? x0 : atan(x0, h);
   float u1 = constantA ? x1 : atan(x1, h);
-  float uMid = 0.5 * (u0 + u1);
-  float uHalf = 0.5 * (u1 - u0);
-  const vec3 nodes = vec3(-0.7745966692, 0.0, 0.7745966692);
-  const vec3 nodeWeights = vec3(0.5555555556, 0.8888888889, 0.5555555556);
-  vec3 smoothSum = vec3(0.0);
-  float weightSum = 0.0;
-  vec3 sampleVC = originVC;
-  float sampleR = 1.0;
-  float sampleSinTheta = 0.0;
-  for (int i = 0; i < 3; ++i)
-  {
-    float u = uMid + uHalf * nodes[i];
-    float x = constantA ? u : h * tan(u);
-    float t = x - b;
-    vec3 pointVC = originVC + t * dirVC;
-    vec3 toPoint = pointVC - lightPositionVC;
-    float r = length(toPoint);
-    vec3 lightDir = toPoint / max(r, 1e-30);
-    float cosAxis = max(dot(lightDir, lightAxisVC), 0.0);
-    float spot = (spotExponent == 0.0) ? 1.0 : pow(cosAxis, spotExponent);
-    float cosTheta = -dot(dirVC, lightDir);
-#if defined(LIGHTSHAFT_PHASE_HG)
-    float hgDenominator = 1.0 + anisotropy * anisotropy - 2.0 * anisotropy * cosTheta;
-    float phase = (1.0 - anisotropy * anisotropy) /
-      (4.0 * PI * hgDenominator * sqrt(hgDenominator));
-#elif defined(LIGHTSHAFT_PHASE_RAYLEIGH)
-    float phase = 3.0 / (16.0 * PI) * (1.0 + cosTheta * cosTheta);
+  vec3 sampleVC;
+  float sampleR;
+  float sampleSinTheta;
+#ifdef LIGHTSHAFT_LATTICE
+  vec3 smoothMean = latticeSmooth;
+  lightShaftNode(originVC, dirVC, b, h, constantA, 0.5 * (u0 + u1), sampleVC, sampleR,
+    sampleSinTheta);
 #else
-    float phase = 1.0 / (4.0 * PI);
+  vec3 smoothMean = lightShaftSmoothMean(originVC, dirVC, b, h, constantA, u0, u1, sampleVC,
+    sampleR, sampleSinTheta);
 #endif
-    // Relative weight of this node in the A-weighted mean (dt/dphi = r^2 / h, h cancels).
-    float a = constantA ? 1.0 :
-      r * r / (attenuationCoefficients.x + r * (attenuationCoefficients.y +
-        attenuationCoefficients.z * r));
-    smoothSum += nodeWeights[i] * a * phase * spot * exp(-sigmaT * (r + t));
-    weightSum += nodeWeights[i] * a;
-    if (i == 1)
-    {
-      sampleVC = pointVC;
-      sampleR = r;
-      sampleSinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
-    }
-  }
 
   // Per-segment light-space factors, once, at the (equiangular) midpoint.
   float visibility = 1.0;
@@ -324,8 +282,7 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
   modulation *= 1.0 + noiseAmplitude * (n1 * n2 - 1.0);
 #endif
 
-  return sigmaS * lightRadiantIntensity * modulation *
-    (weight * visibility / max(weightSum, 1e-30)) * smoothSum;
+  return sigmaS * lightRadiantIntensity * modulation * (weight * visibility) * smoothMean;
 }
 
 // Where the pieces of [x0, x1] start and end: uniform in x (constant A) or in the equiangular

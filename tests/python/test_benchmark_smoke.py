@@ -15,12 +15,20 @@ def test_benchmark_smoke(tmp_path):
     assert result.returncode == 0, result.stderr
     with open(tmp_path / "benchmark.csv") as f:
         rows = list(csv.DictReader(f))
-    assert len(rows) == 4
+    assert len(rows) == 8
+    families = {r["family"] for r in rows}
+    for method in ("slices", "ray march, interleaved", "radial blur", "analytic (no shadows)",
+                   "lattice"):
+        assert method in families  # every method is on the Pareto plot
     assert any(r["over_fetch_floor"] for r in rows)  # the fetch floor was measured
     for row in rows:
         assert float(row["time_ratio"]) > 0.0
     measured = [r for r in rows if r["relative_rmse"]]
-    assert measured and all(0.0 <= float(r["relative_rmse"]) < 0.2 for r in measured)
+    # The shadowed methods are within 20% even at this tiny size; the unshadowed ones are not
+    # meant to be close (their error is the shadow they leave out).
+    shadowed = [r for r in measured if r["family"] not in ("radial blur", "analytic (no shadows)")]
+    assert shadowed and all(0.0 <= float(r["relative_rmse"]) < 0.2 for r in shadowed)
+    assert all(0.0 <= float(r["relative_rmse"]) < 1.0 for r in measured)
     assert all(0.0 < float(r["ssim"]) <= 1.0 for r in measured)
     assert (tmp_path / "images" / "pareto.png").stat().st_size > 10000
     assert "| setting | time ratio |" in (tmp_path / "benchmark.md").read_text()
