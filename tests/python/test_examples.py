@@ -53,3 +53,37 @@ def test_dusty_room_frames_are_reproducible(tmp_path):
     np.testing.assert_array_equal(first[1], again)  # same time, same image
     assert np.abs(first[0].astype(int) - first[2].astype(int)).max() > 0  # the dust moves
     assert (tmp_path / "a" / "dusty_room.ogv").stat().st_size > 1000
+
+
+def test_interactive_demo_replays_recorded_keys(tmp_path):
+    output = tmp_path / "last.png"
+    result = subprocess.run(
+        [sys.executable, os.path.join(EXAMPLES, "interactive_shafts.py"), "--play",
+         os.path.join(EXAMPLES, "interactive_shafts.keys"), "-o", str(output),
+         "--size", "240", "180"],
+        capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stderr
+    assert "ERR|" not in result.stderr, result.stderr
+    reports = [line for line in result.stdout.splitlines() if line.startswith("[")]
+    stats = [line for line in result.stdout.splitlines() if "last frame:" in line]
+    assert len(reports) == len(stats) == 20  # the start and the 19 key presses
+    assert "next / previous method" in result.stdout  # h printed the help
+    assert all("GL errors 0" in line for line in stats)
+    methods = [line.split("method=")[1].split()[0] for line in reports]
+    assert set(methods) == {"slices", "ray-march", "radial-blur", "analytic", "automatic"}
+    assert methods[-1] == "analytic"  # M stepped back from automatic
+    by_key = {line.split("]")[0][1:]: (line, stat) for line, stat in zip(reports, stats)}
+    assert "light=(0.25, 6.0, -0.25)" in by_key["Up"][0]
+    assert "light=(0.25, 6.25, -0.25)" in by_key["Prior"][0]
+    assert "exposure=50" in by_key["plus"][0]
+    assert "slices=128" in by_key["bracketright"][0]  # SLICES: the slice count doubled
+    assert "steps=8" in by_key["bracketleft"][0]  # RAY_MARCH: the steps halved
+    assert "decay=0.99" in by_key["d"][0] and "weight=0.9" in by_key["w"][0]
+    assert "density=1" in by_key["Y"][0]  # clamped at its maximum
+    assert "noise=0.8" in by_key["n"][0] and "time=1" in by_key["t"][0]
+    shadow = dict(zip(methods, stats))  # each method's last frame
+    assert "shadow map yes" in shadow["slices"] and "shadow map yes" in shadow["ray-march"]
+    assert "shadow map no" in shadow["radial-blur"] and "shadow map no" in shadow["analytic"]
+    pixels = read_png(str(output))
+    assert pixels.shape[:2] == (180, 240)
+    assert pixels[..., :3].mean() > 5
