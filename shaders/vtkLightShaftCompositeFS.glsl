@@ -65,6 +65,11 @@ void main()
   color.rgb *= exp(-sigmaT * surfaceDistance);
 #endif
 
-  gl_FragData[0] = vec4(color.rgb + exposure * inScattered, color.a);
+  // Alpha: the shafts are light in front of whatever lies behind, so a pixel is at least as
+  // opaque as its brightest added channel; passes that blend by alpha (vtkToneMappingPass maps
+  // mix(pixel, toned, alpha)) then treat shafts over the background as part of the picture.
+  vec3 added = exposure * inScattered;
+  float coverage = clamp(max(added.r, max(added.g, added.b)), 0.0, 1.0);
+  gl_FragData[0] = vec4(color.rgb + added, color.a + (1.0 - color.a) * coverage);
   gl_FragDepth = depth;
 }

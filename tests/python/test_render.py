@@ -398,3 +398,47 @@ def test_nested_in_another_image_pass_renders_into_its_framebuffer():
     shafts.SetExposure(0.0)
     window.Render()
     assert with_shafts > 1.2 * rh.screenshot(window).astype(int).sum()
+
+
+def test_an_outer_tone_mapping_pass_maps_the_composited_shafts():
+    # vtkToneMappingPass (Reinhard) around the pass maps the image the pass makes on its own:
+    # where the scene is opaque its output is the Reinhard curve of that image; over the
+    # background it maps mix(pixel, curve, alpha), and the pass gives the shafts an alpha (their
+    # brightness), so they are mapped too instead of passing through untouched.
+    from vtkmodules.vtkRenderingOpenGL2 import vtkToneMappingPass
+    renderer, window, info, shafts = shaft_scene(NumberOfSlices=64)
+    shafts.SetExposure(60.0)  # bright shafts, where the curve bends
+    window.Render()
+    alone = rh.screenshot(window).astype(float)
+    tone = vtkToneMappingPass()
+    tone.SetToneMappingType(vtkToneMappingPass.Reinhard)
+    tone.SetDelegatePass(shafts)
+    renderer.SetPass(tone)
+    window.Render()
+    mapped = rh.screenshot(window).astype(float)
+    linear = (alone / 255.0) ** 2.2
+    curve = (linear / (linear + 1.0)) ** (1.0 / 2.2) * 255.0
+    # Opaque pixels: the scene drew a surface there (its depth buffer, from a plain frame).
+    renderer.SetPass(None)
+    window.Render()
+    w, h = window.GetSize()
+    from vtkmodules.vtkCommonCore import vtkFloatArray
+    depth = vtkFloatArray()
+    window.GetZbufferData(0, 0, w - 1, h - 1, depth)
+    surface = np.array([depth.GetValue(i) for i in range(w * h)]).reshape(h, w) < 1.0
+    renderer.SetPass(tone)
+    # Where the pass alone saturates the 8-bit window, the tone mapper's float target kept the
+    # true (brighter) value: compare the unsaturated surface pixels.
+    check = surface & (alone.max(axis=-1) < 250)
+    assert np.mean(check) > 0.2
+    difference = np.abs(mapped - curve)[check].max(axis=-1)
+    assert difference.mean() < 0.5
+    assert difference.max() <= 2.0
+    # Shafts over the background: darkened by the curve in proportion to their brightness.
+    sky = ~surface & (alone.max(axis=-1) > 60) & (alone.max(axis=-1) < 250)
+    assert sky.sum() > 200
+    step = (alone - curve)[sky].mean()
+    assert step > 2.0
+    assert (alone - mapped)[sky].mean() > 0.25 * step
+    renderer.SetPass(None)
+    tone.ReleaseGraphicsResources(window)
