@@ -185,6 +185,37 @@ struct ConvexPolytope
   bool Empty() const { return this->Faces.empty(); }
 };
 
+// The part of a convex polygon inside a counter-clockwise convex polygon (Sutherland-Hodgman).
+std::vector<glm::dvec2> ClipToConvex(std::vector<glm::dvec2> polygon,
+  const std::vector<glm::dvec2>& window)
+{
+  std::vector<glm::dvec2> next;
+  for (size_t e = 0; e < window.size() && !polygon.empty(); ++e)
+  {
+    const glm::dvec2 a = window[e];
+    const glm::dvec2 edge = window[(e + 1) % window.size()] - a;
+    auto side = [&](const glm::dvec2& p) { return edge.x * (p.y - a.y) - edge.y * (p.x - a.x); };
+    next.clear();
+    for (size_t i = 0; i < polygon.size(); ++i)
+    {
+      const glm::dvec2& p = polygon[i];
+      const glm::dvec2& q = polygon[(i + 1) % polygon.size()];
+      const double sp = side(p);
+      const double sq = side(q);
+      if (sp >= 0.0)
+      {
+        next.push_back(p);
+      }
+      if ((sp >= 0.0) != (sq >= 0.0))
+      {
+        next.push_back(p + (q - p) * (sp / (sp - sq)));
+      }
+    }
+    polygon.swap(next);
+  }
+  return polygon;
+}
+
 // 2D convex hull (Andrew's monotone chain), counter-clockwise, no repeated point.
 std::vector<glm::dvec2> ConvexHull(std::vector<glm::dvec2> points)
 {
@@ -1946,8 +1977,8 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
     ++drawn;
     if (lattice > 0)
     {
-      // The lattice spans the footprint's bounding rectangle (fragments outside the light's
-      // volume are discarded by the cone test, as at the hull's edges).
+      // An n x n lattice over the footprint's bounding rectangle, its cells clipped to the
+      // footprint so that no more fragments are drawn than without the lattice.
       glm::dvec2 low = hull[0];
       glm::dvec2 high = hull[0];
       for (const glm::dvec2& p : hull)
@@ -1957,22 +1988,37 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
       }
       auto corner = [&](int i, int j)
       { return low + (high - low) * glm::dvec2(double(i) / lattice, double(j) / lattice); };
+      // Clip against the hull without its near-coincident vertices: the direction of an edge a
+      // rounding error long is noise, and its half-plane would cut a sliver out of the slab.
+      const double tiny = 1e-9 * glm::length(high - low);
+      std::vector<glm::dvec2> window;
+      for (const glm::dvec2& p : hull)
+      {
+        if (window.empty() || glm::length(p - window.back()) > tiny)
+        {
+          window.push_back(p);
+        }
+      }
+      while (window.size() > 1 && glm::length(window.front() - window.back()) <= tiny)
+      {
+        window.pop_back();
+      }
       for (int j = 0; j < lattice; ++j)
       {
         for (int i = 0; i < lattice; ++i)
         {
-          for (const glm::dvec2& p : { corner(i, j),
-                 corner(i + 1, j),
-                 corner(i + 1, j + 1),
-                 corner(i, j),
-                 corner(i + 1, j + 1),
-                 corner(i, j + 1) })
+          const std::vector<glm::dvec2> cell = ClipToConvex(
+            { corner(i, j), corner(i + 1, j), corner(i + 1, j + 1), corner(i, j + 1) }, window);
+          for (size_t c = 1; c + 1 < cell.size(); ++c)
           {
-            vertices.insert(vertices.end(),
-              { static_cast<float>(p.x),
-                static_cast<float>(p.y),
-                static_cast<float>(k),
-                static_cast<float>(za) });
+            for (const glm::dvec2& p : { cell[0], cell[c], cell[c + 1] })
+            {
+              vertices.insert(vertices.end(),
+                { static_cast<float>(p.x),
+                  static_cast<float>(p.y),
+                  static_cast<float>(k),
+                  static_cast<float>(za) });
+            }
           }
         }
       }

@@ -16,6 +16,110 @@ uniform float anisotropy;
 
 const float PI = 3.14159265358979;
 
+// The parameter interval of the line m + t dir (m relative to the apex) inside the spot cone's forward nappe.
+// The nappe is convex (half-angle < 90 degrees), so the intersection is one interval.
+bool lightShaftConeInterval(vec3 m, vec3 dir, out float t0, out float t1)
+{
+  float c2 = cosConeAngle * cosConeAngle;
+  float da = dot(dir, lightAxisVC);
+  float ma = dot(m, lightAxisVC);
+  float lo = -3.0e38;
+  float hi = 3.0e38;
+  // Forward half-space: (m + t dir) . axis >= 0.
+  if (abs(da) > 1e-12)
+  {
+    float tPlane = -ma / da;
+    if (da > 0.0)
+    {
+      lo = tPlane;
+    }
+    else
+    {
+      hi = tPlane;
+    }
+  }
+  else if (ma < 0.0)
+  {
+    return false;
+  }
+  // Double cone: A t^2 + B t + C >= 0.
+  float qa = da * da - c2;
+  float qb = 2.0 * (da * ma - c2 * dot(dir, m));
+  float qc = ma * ma - c2 * dot(m, m);
+  if (abs(qa) < 1e-7)
+  {
+    if (abs(qb) > 1e-30)
+    {
+      float tLine = -qc / qb;
+      if (qb > 0.0)
+      {
+        lo = max(lo, tLine);
+      }
+      else
+      {
+        hi = min(hi, tLine);
+      }
+    }
+    else if (qc < 0.0)
+    {
+      return false;
+    }
+  }
+  else
+  {
+    float disc = qb * qb - 4.0 * qa * qc;
+    if (disc < 0.0)
+    {
+      if (qa < 0.0)
+      {
+        return false;
+      }
+    }
+    else
+    {
+      float q = -0.5 * (qb + (qb >= 0.0 ? 1.0 : -1.0) * sqrt(disc));
+      float rootA = q / qa;
+      float rootB = (q != 0.0) ? qc / q : rootA;
+      float tIn = min(rootA, rootB);
+      float tOut = max(rootA, rootB);
+      if (qa < 0.0)
+      {
+        lo = max(lo, tIn);
+        hi = min(hi, tOut);
+      }
+      else
+      {
+        // Outside [tIn, tOut]: keep the piece on the forward nappe's side.
+        bool before = lo <= tIn;
+        bool after = hi >= tOut;
+        if (before && !after)
+        {
+          hi = min(hi, tIn);
+        }
+        else if (after && !before)
+        {
+          lo = max(lo, tOut);
+        }
+        else if (!before && !after)
+        {
+          return false;
+        }
+        else if (ma + 0.5 * (lo + tIn) * da >= 0.0 && tIn - lo >= hi - tOut)
+        {
+          hi = min(hi, tIn);
+        }
+        else
+        {
+          lo = max(lo, tOut);
+        }
+      }
+    }
+  }
+  t0 = lo;
+  t1 = hi;
+  return t1 > t0;
+}
+
 float lightShaftPhase(float cosTheta)
 {
 #if defined(LIGHTSHAFT_PHASE_HG)

@@ -45,6 +45,15 @@ void main()
   vec3 foot = m - b * dirVC;
   float x0 = nearDepth * tPerDepth + b;
   float x1 = max(farDepth * tPerDepth + b, x0);
+  // The part of the slab inside the cone, as the fragments integrate it (the surface cut is
+  // left to them): near the cone's edge the spot factor inside differs from the whole slab's.
+  float coneIn;
+  float coneOut;
+  if (lightShaftConeInterval(foot, dirVC, coneIn, coneOut) && min(x1, coneOut) > max(x0, coneIn))
+  {
+    x0 = max(x0, coneIn);
+    x1 = min(x1, coneOut);
+  }
   bool constantA = attenuationCoefficients.y == 0.0 && attenuationCoefficients.z == 0.0;
   float h = max(length(foot), 1e-6 * max(abs(x0), abs(x1)) + 1e-30);
   vec3 middleVC;

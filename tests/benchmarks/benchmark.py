@@ -170,9 +170,12 @@ def main():
     parser.add_argument("--size", type=int, nargs=2, default=(480, 360))
     parser.add_argument("--frames", type=int, default=20)
     parser.add_argument("--smoke", action="store_true")
+    parser.add_argument("--families", nargs="+", help="only these families (e.g. slices lattice)")
     args = parser.parse_args()
     scene_names = list(SCENES)
     settings = SETTINGS
+    if args.families:
+        settings = [s for s in SETTINGS if s[0] in args.families]
     if args.smoke:
         args.size, args.frames = (96, 72), 2
         scene_names = scene_names[:1]
