@@ -13,8 +13,59 @@ import vtkmodules.vtkRenderingCore  # noqa: F401
 from .vtkLightShafts import (  # noqa: F401
     vtkLightShaftFetchFloor, vtkLightShaftPass, vtkLightShaftReference)
 
-__all__ = ["vtkLightShaftPass", "vtkLightShaftReference", "vtkLightShaftFetchFloor", "write_png",
-           "show_or_save"]
+__all__ = ["vtkLightShaftPass", "vtkLightShaftReference", "vtkLightShaftFetchFloor",
+           "add_light_shafts", "write_png", "show_or_save"]
+
+_METHODS = {"slices": vtkLightShaftPass.SLICES, "ray-march": vtkLightShaftPass.RAY_MARCH,
+            "radial-blur": vtkLightShaftPass.RADIAL_BLUR, "analytic": vtkLightShaftPass.ANALYTIC,
+            "automatic": vtkLightShaftPass.AUTOMATIC}
+_QUALITIES = ("draft", "interactive", "final")
+
+
+def add_light_shafts(renderer, light=None, quality=None, method=None, **params):
+    """Add light shafts to `renderer` in one line and return the vtkLightShaftPass.
+
+        shafts = add_light_shafts(renderer, light=spot, ScatteringCoefficient=0.05, Exposure=40)
+
+    light: the spotlight (a vtkLight; added to the renderer when it is not there yet), or None
+    for the renderer's first spotlight. quality: "draft", "interactive" or "final" (applied
+    first). method: "slices", "ray-march", "radial-blur", "analytic", "automatic" (or the
+    vtkLightShaftPass constant). Every other keyword is a parameter: Name=value calls
+    SetName(value), a tuple or list is passed as separate arguments (ScatteringCoefficient=(r, g,
+    b)), a bool switches NameOn()/NameOff(). A pass the renderer already had becomes the
+    delegate, so the scene renders as before, with shafts.
+    """
+    shafts = vtkLightShaftPass()
+    if quality is not None:
+        if str(quality).lower() not in _QUALITIES:
+            raise ValueError(f"quality must be one of {_QUALITIES}, not {quality!r}")
+        getattr(shafts, "SetQualityTo" + str(quality).capitalize())()
+    if method is not None:
+        if isinstance(method, str):
+            if method.lower() not in _METHODS:
+                raise ValueError(f"method must be one of {tuple(_METHODS)}, not {method!r}")
+            method = _METHODS[method.lower()]
+        shafts.SetMethod(int(method))
+    for name, value in params.items():
+        setter = getattr(shafts, "Set" + name, None)
+        if setter is None:
+            raise TypeError(f"vtkLightShaftPass has no parameter {name!r} (no Set{name})")
+        if isinstance(value, bool) and hasattr(shafts, name + "On"):
+            getattr(shafts, name + ("On" if value else "Off"))()
+        elif isinstance(value, (tuple, list)):
+            setter(*value)
+        else:
+            setter(value)
+    if light is not None:
+        lights = renderer.GetLights()
+        if not any(lights.GetItemAsObject(i) is light for i in range(lights.GetNumberOfItems())):
+            renderer.AddLight(light)
+        shafts.SetLight(light)
+    previous = renderer.GetPass()
+    if previous is not None:
+        shafts.SetDelegatePass(previous)
+    renderer.SetPass(shafts)
+    return shafts
 
 
 def write_png(window, filename):
