@@ -39,6 +39,12 @@
  * segment's midpoint; the error shrinks as the number of slices grows (docs/accuracy.md).
  * Slab fragments that start behind the scene surface are culled by the depth test.
  *
+ * That is the default method, SLICES. SetMethod() selects another way to compute the same
+ * L_in: RAY_MARCH (per-pixel march with interleaved sampling), RADIAL_BLUR (screen-space
+ * radial blur of an occlusion buffer over the unshadowed integral), ANALYTIC (the unshadowed
+ * integral, exact when nothing occludes) or AUTOMATIC; SetLatticeResolution() evaluates the
+ * slabs' smooth factors on a lattice. README "Methods" has their measured cost and error.
+ *
  * With both coefficients zero, or with no usable light, the pass renders the delegate's image
  * unchanged (pixel-identical; one warning for a missing light).
  *

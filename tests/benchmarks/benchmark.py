@@ -144,15 +144,20 @@ def pareto_plot(rows, path):
     import matplotlib.pyplot as plt
     names = list(dict.fromkeys(r["scene"] for r in rows))
     figure, axes = plt.subplots(1, len(names), figsize=(5 * len(names), 4.2), squeeze=False)
+    families = list(dict.fromkeys(r["family"] for r in rows))
+    colours = plt.cm.tab20.colors
+    markers = "osD^v<>phX*"
     for axis, name in zip(axes[0], names):
-        for family in dict.fromkeys(r["family"] for r in rows):
+        for index, family in enumerate(families):
             points = [(r["time_ratio"], r["relative_rmse"]) for r in rows
                       if r["scene"] == name and r["family"] == family and r["relative_rmse"] != ""]
             if not points:
                 continue
             points.sort()
             xs, ys = zip(*points)
-            axis.plot(xs, [100 * y for y in ys], "o-", label=family, markersize=4)
+            axis.plot(xs, [100 * y for y in ys], "-", marker=markers[index % len(markers)],
+                      color=colours[(2 * index) % 20 + (index // 10) % 2], label=family,
+                      markersize=4)
         axis.set_xscale("log")
         axis.set_yscale("log")
         axis.set_xlabel("frame time / without the pass")
@@ -171,7 +176,15 @@ def main():
     parser.add_argument("--frames", type=int, default=20)
     parser.add_argument("--smoke", action="store_true")
     parser.add_argument("--families", nargs="+", help="only these families (e.g. slices lattice)")
+    parser.add_argument("--replot", action="store_true",
+                        help="only redraw images/pareto.png from the CSV in --output-dir")
     args = parser.parse_args()
+    if args.replot:
+        with open(os.path.join(args.output_dir, "benchmark.csv")) as f:
+            rows = [{k: (float(v) if k in ("time_ratio", "relative_rmse") and v else v)
+                     for k, v in r.items()} for r in csv.DictReader(f)]
+        pareto_plot(rows, os.path.join(args.output_dir, "images", "pareto.png"))
+        return
     scene_names = list(SCENES)
     settings = SETTINGS
     if args.families:
