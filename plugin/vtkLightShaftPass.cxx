@@ -36,6 +36,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkTexture.h"
 #include "vtkTextureObject.h"
+#include "vtkVersionMacros.h"
 #include "vtkWeakPointer.h"
 #include "vtk_glew.h"
 
@@ -1553,6 +1554,13 @@ bool vtkLightShaftPass::Internals::RenderShadowMap(vtkLightShaftPass& self,
   this->ShadowCameraPass->Render(&shadowState);
   ren->SetActiveCamera(sceneCamera);
   ren->SetAutomaticLightCreation(automaticLights);
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
+  // The shadow step set the shaders' lighting uniforms in the light camera's frame and stamped
+  // them with its MTime; vtkOpenGLRenderer::UpdateLightingUniforms only sets them again when
+  // the active camera (or the lights) changed after that stamp. Seen with VTK 9.2 (ParaView
+  // 5.11): a still scene camera kept the light camera's lighting from the second frame on.
+  sceneCamera->Modified();
+#endif
   sceneCamera->UnRegister(&self);
 
   self.LastShadowMapRendered = true;

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # LightShafts quick start for a fresh Debian 12 machine:
 #   1. installs every dependency with apt (needs root: run as root, or it uses sudo),
-#   2. configures, builds and installs LightShafts to /usr/local (C++ package + Python module),
+#   2. configures, builds and installs LightShafts to /usr/local (C++ package + Python module,
+#      and the ParaView plugin in /usr/local/lib/paraview-5.11/plugins/LightShafts),
 #   3. builds the C++ example against the installed package, and
 #   4. renders the example scene offscreen (Xvfb) to window_shafts.png.
 set -euo pipefail
@@ -16,6 +17,7 @@ packages=(
   libvtk9-dev python3-vtk9 libglm-dev
   xvfb xauth libgl1-mesa-dri
   python3-numpy python3-pytest python3-tqdm python3-matplotlib python3-skimage
+  paraview paraview-dev openmpi-bin
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -26,6 +28,21 @@ if [ ${#missing[@]} -gt 0 ]; then
   as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
   as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
     "${missing[@]}" > /dev/null
+fi
+
+# ParaView's Python package (pvbatch scripts, the plugin's wrapping hierarchy) is in
+# python3-paraview, which Conflicts with python3-vtk9 (apt would remove the VTK module's
+# dependencies): fetch that .deb and unpack it privately instead of installing it.
+pv_python=/usr/local/lib/lightshafts/python3-paraview
+if [ ! -d "$pv_python/usr/lib/python3/dist-packages/paraview" ]; then
+  version=$(apt-cache madison python3-paraview | awk 'NR==1 {print $3}')
+  echo "== unpacking python3-paraview $version into $pv_python (not installed: it conflicts with python3-vtk9)"
+  tmp=$(mktemp -d)
+  (cd "$tmp" && apt-get download -qq "python3-paraview=$version" 2>/dev/null) ||
+    (cd "$tmp" && as_root apt-get download -qq "python3-paraview=$version")
+  as_root mkdir -p "$pv_python"
+  as_root dpkg -x "$tmp"/python3-paraview_*.deb "$pv_python"
+  rm -rf "$tmp"
 fi
 
 jobs=$(nproc 2>/dev/null || echo 2)

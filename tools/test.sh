@@ -14,7 +14,7 @@ python_dir=$(sed -n 's/^LIGHTSHAFTS_PYTHON_DESTINATION:STRING=//p' build/CMakeCa
 export PYTHONPATH="$PWD/build/$python_dir${PYTHONPATH:+:$PYTHONPATH}"
 
 status=0
-echo "== C++ tests (ctest)"
+echo "== C++ and ParaView tests (ctest; the ParaView ones when the plugin was built)"
 xvfb-run -a -s "-screen 0 1280x1024x24" ctest --test-dir build --output-on-failure || status=1
 echo "== Python tests (pytest)"
 xvfb-run -a -s "-screen 0 1280x1024x24" /usr/bin/python3 -m pytest -p no:cacheprovider \

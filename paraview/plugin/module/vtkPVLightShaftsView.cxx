@@ -1,0 +1,446 @@
+#include "vtkPVLightShaftsView.h"
+
+#include "vtkImageData.h"
+#include "vtkImageReader2.h"
+#include "vtkImageReader2Factory.h"
+#include "vtkLight.h"
+#include "vtkLightShaftPass.h"
+#include "vtkObjectFactory.h"
+#include "vtkPVImageProcessingChain.h"
+#include "vtkPVSynchronizedRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkTexture.h"
+#include "vtkToneMappingPass.h"
+#include "vtkWeakPointer.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+class vtkPVLightShaftsView::Internals
+{
+public:
+  vtkNew<vtkLightShaftPass> Shafts;
+  vtkNew<vtkPVImageProcessingChain> Chain;
+  // The render view's own tone-mapping pass (private to vtkPVRenderView; see the constructor).
+  vtkSmartPointer<vtkImageProcessingPass> ToneMapping;
+  bool UseToneMapping = false;
+
+  // The additional lights, in the order the Light Inspector added them.
+  std::vector<vtkWeakPointer<vtkLight>> Lights;
+
+  // Sampling as set (the preset, when one is chosen, overrides these in the pass).
+  int NumberOfSlices = 64;
+  int ShadowMapSize = 1024;
+  bool AutomaticSliceCount = false;
+  int MaximumNumberOfSlices = 512;
+  bool Jitter = true;
+  int BlurRadius = 2;
+  int DownsampleFactor = 1;
+  int AccumulationPrecision = vtkLightShaftPass::ACCUMULATE_FLOAT32;
+
+  std::string CookieFileName;
+  double ViewTime = 0.0;
+};
+
+vtkStandardNewMacro(vtkPVLightShaftsView);
+
+//------------------------------------------------------------------------------
+vtkPVLightShaftsView::vtkPVLightShaftsView()
+  : Impl(new Internals)
+{
+  Internals& impl = *this->Impl;
+  vtkPVSynchronizedRenderer* sync = this->SynchronizedRenderers;
+
+  // vtkPVRenderView keeps its vtkToneMappingPass private and swaps it in and out of the
+  // synchronized renderers' one image-processing slot. Borrow it: with the slot empty, turning
+  // tone mapping on puts exactly that pass there. The view's tone-mapping properties (Exposure,
+  // Contrast, ...) keep going to it, and this view chains it after the shafts.
+  if (!sync->GetImageProcessingPass())
+  {
+    this->Superclass::SetUseToneMapping(true);
+    impl.ToneMapping = sync->GetImageProcessingPass();
+    this->Superclass::SetUseToneMapping(false);
+    if (sync->GetImageProcessingPass())
+    {
+      sync->SetImageProcessingPass(nullptr);
+    }
+  }
+  if (!vtkToneMappingPass::SafeDownCast(impl.ToneMapping))
+  {
+    vtkWarningMacro("The render view's tone-mapping pass was not found; tone mapping uses a "
+                    "pass of its own (the view's tone-mapping settings do not reach it).");
+    impl.ToneMapping = vtkSmartPointer<vtkToneMappingPass>::New();
+  }
+
+  // IceT composites depth too, so the shafts stop at the nearest surface of any rank.
+  sync->SetUseDepthBuffer(true);
+  this->UpdateImageProcessing();
+}
+
+//------------------------------------------------------------------------------
+vtkPVLightShaftsView::~vtkPVLightShaftsView()
+{
+  this->Impl->Chain->RemoveAllPasses();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "LightShafts: " << this->LightShafts << "\n";
+  os << indent << "ShaftLight: " << this->ShaftLight << "\n";
+  os << indent << "ShaftQuality: " << this->ShaftQuality << "\n";
+  os << indent << "LinkShaftTimeToAnimation: " << this->LinkShaftTimeToAnimation << "\n";
+  os << indent << "ShaftTime: " << this->ShaftTime << "\n";
+  os << indent << "CookieFileName: " << this->Impl->CookieFileName << "\n";
+  os << indent << "LightShaftPass:\n";
+  this->Impl->Shafts->PrintSelf(os, indent.GetNextIndent());
+}
+
+//------------------------------------------------------------------------------
+vtkLightShaftPass* vtkPVLightShaftsView::GetLightShaftPass()
+{
+  return this->Impl->Shafts;
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::UpdateImageProcessing()
+{
+  Internals& impl = *this->Impl;
+  vtkImageProcessingPass* slot = nullptr;
+  impl.Chain->RemoveAllPasses();
+  if (this->LightShafts)
+  {
+    impl.Chain->AddPass(impl.Shafts);
+    if (impl.UseToneMapping)
+    {
+      impl.Chain->AddPass(impl.ToneMapping);
+    }
+    slot = impl.Chain;
+  }
+  else if (impl.UseToneMapping)
+  {
+    slot = impl.ToneMapping;
+  }
+  if (this->SynchronizedRenderers->GetImageProcessingPass() == slot)
+  {
+    // Same slot, new chain: have the synchronized renderers link it again.
+    this->SynchronizedRenderers->SetImageProcessingPass(nullptr);
+  }
+  this->SynchronizedRenderers->SetImageProcessingPass(slot);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetLightShafts(bool enabled)
+{
+  if (this->LightShafts != enabled)
+  {
+    this->LightShafts = enabled;
+    this->UpdateImageProcessing();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetUseToneMapping(bool use)
+{
+  this->UseToneMapping = use;
+  if (this->Impl->UseToneMapping != use)
+  {
+    this->Impl->UseToneMapping = use;
+    this->UpdateImageProcessing();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::UpdateLight()
+{
+  Internals& impl = *this->Impl;
+  // Forget lights that went away.
+  impl.Lights.erase(std::remove_if(impl.Lights.begin(),
+                      impl.Lights.end(),
+                      [](const vtkWeakPointer<vtkLight>& l) { return l == nullptr; }),
+    impl.Lights.end());
+  vtkLight* light = nullptr;
+  if (this->ShaftLight >= 1 && this->ShaftLight <= static_cast<int>(impl.Lights.size()))
+  {
+    light = impl.Lights[this->ShaftLight - 1];
+  }
+  impl.Shafts->SetLight(light);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetShaftLight(int index)
+{
+  index = std::max(index, 0);
+  if (this->ShaftLight != index)
+  {
+    this->ShaftLight = index;
+    this->UpdateLight();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::AddLight(vtkLight* light)
+{
+  this->Superclass::AddLight(light);
+  if (light)
+  {
+    this->Impl->Lights.emplace_back(light);
+  }
+  this->UpdateLight();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::RemoveLight(vtkLight* light)
+{
+  this->Superclass::RemoveLight(light);
+  auto& lights = this->Impl->Lights;
+  lights.erase(std::remove_if(lights.begin(),
+                 lights.end(),
+                 [light](const vtkWeakPointer<vtkLight>& l) { return l == light; }),
+    lights.end());
+  this->UpdateLight();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetScatteringCoefficient(double r, double g, double b)
+{
+  this->Impl->Shafts->SetScatteringCoefficient(r, g, b);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetAbsorptionCoefficient(double r, double g, double b)
+{
+  this->Impl->Shafts->SetAbsorptionCoefficient(r, g, b);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetPhaseFunction(int phase)
+{
+  this->Impl->Shafts->SetPhaseFunction(phase);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetAnisotropy(double g)
+{
+  this->Impl->Shafts->SetAnisotropy(g);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetShaftExposure(double exposure)
+{
+  this->Impl->Shafts->SetExposure(exposure);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetAttenuateScene(bool attenuate)
+{
+  this->Impl->Shafts->SetAttenuateScene(attenuate);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::UpdateQuality()
+{
+  Internals& impl = *this->Impl;
+  vtkLightShaftPass* shafts = impl.Shafts;
+  shafts->SetNumberOfSlices(impl.NumberOfSlices);
+  shafts->SetShadowMapSize(impl.ShadowMapSize);
+  shafts->SetAutomaticSliceCount(impl.AutomaticSliceCount);
+  shafts->SetMaximumNumberOfSlices(impl.MaximumNumberOfSlices);
+  shafts->SetJitter(impl.Jitter);
+  shafts->SetBlurRadius(impl.BlurRadius);
+  shafts->SetDownsampleFactor(impl.DownsampleFactor);
+  shafts->SetAccumulationPrecision(impl.AccumulationPrecision);
+  switch (this->ShaftQuality)
+  {
+    case DRAFT:
+      shafts->SetQualityToDraft();
+      break;
+    case INTERACTIVE:
+      shafts->SetQualityToInteractive();
+      break;
+    case FINAL:
+      shafts->SetQualityToFinal();
+      break;
+    default:
+      break;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetShaftQuality(int quality)
+{
+  quality = std::min(std::max(quality, static_cast<int>(CUSTOM)), static_cast<int>(FINAL));
+  if (this->ShaftQuality != quality)
+  {
+    this->ShaftQuality = quality;
+    this->UpdateQuality();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetNumberOfSlices(int slices)
+{
+  this->Impl->NumberOfSlices = slices;
+  this->UpdateQuality();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetShadowMapSize(int size)
+{
+  this->Impl->ShadowMapSize = size;
+  this->UpdateQuality();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetAutomaticSliceCount(bool automatic)
+{
+  this->Impl->AutomaticSliceCount = automatic;
+  this->UpdateQuality();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetMaximumNumberOfSlices(int slices)
+{
+  this->Impl->MaximumNumberOfSlices = slices;
+  this->UpdateQuality();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetShaftJitter(bool jitter)
+{
+  this->Impl->Jitter = jitter;
+  this->UpdateQuality();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetShaftBlurRadius(int radius)
+{
+  this->Impl->BlurRadius = radius;
+  this->UpdateQuality();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetShaftDownsampleFactor(int factor)
+{
+  this->Impl->DownsampleFactor = factor;
+  this->UpdateQuality();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetAccumulationPrecision(int precision)
+{
+  this->Impl->AccumulationPrecision = precision;
+  this->UpdateQuality();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetCookieFileName(const char* fileName)
+{
+  Internals& impl = *this->Impl;
+  const std::string name = fileName ? fileName : "";
+  if (name == impl.CookieFileName)
+  {
+    return;
+  }
+  impl.CookieFileName = name;
+  this->Modified();
+  if (name.empty())
+  {
+    impl.Shafts->SetCookie(nullptr);
+    return;
+  }
+  vtkSmartPointer<vtkImageReader2> reader;
+  reader.TakeReference(vtkImageReader2Factory::CreateImageReader2(name.c_str()));
+  if (!reader)
+  {
+    vtkErrorMacro("Cannot read the cookie image '" << name << "': no reader for that file.");
+    impl.Shafts->SetCookie(nullptr);
+    return;
+  }
+  reader->SetFileName(name.c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  if (!image || image->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro("Cannot read the cookie image '" << name << "'.");
+    impl.Shafts->SetCookie(nullptr);
+    return;
+  }
+  vtkNew<vtkImageData> copy;
+  copy->DeepCopy(image);
+  vtkNew<vtkTexture> cookie;
+  cookie->SetInputData(copy);
+  impl.Shafts->SetCookie(cookie);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkPVLightShaftsView::GetCookieFileName()
+{
+  return this->Impl->CookieFileName.c_str();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetNoiseAmplitude(double amplitude)
+{
+  this->Impl->Shafts->SetNoiseAmplitude(amplitude);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetNoiseScale(double scale)
+{
+  this->Impl->Shafts->SetNoiseScale(scale);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetNoiseVelocity1(double u, double v)
+{
+  this->Impl->Shafts->SetNoiseVelocity1(u, v);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetNoiseVelocity2(double u, double v)
+{
+  this->Impl->Shafts->SetNoiseVelocity2(u, v);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::UpdateTime()
+{
+  this->Impl->Shafts->SetTime(
+    this->LinkShaftTimeToAnimation ? this->Impl->ViewTime : this->ShaftTime);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetLinkShaftTimeToAnimation(bool link)
+{
+  if (this->LinkShaftTimeToAnimation != link)
+  {
+    this->LinkShaftTimeToAnimation = link;
+    this->UpdateTime();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetShaftTime(double time)
+{
+  if (this->ShaftTime != time)
+  {
+    this->ShaftTime = time;
+    this->UpdateTime();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetViewTime(double value)
+{
+  this->Superclass::SetViewTime(value);
+  this->Impl->ViewTime = value;
+  this->UpdateTime();
+}

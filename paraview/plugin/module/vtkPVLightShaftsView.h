@@ -1,0 +1,180 @@
+/**
+ * @class   vtkPVLightShaftsView
+ * @brief   ParaView's render view with volumetric light shafts (vtkLightShaftPass).
+ *
+ * A vtkPVRenderView whose synchronized renderers run vtkLightShaftPass in their
+ * image-processing slot, so the shafts are computed from the image and depth of the whole
+ * scene (after IceT compositing when the data is distributed). ParaView 5.11 has one such slot
+ * and the render view's tone mapping uses it too: this view puts a vtkPVImageProcessingChain
+ * there, running the shafts and then the view's own tone-mapping pass when UseToneMapping is
+ * on, so tone mapping (and its exposure, contrast, ... properties) keeps working.
+ *
+ * The pass's parameters are forwarded as view properties (server-manager proxy
+ * "LightShaftsRenderView", label "Render View (Light Shafts)"); see LightShafts.xml for their
+ * ranges and defaults. The scattering light is the view's ShaftLight-th additional light
+ * (ParaView's Light Inspector, 1-based), or with ShaftLight = 0 the first switched-on
+ * spotlight (positional, cone angle < 90 degrees) of the view. The noise's time follows the
+ * view time (the animation time) unless LinkShaftTimeToAnimation is off.
+ *
+ * @sa vtkLightShaftPass vtkPVImageProcessingChain vtkPVRenderView
+ */
+
+#ifndef vtkPVLightShaftsView_h
+#define vtkPVLightShaftsView_h
+
+#include "vtkPVLightShaftsModule.h" // For the export macro
+#include "vtkPVRenderView.h"        // For the base class
+
+#include <memory> // For std::unique_ptr (state lives in Internals)
+
+class vtkLight;
+class vtkLightShaftPass;
+
+class VTKLIGHTSHAFTS_EXPORT vtkPVLightShaftsView : public vtkPVRenderView
+{
+public:
+  static vtkPVLightShaftsView* New();
+  vtkTypeMacro(vtkPVLightShaftsView, vtkPVRenderView);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Quality presets of the ShaftQuality property.
+  enum QualityType
+  {
+    CUSTOM = 0,      ///< the individual sampling properties
+    DRAFT = 1,       ///< vtkLightShaftPass::SetQualityToDraft()
+    INTERACTIVE = 2, ///< vtkLightShaftPass::SetQualityToInteractive()
+    FINAL = 3        ///< vtkLightShaftPass::SetQualityToFinal()
+  };
+
+  /**
+   * The pass the view runs (for C++ users and tests; scripts use the view properties).
+   */
+  vtkLightShaftPass* GetLightShaftPass();
+
+  ///@{
+  /**
+   * Light shafts on or off. Off: the view renders exactly as a plain render view (tone mapping
+   * included). Default is on.
+   */
+  void SetLightShafts(bool enabled);
+  vtkGetMacro(LightShafts, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Which light scatters: 0 = automatic (the first switched-on spotlight of the view), k >= 1
+   * = the k-th additional light (the Light Inspector's list, in the order the lights were
+   * added). A k beyond the list falls back to automatic. Default is 0.
+   */
+  void SetShaftLight(int index);
+  vtkGetMacro(ShaftLight, int);
+  ///@}
+
+  ///@{
+  /**
+   * The additional lights (ParaView's AdditionalLights property, the Light Inspector): hide the
+   * superclass's methods to remember their order for ShaftLight, then forward.
+   */
+  void AddLight(vtkLight* light);
+  void RemoveLight(vtkLight* light);
+  ///@}
+
+  ///@{
+  /**
+   * The medium and the image: forwarded to vtkLightShaftPass (same ranges and defaults;
+   * ShaftExposure is the pass's Exposure, the render view's own Exposure being tone mapping's).
+   */
+  void SetScatteringCoefficient(double r, double g, double b);
+  void SetAbsorptionCoefficient(double r, double g, double b);
+  void SetPhaseFunction(int phase);
+  void SetAnisotropy(double g);
+  void SetShaftExposure(double exposure);
+  void SetAttenuateScene(bool attenuate);
+  ///@}
+
+  ///@{
+  /**
+   * Sampling: forwarded to vtkLightShaftPass, unless ShaftQuality is a preset (DRAFT,
+   * INTERACTIVE, FINAL), which then decides slices, jitter, blur, downsampling and shadow-map
+   * size (the values set here are kept and come back with CUSTOM). Default is CUSTOM with the
+   * pass's defaults (which are the Interactive preset).
+   */
+  void SetShaftQuality(int quality);
+  vtkGetMacro(ShaftQuality, int);
+  void SetNumberOfSlices(int slices);
+  void SetShadowMapSize(int size);
+  void SetAutomaticSliceCount(bool automatic);
+  void SetMaximumNumberOfSlices(int slices);
+  void SetShaftJitter(bool jitter);
+  void SetShaftBlurRadius(int radius);
+  void SetShaftDownsampleFactor(int factor);
+  void SetAccumulationPrecision(int precision);
+  ///@}
+
+  ///@{
+  /**
+   * Spotlight cookie read from an image file (any format vtkImageReader2Factory knows: PNG,
+   * JPEG, TIFF, ...); empty or nullptr turns it off; an unreadable file is reported and turns
+   * it off. Default is off.
+   */
+  void SetCookieFileName(const char* fileName);
+  const char* GetCookieFileName();
+  ///@}
+
+  ///@{
+  /**
+   * Scrolling-noise density: forwarded to vtkLightShaftPass.
+   */
+  void SetNoiseAmplitude(double amplitude);
+  void SetNoiseScale(double scale);
+  void SetNoiseVelocity1(double u, double v);
+  void SetNoiseVelocity2(double u, double v);
+  ///@}
+
+  ///@{
+  /**
+   * The noise's time: with LinkShaftTimeToAnimation on (default), the view time (ParaView's
+   * animation time); off, ShaftTime (default 0).
+   */
+  void SetLinkShaftTimeToAnimation(bool link);
+  vtkGetMacro(LinkShaftTimeToAnimation, bool);
+  void SetShaftTime(double time);
+  vtkGetMacro(ShaftTime, double);
+  void SetViewTime(double value) override;
+  ///@}
+
+  /**
+   * Tone mapping, chained after the shafts instead of taking the image-processing slot from
+   * them (hides vtkPVRenderView::SetUseToneMapping; the proxy's UseToneMapping property calls
+   * this one).
+   */
+  void SetUseToneMapping(bool use);
+
+protected:
+  vtkPVLightShaftsView();
+  ~vtkPVLightShaftsView() override;
+
+  bool LightShafts = true;
+  int ShaftLight = 0;
+  int ShaftQuality = CUSTOM;
+  bool LinkShaftTimeToAnimation = true;
+  double ShaftTime = 0.0;
+
+private:
+  vtkPVLightShaftsView(const vtkPVLightShaftsView&) = delete;
+  void operator=(const vtkPVLightShaftsView&) = delete;
+
+  // Puts the chain (or tone mapping alone, or nothing) in the image-processing slot.
+  void UpdateImageProcessing();
+  // Pushes the sampling parameters, then the preset if one is chosen.
+  void UpdateQuality();
+  // Picks the scattering light from ShaftLight.
+  void UpdateLight();
+  // Pushes the linked or fixed time.
+  void UpdateTime();
+
+  class Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+#endif

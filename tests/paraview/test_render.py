@@ -1,0 +1,124 @@
+"""pvbatch test: the plugin loads, LightShaftsRenderView renders shadowed shafts.
+
+Checks, on a spotlight above a floor with a sphere nearly filling its cone:
+  1. the screenshot matches tests/baselines/ParaViewLightShafts.png (mean absolute difference
+     <= MEAN_TOLERANCE levels, <= PIXEL_FRACTION of the pixels off by more than PIXEL_LEVEL);
+  2. shadowed shafts: the in-scatter (shafts on minus off, scene not attenuated) on the cone's
+     axis above the sphere is > LIT_OVER_SHADOW times that below it, and removing the sphere
+     brightens the point below it by > SHADOW_GAIN times;
+  3. LightShafts = 0 is the plain render view (pixel-identical to a RenderView);
+  4. tone mapping chains after the shafts: with UseToneMapping on the shafts are still there
+     (the change tone mapping makes is printed, not asserted: see README, Known issues).
+Usage: pvbatch test_render.py OUTPUT_DIR [--update]
+"""
+
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import lightshafts_pvscene as scene  # noqa: E402
+
+MEAN_TOLERANCE = 1.5
+PIXEL_FRACTION = 0.005
+PIXEL_LEVEL = 12
+LIT_OVER_SHADOW = 3.0
+SHADOW_GAIN = 3.0
+
+BASELINE = os.path.join(scene.ROOT, "tests", "baselines", "ParaViewLightShafts.png")
+
+
+def main():
+    import numpy as np
+    from paraview import simple
+    out = sys.argv[1] if len(sys.argv) > 1 else "."
+    os.makedirs(out, exist_ok=True)
+    update = "--update" in sys.argv
+    failures = []
+
+    scene.load_plugin()
+    view, light, ball = scene.make_scene()
+
+    # 1. Baseline.
+    shot = scene.screenshot(view, os.path.join(out, "ParaViewLightShafts.png"))
+    if update:
+        simple.SaveScreenshot(BASELINE, view, ImageResolution=[scene.WIDTH, scene.HEIGHT])
+        print("baseline updated:", BASELINE)
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from paraview.vtk.util.numpy_support import vtk_to_numpy
+    reader = vtkPNGReader()
+    reader.SetFileName(BASELINE)
+    reader.Update()
+    data = reader.GetOutput()
+    w, h, _ = data.GetDimensions()
+    c = data.GetPointData().GetScalars().GetNumberOfComponents()
+    baseline = vtk_to_numpy(data.GetPointData().GetScalars()).reshape(h, w, c)[::-1, :, :3]
+    mean, fraction, ok = scene.compare_images(shot, baseline.astype(np.float64),
+                                              MEAN_TOLERANCE, PIXEL_FRACTION, PIXEL_LEVEL)
+    print(f"baseline: mean |diff| {mean:.3f} levels (<= {MEAN_TOLERANCE}), "
+          f"{100 * fraction:.3f}% pixels off by > {PIXEL_LEVEL} (<= {100 * PIXEL_FRACTION}%)")
+    if not ok:
+        failures.append("screenshot differs from the baseline")
+
+    # 2. Shadowed shafts, from the in-scatter alone (scene not attenuated).
+    view.AttenuateScene = 0
+    lit_px = scene.to_pixel(view, scene.LIT_POINT)
+    shadow_px = scene.to_pixel(view, scene.SHADOW_POINT)
+    on = scene.screenshot(view, os.path.join(out, "on.png"))
+    view.LightShafts = 0
+    off = scene.screenshot(view, os.path.join(out, "off.png"))
+    view.LightShafts = 1
+    in_scatter = on - off
+    lit = scene.patch_mean(in_scatter, lit_px)
+    shadow = scene.patch_mean(in_scatter, shadow_px)
+    ball.Visibility = 0
+    open_on = scene.screenshot(view, os.path.join(out, "no_occluder_on.png"))
+    view.LightShafts = 0
+    open_off = scene.screenshot(view, os.path.join(out, "no_occluder_off.png"))
+    view.LightShafts = 1
+    ball.Visibility = 1
+    unshadowed = scene.patch_mean(open_on - open_off, shadow_px)
+    print(f"in-scatter: lit cone {lit:.1f} at {lit_px}, occluder's shadow {shadow:.1f} at "
+          f"{shadow_px}, same point without the occluder {unshadowed:.1f} (levels)")
+    if not lit > LIT_OVER_SHADOW * max(shadow, 0.5):
+        failures.append(f"lit cone {lit:.1f} not > {LIT_OVER_SHADOW} x shadow {shadow:.1f}")
+    if not unshadowed > SHADOW_GAIN * max(shadow, 0.5):
+        failures.append(f"no occluder {unshadowed:.1f} not > {SHADOW_GAIN} x shadow {shadow:.1f}")
+    view.AttenuateScene = 1
+
+    # 3. Shafts off = a plain render view.
+    plain = simple.CreateView("RenderView")
+    scene.make_scene(plain)
+    plain_shot = scene.screenshot(plain, os.path.join(out, "plain.png"))
+    view.LightShafts = 0
+    off_shot = scene.screenshot(view, os.path.join(out, "shafts_off.png"))
+    view.LightShafts = 1
+    identical = float(np.abs(plain_shot - off_shot).max())
+    print(f"shafts off vs RenderView: max |diff| {identical}")
+    if identical > 0:
+        failures.append("LightShafts = 0 differs from a plain RenderView")
+    simple.Delete(plain)
+
+    # 4. Tone mapping is chained, not replaced.
+    view.UseToneMapping = 1
+    view.ToneMappingType = 1  # vtkToneMappingPass::Reinhard
+    mapped = scene.screenshot(view, os.path.join(out, "tonemapped.png"))
+    view.LightShafts = 0
+    mapped_off = scene.screenshot(view, os.path.join(out, "tonemapped_off.png"))
+    view.LightShafts = 1
+    view.UseToneMapping = 0
+    tone_change = float(np.abs(mapped - shot).mean())
+    mapped_lit = scene.patch_mean(mapped - mapped_off, lit_px)
+    print(f"tone mapping: mean |change| {tone_change:.2f} levels; shafts under tone mapping "
+          f"{mapped_lit:.1f} levels at the lit point")
+    # Not asserted: vtkToneMappingPass with vtkLightShaftPass as its delegate barely changes the
+    # image (also with VTK 9.1, outside ParaView); see README, Known issues.
+    if mapped_lit < 5.0:
+        failures.append("no shafts with tone mapping on")
+
+    for failure in failures:
+        print("FAIL:", failure)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    scene.finish(main())
