@@ -41,9 +41,10 @@ light.FocalPoint = [0.0, 0.0, 0.0]
 light.ConeAngle = 25.0
 
 view.ScatteringCoefficient = [0.08, 0.07, 0.06]
-view.ShaftExposure = 40.0
+view.ShaftExposure = 100.0
 view.AttenuateScene = 0
 view.ShaftQuality = 3                               # Final preset
+Render(view)  # the first render resets the camera to the data: place it afterwards
 view.CameraPosition = [2.0, 3.5, 14.0]
 view.CameraFocalPoint = [0.0, 2.5, 0.0]
 view.CameraViewUp = [0.0, 1.0, 0.0]

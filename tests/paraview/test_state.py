@@ -34,6 +34,15 @@ VALUES = {
     "NoiseVelocity2": [0.3, 0.05],
     "LinkShaftTimeToAnimation": 0,
     "ShaftTime": 2.5,
+    "ShaftMethod": 1,
+    "LatticeResolution": 8,
+    "NumberOfSteps": 48,
+    "InterleaveSize": 3,
+    "RadialSamples": 32,
+    "Decay": 0.97,
+    "Density": 0.8,
+    "Weight": 0.6,
+    "RadialJitter": 0,
 }
 
 
@@ -74,6 +83,25 @@ def main():
                 failures.append(f"{name}: saved {value}, loaded {got}")
         simple.Render(loaded)
     print(f"{len(VALUES)} properties through .pvsm ({state})")
+
+    # Python trace: the properties as the GUI traces them (its Apply wraps the changes in a
+    # PropertiesModified trace item, as here).
+    from paraview import smtrace
+    smtrace.start_trace()
+    traced = simple.CreateView("LightShaftsRenderView")
+    item = smtrace.PropertiesModified(traced)
+    traced.ShaftMethod = "Radial Blur"
+    traced.RadialSamples = 24
+    traced.ScatteringCoefficient = [0.02, 0.03, 0.04]
+    traced.ShaftExposure = 12.0
+    item.finalize()
+    text = smtrace.stop_trace()
+    for line in ("CreateView('LightShaftsRenderView')", ".ShaftMethod = 'Radial Blur'",
+                 ".RadialSamples = 24", ".ScatteringCoefficient = [0.02, 0.03, 0.04]",
+                 ".ShaftExposure = 12.0"):
+        if line not in text:
+            failures.append(f"trace lacks {line!r}")
+    print("trace:\n" + text)
     for failure in failures:
         print("FAIL:", failure)
     return 1 if failures else 0

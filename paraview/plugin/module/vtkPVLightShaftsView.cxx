@@ -236,6 +236,60 @@ void vtkPVLightShaftsView::SetShaftExposure(double exposure)
 }
 
 //------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetShaftMethod(int method)
+{
+  this->Impl->Shafts->SetMethod(method);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetLatticeResolution(int resolution)
+{
+  this->Impl->Shafts->SetLatticeResolution(resolution);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetNumberOfSteps(int steps)
+{
+  this->Impl->Shafts->SetNumberOfSteps(steps);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetInterleaveSize(int size)
+{
+  this->Impl->Shafts->SetInterleaveSize(size);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetRadialSamples(int samples)
+{
+  this->Impl->Shafts->SetRadialSamples(samples);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetDecay(double decay)
+{
+  this->Impl->Shafts->SetDecay(decay);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetDensity(double density)
+{
+  this->Impl->Shafts->SetDensity(density);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetWeight(double weight)
+{
+  this->Impl->Shafts->SetWeight(weight);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetRadialJitter(bool jitter)
+{
+  this->Impl->Shafts->SetRadialJitter(jitter);
+}
+
+//------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetAttenuateScene(bool attenuate)
 {
   this->Impl->Shafts->SetAttenuateScene(attenuate);

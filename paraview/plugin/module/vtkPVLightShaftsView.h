@@ -94,6 +94,23 @@ public:
 
   ///@{
   /**
+   * The method and its own controls, forwarded to vtkLightShaftPass (SetMethod,
+   * SetLatticeResolution, SetNumberOfSteps, SetInterleaveSize, SetRadialSamples, SetDecay,
+   * SetDensity, SetWeight, SetRadialJitter; same ranges and defaults).
+   */
+  void SetShaftMethod(int method);
+  void SetLatticeResolution(int resolution);
+  void SetNumberOfSteps(int steps);
+  void SetInterleaveSize(int size);
+  void SetRadialSamples(int samples);
+  void SetDecay(double decay);
+  void SetDensity(double density);
+  void SetWeight(double weight);
+  void SetRadialJitter(bool jitter);
+  ///@}
+
+  ///@{
+  /**
    * Sampling: forwarded to vtkLightShaftPass, unless ShaftQuality is a preset (DRAFT,
    * INTERACTIVE, FINAL), which then decides slices, jitter, blur, downsampling and shadow-map
    * size (the values set here are kept and come back with CUSTOM). Default is CUSTOM with the
