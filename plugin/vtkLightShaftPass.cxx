@@ -288,6 +288,7 @@ struct LightFrame
   double Exponent = 1.0;
   double Attenuation[3] = { 1.0, 0.0, 0.0 }; // c0, c1, c2 (all zero is treated as no falloff)
   std::vector<vtkProp*> Casters;             // props whose bounds reach into the light's volume
+  bool ShadowsPossible = false;              // casters here, or (distributed) in any process
 };
 
 /// Off-screen texture kinds the pass allocates.
@@ -482,6 +483,7 @@ public:
   bool WarnedNoise = false;
   bool WarnedAnalyticShadows = false;
   bool EightBitThisFrame = false;
+  vtkTextureObject* ShadowMapEventTexture = nullptr;
 
   vtkSmartPointer<vtkTexture> Cookie;
   vtkSmartPointer<vtkTexture> NoiseImage;
@@ -1070,6 +1072,42 @@ vtkTexture* vtkLightShaftPass::GetNoiseTexture()
   return this->Impl->NoiseImage;
 }
 
+vtkTextureObject* vtkLightShaftPass::GetShadowMapTexture()
+{
+  return this->Impl->ShadowMapEventTexture;
+}
+
+void vtkLightShaftPass::SetShadowCasterBounds(const double bounds[6])
+{
+  if (RefuseNonFinite(this,
+        "ShadowCasterBounds",
+        { bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5] }))
+  {
+    return;
+  }
+  if (!this->UseShadowCasterBounds || !std::equal(bounds, bounds + 6, this->ShadowCasterBounds))
+  {
+    std::copy(bounds, bounds + 6, this->ShadowCasterBounds);
+    this->UseShadowCasterBounds = true;
+    this->Modified();
+  }
+}
+
+void vtkLightShaftPass::UnsetShadowCasterBounds()
+{
+  if (this->UseShadowCasterBounds)
+  {
+    this->UseShadowCasterBounds = false;
+    this->Modified();
+  }
+}
+
+bool vtkLightShaftPass::GetShadowCasterBounds(double bounds[6])
+{
+  std::copy(this->ShadowCasterBounds, this->ShadowCasterBounds + 6, bounds);
+  return this->UseShadowCasterBounds;
+}
+
 const char* vtkLightShaftPass::GetLastShaderVariant()
 {
   return this->Impl->SliceVariant.c_str();
@@ -1468,6 +1506,28 @@ bool vtkLightShaftPass::Internals::ComputeLightFrame(vtkLightShaftPass& self,
     }
   }
   self.LastNumberOfShadowCasters = static_cast<int>(frame.Casters.size());
+  frame.ShadowsPossible = !frame.Casters.empty();
+  if (self.UseShadowCasterBounds)
+  {
+    // Distributed: every process uses the global casters' bounds, and so the same light camera.
+    const double* bounds = self.ShadowCasterBounds;
+    nearest = std::numeric_limits<double>::max();
+    deepest = 0.0;
+    frame.ShadowsPossible =
+      vtkMath::AreBoundsInitialized(bounds) &&
+      BoxReachesPyramid(bounds, frame.PositionWC, frame.AxisWC, u, v, tangent);
+    if (frame.ShadowsPossible)
+    {
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        const glm::dvec3 p(
+          bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)]);
+        const double depth = glm::dot(p - frame.PositionWC, frame.AxisWC);
+        nearest = std::min(nearest, depth);
+        deepest = std::max(deepest, depth);
+      }
+    }
+  }
 
   // The light camera's depth range: the casters' (tight: best shadow-map precision), else as
   // far as the view volume reaches.
@@ -1501,7 +1561,7 @@ bool vtkLightShaftPass::Internals::RenderShadowMap(vtkLightShaftPass& self,
   const vtkRenderState* s,
   LightFrame& frame)
 {
-  if (frame.Casters.empty())
+  if (!frame.ShadowsPossible)
   {
     return false; // nothing can shadow the light's volume
   }
@@ -1562,6 +1622,11 @@ bool vtkLightShaftPass::Internals::RenderShadowMap(vtkLightShaftPass& self,
   sceneCamera->Modified();
 #endif
   sceneCamera->UnRegister(&self);
+
+  // Observers may read and rewrite the map now (distributed processes combine theirs).
+  this->ShadowMapEventTexture = map;
+  self.InvokeEvent(ShadowMapRenderedEvent);
+  this->ShadowMapEventTexture = nullptr;
 
   self.LastShadowMapRendered = true;
   self.LastLightDepthRange[0] = frame.Near;
@@ -1749,7 +1814,7 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   int method = self.Method;
   if (method == AUTOMATIC)
   {
-    method = (light.Casters.empty() && !noiseOn) ? ANALYTIC : SLICES;
+    method = (!light.ShadowsPossible && !noiseOn) ? ANALYTIC : SLICES;
   }
   if (method == ANALYTIC && !light.Casters.empty() && !this->WarnedAnalyticShadows)
   {
@@ -2278,7 +2343,7 @@ vtkTextureObject* vtkLightShaftPass::Internals::RenderRadialBlur(vtkLightShaftPa
   vtkOpenGLRenderWindow* renWin = this->Window;
   vtkTextureObject* unshadowed = this->Accumulation[0].Object;
   // Nothing reaches into the light's volume: nothing to blur, the unshadowed integral is exact.
-  if (light.Casters.empty() || self.Weight <= 0.0)
+  if (!light.ShadowsPossible || self.Weight <= 0.0)
   {
     return unshadowed;
   }

@@ -59,6 +59,7 @@
 #ifndef vtkLightShaftPass_h
 #define vtkLightShaftPass_h
 
+#include "vtkCommand.h"             // For vtkCommand::UserEvent (ShadowMapRenderedEvent)
 #include "vtkImageProcessingPass.h" // For the base class and the delegate pass
 #include "vtkLightShaftsModule.h"   // For the export macro
 
@@ -68,6 +69,7 @@ class vtkImageData;
 class vtkLight;
 class vtkMatrix4x4;
 class vtkTexture;
+class vtkTextureObject;
 
 class VTKLIGHTSHAFTS_EXPORT vtkLightShaftPass : public vtkImageProcessingPass
 {
@@ -100,6 +102,14 @@ public:
     RADIAL_BLUR = 2, ///< screen-space radial blur of an occlusion buffer (GPU Gems 3, ch. 13)
     ANALYTIC = 3,    ///< unshadowed closed form per pixel (exact when nothing occludes)
     AUTOMATIC = 4    ///< ANALYTIC when the scene allows it, else SLICES (GetLastMethod says)
+  };
+
+  /// Events the pass invokes.
+  enum EventIds
+  {
+    /// After the shadow map is rendered and before it is used: GetShadowMapTexture() is valid
+    /// (and may be rewritten, e.g. combined over distributed processes), the context current.
+    ShadowMapRenderedEvent = vtkCommand::UserEvent + 4301
   };
 
   /**
@@ -453,6 +463,22 @@ public:
 
   ///@{
   /**
+   * Distributed rendering (each process holding part of the scene, e.g. ParaView under MPI):
+   * the world bounds of every process's shadow casters. When set, the light camera's depth
+   * range comes from them rather than from this process's props, so all processes render
+   * their shadow maps with one light camera, and each renders one (cleared when it holds no
+   * caster) whenever any caster reaches into the light's volume; an observer of
+   * ShadowMapRenderedEvent can then combine the maps (their minimum) so that every process
+   * sees every occluder. AUTOMATIC and RADIAL_BLUR decide from them too, so that all processes
+   * take the same path. Default is unset (this process's props).
+   */
+  void SetShadowCasterBounds(const double bounds[6]);
+  void UnsetShadowCasterBounds();
+  bool GetShadowCasterBounds(double bounds[6]);
+  ///@}
+
+  ///@{
+  /**
    * Quality presets, chosen from the measured speed/error front (docs/benchmark.md):
    * - Draft: 32 slices, jitter, blur radius 2, half-resolution in-scatter, 512^2 shadow map;
    * - Interactive: 64 slices, jitter, blur radius 2, 1024^2 shadow map, full resolution (the
@@ -515,6 +541,12 @@ public:
    * Returns false when the last frame rendered no shadow map.
    */
   bool GetLastShadowMap(vtkImageData* depths, vtkMatrix4x4* worldToLightClip);
+
+  /**
+   * The shadow map's depth texture (32-bit float depth, N x N, 1 = nothing) while
+   * ShadowMapRenderedEvent is being handled; nullptr at any other time.
+   */
+  vtkTextureObject* GetShadowMapTexture();
   vtkGetVector2Macro(LastLightDepthRange, double);
   vtkGetMacro(LastShadowBias, double);
   vtkGetMacro(LastNumberOfSceneRenders, int);
@@ -568,6 +600,8 @@ protected:
   double LastShadowBias = 0.0;
   int LastNumberOfSceneRenders = 0;
   int LastMethod = -1;
+  bool UseShadowCasterBounds = false;
+  double ShadowCasterBounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 };
   int LastNumberOfPostPasses = 0;
 
 private:

@@ -1,0 +1,94 @@
+"""The hooks distributed rendering uses (ParaView under MPI): ShadowMapRenderedEvent with
+GetShadowMapTexture(), and SetShadowCasterBounds()."""
+
+import math
+
+import numpy as np
+
+from lightshafts import scenes, vtkLightShaftPass
+from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLFramebufferObject
+
+import render_helpers as rh
+
+
+def clear_depth(window, texture, value):
+    """Overwrite a depth texture with one value (what a combining observer would upload)."""
+    fbo = vtkOpenGLFramebufferObject()
+    fbo.SetContext(window)
+    state = window.GetState()
+    state.PushFramebufferBindings()
+    fbo.Bind()
+    fbo.AddDepthAttachment(texture)
+    fbo.StartNonOrtho(texture.GetWidth(), texture.GetHeight())
+    state.vtkglDepthMask(True)
+    state.vtkglClearDepth(value)
+    state.vtkglClear(0x100)  # GL_DEPTH_BUFFER_BIT
+    state.vtkglClearDepth(1.0)
+    fbo.RemoveDepthAttachment()
+    state.PopFramebufferBindings()
+    fbo.ReleaseGraphicsResources(window)
+
+
+def test_the_shadow_map_event_lets_an_observer_rewrite_the_map():
+    renderer, window = rh.make_window(160, 120)
+    scenes.sphere_and_floor(renderer, sphere_resolution=32)
+    shafts = rh.plain_slab_pass(slices=64, shadow_map=512)
+    renderer.SetPass(shafts)
+    window.Render()
+    original = rh.in_scatter(shafts)
+    seen = []
+
+    def occlude_everything(pass_, _event):
+        texture = pass_.GetShadowMapTexture()
+        seen.append((texture.GetWidth(), texture.GetHeight()))
+        clear_depth(window, texture, 0.0)  # an occluder at the near plane everywhere
+
+    shafts.AddObserver(vtkLightShaftPass.ShadowMapRenderedEvent, occlude_everything)
+    window.Render()
+    assert seen == [(512, 512)]  # once per frame, during the frame
+    assert shafts.GetShadowMapTexture() is None  # only valid inside the event
+    assert shafts.GetLastGLErrorCount() == 0
+    occluded = rh.in_scatter(shafts)
+    # Only the part of the beam nearer the light than the light camera's near plane (the
+    # nearest caster) stays lit.
+    assert occluded.sum() < 0.5 * original.sum()
+    assert np.all(occluded <= original * (1 + 1e-5) + 1e-12)
+
+
+def test_shadow_caster_bounds_make_every_process_take_the_same_path():
+    renderer, window = rh.make_window(160, 120)
+    info = scenes.sphere_and_floor(renderer, sphere_resolution=32)
+    shafts = rh.plain_slab_pass(slices=64, Method=vtkLightShaftPass.AUTOMATIC)
+    renderer.SetPass(shafts)
+    window.Render()
+    global_range = shafts.GetLastLightDepthRange()
+    bounds = [0.0] * 6
+    assert not shafts.GetShadowCasterBounds(bounds)
+
+    # A process that holds no caster: alone it would take ANALYTIC and render no shadow map.
+    world_bounds = renderer.ComputeVisiblePropBounds()
+    renderer.RemoveAllViewProps()
+    window.Render()
+    assert shafts.GetLastMethod() == vtkLightShaftPass.ANALYTIC
+    assert not shafts.GetLastShadowMapRendered()
+    # With the global casters' bounds it renders a (cleared) map with the common light camera.
+    shafts.SetShadowCasterBounds(world_bounds)
+    assert shafts.GetShadowCasterBounds(bounds) and bounds == list(world_bounds)
+    window.Render()
+    assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES
+    assert shafts.GetLastShadowMapRendered()
+    assert shafts.GetLastNumberOfShadowCasters() == 0
+    near, far = shafts.GetLastLightDepthRange()
+    assert far >= global_range[1] * 0.999 and near <= global_range[0] * 1.001
+    assert shafts.GetLastGLErrorCount() == 0
+    shafts.UnsetShadowCasterBounds()
+    window.Render()
+    assert shafts.GetLastMethod() == vtkLightShaftPass.ANALYTIC
+
+
+def test_non_finite_shadow_caster_bounds_are_refused(messages):
+    shafts = vtkLightShaftPass()
+    log = messages(shafts)
+    shafts.SetShadowCasterBounds([0.0, 1.0, 0.0, math.nan, 0.0, 1.0])
+    assert not shafts.GetShadowCasterBounds([0.0] * 6)
+    assert len(log.errors) == 1 and "ShadowCasterBounds" in log.errors[0]
