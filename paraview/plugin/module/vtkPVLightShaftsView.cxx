@@ -1,17 +1,22 @@
 #include "vtkPVLightShaftsView.h"
 
+#include "vtkCallbackCommand.h"
+#include "vtkCommunicator.h"
 #include "vtkImageData.h"
 #include "vtkImageReader2.h"
 #include "vtkImageReader2Factory.h"
 #include "vtkLight.h"
 #include "vtkLightShaftPass.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVImageProcessingChain.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkTexture.h"
+#include "vtkTextureObject.h"
 #include "vtkToneMappingPass.h"
 #include "vtkWeakPointer.h"
+#include "vtk_glew.h"
 
 #include <algorithm>
 #include <string>
@@ -76,6 +81,66 @@ vtkPVLightShaftsView::vtkPVLightShaftsView()
   // IceT composites depth too, so the shafts stop at the nearest surface of any rank.
   sync->SetUseDepthBuffer(true);
   this->UpdateImageProcessing();
+
+  // Distributed: every process's shadow map gets every process's occluders.
+  vtkNew<vtkCallbackCommand> combine;
+  combine->SetClientData(this);
+  combine->SetCallback([](vtkObject*, unsigned long, void* self, void*)
+    { static_cast<vtkPVLightShaftsView*>(self)->CombineShadowMaps(); });
+  impl.Shafts->AddObserver(vtkLightShaftPass::ShadowMapRenderedEvent, combine);
+}
+
+namespace
+{
+vtkMultiProcessController* DistributedController()
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  return (controller && controller->GetNumberOfProcesses() > 1) ? controller : nullptr;
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
+{
+  this->Superclass::AboutToRenderOnLocalProcess(interactive);
+  vtkLightShaftPass* shafts = this->Impl->Shafts;
+  if (this->DistributedShadowMap && DistributedController() && this->GeometryBounds.IsValid())
+  {
+    // GeometryBounds holds the union over the processes (vtkPVRenderView reduces it).
+    double bounds[6];
+    this->GeometryBounds.GetBounds(bounds);
+    shafts->SetShadowCasterBounds(bounds);
+  }
+  else
+  {
+    shafts->UnsetShadowCasterBounds();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::CombineShadowMaps()
+{
+  vtkMultiProcessController* controller = DistributedController();
+  vtkTextureObject* map = this->Impl->Shafts->GetShadowMapTexture();
+  if (!this->DistributedShadowMap || !controller || !map)
+  {
+    return;
+  }
+  // Every process renders a map with the same light camera (SetShadowCasterBounds), so the
+  // minimum depth per texel is the nearest occluder of any process.
+  const int width = static_cast<int>(map->GetWidth());
+  const int height = static_cast<int>(map->GetHeight());
+  std::vector<float> local(static_cast<size_t>(width) * height);
+  std::vector<float> combined(local.size());
+  map->Bind();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, local.data());
+  controller->AllReduce(
+    local.data(), combined.data(), static_cast<vtkIdType>(local.size()), vtkCommunicator::MIN_OP);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(
+    GL_TEXTURE_2D, 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, combined.data());
+  map->Deactivate();
 }
 
 //------------------------------------------------------------------------------
@@ -93,6 +158,7 @@ void vtkPVLightShaftsView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShaftQuality: " << this->ShaftQuality << "\n";
   os << indent << "LinkShaftTimeToAnimation: " << this->LinkShaftTimeToAnimation << "\n";
   os << indent << "ShaftTime: " << this->ShaftTime << "\n";
+  os << indent << "DistributedShadowMap: " << this->DistributedShadowMap << "\n";
   os << indent << "CookieFileName: " << this->Impl->CookieFileName << "\n";
   os << indent << "LightShaftPass:\n";
   this->Impl->Shafts->PrintSelf(os, indent.GetNextIndent());

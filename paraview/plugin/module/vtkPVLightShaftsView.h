@@ -167,9 +167,29 @@ public:
    */
   void SetUseToneMapping(bool use);
 
+  ///@{
+  /**
+   * Under MPI (each process rendering its part of the data), make every process's shadow map
+   * see every process's occluders: the processes use one light camera (from the view's global
+   * geometry bounds) and combine their depth maps with a minimum over processes before the
+   * shafts are computed. Off: each process's shadow map holds only its own geometry (occluders
+   * held by other processes cast no shadow into the shafts; docs/paraview-mpi.md). No effect in
+   * a single process. Default is on.
+   */
+  vtkSetMacro(DistributedShadowMap, bool);
+  vtkGetMacro(DistributedShadowMap, bool);
+  ///@}
+
 protected:
   vtkPVLightShaftsView();
   ~vtkPVLightShaftsView() override;
+
+  // Hands the global geometry bounds to the pass before each local render (distributed).
+  void AboutToRenderOnLocalProcess(bool interactive) override;
+  // ShadowMapRenderedEvent: the minimum of the processes' depth maps (distributed).
+  void CombineShadowMaps();
+
+  bool DistributedShadowMap = true;
 
   bool LightShafts = true;
   int ShaftLight = 0;
