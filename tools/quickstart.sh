@@ -17,17 +17,28 @@ packages=(
   libvtk9-dev python3-vtk9 libglm-dev
   xvfb xauth libgl1-mesa-dri
   python3-numpy python3-pytest python3-tqdm python3-matplotlib python3-skimage
-  paraview paraview-dev openmpi-bin
 )
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "== installing: ${missing[*]}"
+# ParaView for the plugin, without its Recommends: one of them, python3-paraview, Conflicts with
+# python3-vtk9 (installing it would remove the VTK module's dependencies); see below.
+paraview_packages=(paraview paraview-dev openmpi-bin)
+missing_packages() {
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || echo "$p"
+  done
+}
+missing=($(missing_packages "${packages[@]}"))
+missing_paraview=($(missing_packages "${paraview_packages[@]}"))
+if [ $((${#missing[@]} + ${#missing_paraview[@]})) -gt 0 ]; then
+  echo "== installing: ${missing[*]} ${missing_paraview[*]}"
   as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+fi
+if [ ${#missing[@]} -gt 0 ]; then
   as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
     "${missing[@]}" > /dev/null
+fi
+if [ ${#missing_paraview[@]} -gt 0 ]; then
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+    "${missing_paraview[@]}" > /dev/null
 fi
 
 # ParaView's Python package (pvbatch scripts, the plugin's wrapping hierarchy) is in
