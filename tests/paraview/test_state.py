@@ -43,6 +43,7 @@ VALUES = {
     "Density": 0.8,
     "Weight": 0.6,
     "RadialJitter": 0,
+    "DistributedShadowMap": 0,
 }
 
 
