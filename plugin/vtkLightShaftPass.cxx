@@ -514,6 +514,7 @@ public:
   OwnedTexture Upsampled;
   OwnedTexture ShadowMap;
   OwnedTexture OcclusionMask;
+  OwnedTexture GuardDepth;
   OwnedTexture RadialOutput;
   OwnedTexture GatherTemporary;
   OwnedTexture Gathered;
@@ -525,6 +526,8 @@ public:
   vtkSmartPointer<vtkOpenGLFramebufferObject> SceneFramebuffer;
   vtkSmartPointer<vtkOpenGLFramebufferObject> WorkFramebuffer;
   vtkSmartPointer<vtkOpenGLFramebufferObject> ShadowFramebuffer;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> GuardFramebuffer;
+  vtkNew<vtkCamera> GuardCamera;
 
   // The light camera of the last shadow map (GetLastShadowMap).
   glm::dmat4 LastWorldToLightClip{ 1.0 };
@@ -646,6 +649,7 @@ public:
            &this->Upsampled,
            &this->ShadowMap,
            &this->OcclusionMask,
+           &this->GuardDepth,
            &this->RadialOutput,
            &this->GatherTemporary,
            &this->Gathered })
@@ -662,7 +666,10 @@ public:
     }
     this->CookieUploadTime = 0;
     this->NoiseUploadTime = 0;
-    for (auto* f : { &this->SceneFramebuffer, &this->WorkFramebuffer, &this->ShadowFramebuffer })
+    for (auto* f : { &this->SceneFramebuffer,
+           &this->WorkFramebuffer,
+           &this->ShadowFramebuffer,
+           &this->GuardFramebuffer })
     {
       if (*f)
       {
@@ -743,6 +750,11 @@ public:
     int w,
     int h);
   bool RenderShadowMap(vtkLightShaftPass& self, const vtkRenderState* s, LightFrame& frame);
+  void RenderCasters(vtkLightShaftPass& self,
+    const vtkRenderState* s,
+    LightFrame& frame,
+    vtkCamera* camera,
+    vtkOpenGLFramebufferObject* target);
   vtkShaderProgram* ReadySliceProgram(vtkLightShaftPass& self,
     int method,
     bool shadows,
@@ -757,8 +769,9 @@ public:
     int lw,
     int lh);
   vtkTextureObject* RenderRadialBlur(vtkLightShaftPass& self,
+    const vtkRenderState* s,
     const CameraFrame& camera,
-    const LightFrame& light,
+    LightFrame& light,
     vtkTextureObject* slabDepth,
     int lw,
     int lh);
@@ -940,6 +953,11 @@ void vtkLightShaftPass::SetTime(double time)
     { time },
     -std::numeric_limits<double>::max(),
     std::numeric_limits<double>::max());
+}
+
+void vtkLightShaftPass::SetRadialGuardBand(double extent)
+{
+  SetClamped(this, "RadialGuardBand", &this->RadialGuardBand, { extent }, 1.0, 4.0);
 }
 
 void vtkLightShaftPass::SetDecay(double decay)
@@ -1161,6 +1179,7 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   this->LastNumberOfSceneRenders = 0;
   this->LastMethod = -1;
   this->LastNumberOfPostPasses = 0;
+  this->LastRadialGuardBand = 0.0;
   this->LastSliceDepthRange[0] = this->LastSliceDepthRange[1] = 0.0;
   impl.InScatterValid = false;
   impl.FinalInScatter = nullptr;
@@ -1557,6 +1576,38 @@ bool vtkLightShaftPass::Internals::ComputeLightFrame(vtkLightShaftPass& self,
 }
 
 //------------------------------------------------------------------------------
+void vtkLightShaftPass::Internals::RenderCasters(vtkLightShaftPass& self,
+  const vtkRenderState* s,
+  LightFrame& frame,
+  vtkCamera* camera,
+  vtkOpenGLFramebufferObject* target)
+{
+  vtkRenderer* ren = s->GetRenderer();
+  vtkRenderState casterState(ren);
+  casterState.SetPropArrayAndCount(frame.Casters.data(), static_cast<int>(frame.Casters.size()));
+  casterState.SetFrameBuffer(target);
+
+  // Render the opaque step of the casters with another camera, as vtkShadowMapBakerPass does.
+  vtkCamera* sceneCamera = ren->GetActiveCamera();
+  sceneCamera->Register(&self);
+  const vtkTypeBool automaticLights = ren->GetAutomaticLightCreation();
+  ren->SetAutomaticLightCreation(false);
+  ren->SetActiveCamera(camera);
+  this->ShadowCameraPass->Render(&casterState);
+  ren->SetActiveCamera(sceneCamera);
+  ren->SetAutomaticLightCreation(automaticLights);
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
+  // The casters' step set the shaders' lighting uniforms in the other camera's frame and
+  // stamped them with its MTime; vtkOpenGLRenderer::UpdateLightingUniforms only sets them again
+  // when the active camera (or the lights) changed after that stamp. Seen with VTK 9.2
+  // (ParaView 5.11): a still scene camera kept the light camera's lighting from the second
+  // frame on.
+  sceneCamera->Modified();
+#endif
+  sceneCamera->UnRegister(&self);
+}
+
+//------------------------------------------------------------------------------
 bool vtkLightShaftPass::Internals::RenderShadowMap(vtkLightShaftPass& self,
   const vtkRenderState* s,
   LightFrame& frame)
@@ -1601,27 +1652,7 @@ bool vtkLightShaftPass::Internals::RenderShadowMap(vtkLightShaftPass& self,
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_LEQUAL);
 
-  vtkRenderState shadowState(ren);
-  shadowState.SetPropArrayAndCount(frame.Casters.data(), static_cast<int>(frame.Casters.size()));
-  shadowState.SetFrameBuffer(this->ShadowFramebuffer);
-
-  // Render the opaque step with the light's camera, as vtkShadowMapBakerPass does.
-  vtkCamera* sceneCamera = ren->GetActiveCamera();
-  sceneCamera->Register(&self);
-  const vtkTypeBool automaticLights = ren->GetAutomaticLightCreation();
-  ren->SetAutomaticLightCreation(false);
-  ren->SetActiveCamera(this->LightCamera);
-  this->ShadowCameraPass->Render(&shadowState);
-  ren->SetActiveCamera(sceneCamera);
-  ren->SetAutomaticLightCreation(automaticLights);
-#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
-  // The shadow step set the shaders' lighting uniforms in the light camera's frame and stamped
-  // them with its MTime; vtkOpenGLRenderer::UpdateLightingUniforms only sets them again when
-  // the active camera (or the lights) changed after that stamp. Seen with VTK 9.2 (ParaView
-  // 5.11): a still scene camera kept the light camera's lighting from the second frame on.
-  sceneCamera->Modified();
-#endif
-  sceneCamera->UnRegister(&self);
+  this->RenderCasters(self, s, frame, this->LightCamera, this->ShadowFramebuffer);
 
   // Observers may read and rewrite the map now (distributed processes combine theirs).
   this->ShadowMapEventTexture = map;
@@ -2277,7 +2308,7 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   vtkTextureObject* current = this->Accumulation[0].Object;
   if (method == RADIAL_BLUR)
   {
-    current = this->RenderRadialBlur(self, camera, light, slabDepth, lw, lh);
+    current = this->RenderRadialBlur(self, s, camera, light, slabDepth, lw, lh);
   }
   if (method == RAY_MARCH && self.InterleaveSize > 1)
   {
@@ -2334,8 +2365,9 @@ vtkTextureObject* vtkLightShaftPass::Internals::Gather(vtkLightShaftPass& self,
 
 //------------------------------------------------------------------------------
 vtkTextureObject* vtkLightShaftPass::Internals::RenderRadialBlur(vtkLightShaftPass& self,
+  const vtkRenderState* s,
   const CameraFrame& camera,
-  const LightFrame& light,
+  LightFrame& light,
   vtkTextureObject* slabDepth,
   int lw,
   int lh)
@@ -2370,24 +2402,86 @@ vtkTextureObject* vtkLightShaftPass::Internals::RenderRadialBlur(vtkLightShaftPa
       static_cast<float>(vtkMath::ClampValue(0.5 * lightClip[i] / lightClip.w + 0.5, -1e6, 1e6));
   }
 
-  // Occlusion pre-pass at half the in-scatter resolution.
-  const int mw = std::max(1, (lw + 1) / 2);
-  const int mh = std::max(1, (lh + 1) / 2);
-  auto invProjection = ToFloatColumnMajor(camera.ClipToView);
+  // Occlusion pre-pass at half the in-scatter resolution, over a guard band RadialGuardBand
+  // times the screen's extent: the casters' depth is rendered again with the scene camera's
+  // frustum widened about its axis (same view, projection scaled by 1 / g in x and y), so that
+  // occluders off the screen still cut the shafts on it. Cameras with an explicit projection or
+  // an off-centre window keep the screen's own depth (g = 1).
+  vtkRenderer* ren = s->GetRenderer();
+  vtkCamera* sceneCamera = ren->GetActiveCamera();
+  double guard = self.RadialGuardBand;
+  const double* windowCenter = sceneCamera->GetWindowCenter();
+  if (sceneCamera->GetUseExplicitProjectionTransformMatrix() || windowCenter[0] != 0.0 ||
+      windowCenter[1] != 0.0 || sceneCamera->GetUseOffAxisProjection())
+  {
+    guard = 1.0;
+  }
+  if (perspective &&
+      std::tan(vtkMath::RadiansFromDegrees(sceneCamera->GetViewAngle()) / 2.0) * guard > 57.0)
+  {
+    guard = std::max(1.0,
+      57.0 / std::tan(vtkMath::RadiansFromDegrees(sceneCamera->GetViewAngle()) /
+                      2.0)); // keep it below 178 degrees
+  }
+  const int mw = std::max(1, static_cast<int>(std::lround(0.5 * lw * guard)));
+  const int mh = std::max(1, static_cast<int>(std::lround(0.5 * lh * guard)));
+  vtkTextureObject* occluderDepth = slabDepth;
+  glm::dmat4 occluderClipToView = camera.ClipToView;
+  if (guard > 1.0)
+  {
+    vtkCamera* guardCamera = this->GuardCamera;
+    guardCamera->DeepCopy(sceneCamera);
+    if (sceneCamera->GetParallelProjection())
+    {
+      guardCamera->SetParallelScale(sceneCamera->GetParallelScale() * guard);
+    }
+    else
+    {
+      const double halfAngle = vtkMath::RadiansFromDegrees(sceneCamera->GetViewAngle()) / 2.0;
+      guardCamera->SetViewAngle(
+        vtkMath::DegreesFromRadians(2.0 * std::atan(std::tan(halfAngle) * guard)));
+    }
+    occluderDepth = this->GuardDepth.Ensure(this->Window, TextureKind::Depth, mw, mh);
+    if (!this->GuardFramebuffer)
+    {
+      this->GuardFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      this->GuardFramebuffer->SetContext(this->Window);
+    }
+    vtkOpenGLState* ostate = this->Window->GetState();
+    this->GuardFramebuffer->Bind();
+    this->GuardFramebuffer->AddDepthAttachment(occluderDepth);
+    this->GuardFramebuffer->StartNonOrtho(mw, mh);
+    this->GuardFramebuffer->DeactivateDrawBuffers();
+    ostate->vtkglViewport(0, 0, mw, mh);
+    ostate->vtkglScissor(0, 0, mw, mh);
+    ostate->vtkglDepthMask(GL_TRUE);
+    ostate->vtkglClearDepth(1.0);
+    ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_LEQUAL);
+    this->RenderCasters(self, s, light, guardCamera, this->GuardFramebuffer);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    // The same view; x and y of the projection scaled by 1 / g.
+    const glm::dmat4 scale = glm::scale(glm::dmat4(1.0), glm::dvec3(1.0 / guard, 1.0 / guard, 1.0));
+    occluderClipToView = glm::inverse(scale * camera.ViewToClip);
+    ++self.LastNumberOfPostPasses;
+  }
+  self.LastRadialGuardBand = guard;
+  auto invProjection = ToFloatColumnMajor(occluderClipToView);
   vtkTextureObject* mask = this->OcclusionMask.Ensure(renWin, TextureKind::RGBA32F, mw, mh);
   this->BindWork(mask, nullptr, mw, mh);
   if (vtkShaderProgram* program = this->Occlusion.Ready(renWin, vtkLightShaftOcclusionFS))
   {
-    slabDepth->Activate();
-    program->SetUniformi("sceneDepth", slabDepth->GetTextureUnit());
+    occluderDepth->Activate();
+    program->SetUniformi("sceneDepth", occluderDepth->GetTextureUnit());
     program->SetUniformMatrix4x4("invProjectionDCVC", invProjection.data());
-    const float size[2] = { static_cast<float>(lw), static_cast<float>(lh) };
+    const float size[2] = { static_cast<float>(mw), static_cast<float>(mh) };
     program->SetUniform2f("targetSize", size);
     program->SetUniform3f("lightPositionVC", ToFloat3(light.PositionVC).data());
     program->SetUniform3f("lightAxisVC", ToFloat3(light.AxisVC).data());
     program->SetUniformf("cosConeAngle", static_cast<float>(std::cos(light.ConeHalfAngle)));
     this->Occlusion.Quad->Render();
-    slabDepth->Deactivate();
+    occluderDepth->Deactivate();
   }
   else
   {
@@ -2412,6 +2506,7 @@ vtkTextureObject* vtkLightShaftPass::Internals::RenderRadialBlur(vtkLightShaftPa
   program->SetUniformf("weight", static_cast<float>(self.Weight));
   program->SetUniformf("density", static_cast<float>(self.Density));
   program->SetUniformi("stochastic", self.RadialJitter ? 1 : 0);
+  program->SetUniformf("guardBand", static_cast<float>(guard));
   this->RadialBlur.Quad->Render();
   mask->Deactivate();
   unshadowed->Deactivate();
@@ -2728,6 +2823,7 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Density: " << this->Density << "\n";
   os << indent << "Weight: " << this->Weight << "\n";
   os << indent << "RadialJitter: " << this->RadialJitter << "\n";
+  os << indent << "RadialGuardBand: " << this->RadialGuardBand << "\n";
   os << indent << "LastMethod: " << GetMethodName(this->LastMethod) << "\n";
   os << indent << "BlurRadius: " << this->BlurRadius << "\n";
   os << indent << "DownsampleFactor: " << this->DownsampleFactor << "\n";

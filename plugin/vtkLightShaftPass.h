@@ -463,6 +463,21 @@ public:
 
   ///@{
   /**
+   * RADIAL_BLUR: extent of the occlusion buffer relative to the screen, in [1, 4] (the
+   * chapter's extended guard band). Above 1 the casters' depth is rendered once more with the
+   * scene camera's frustum widened by this factor about its axis, so occluders outside the
+   * picture (a light off-screen behind them) still cut the shafts on it; 1 uses the screen's
+   * own depth. Cameras with an explicit projection or an off-centre window always use 1.
+   * Non-finite values are refused. Default is 2.
+   */
+  void SetRadialGuardBand(double extent);
+  vtkGetMacro(RadialGuardBand, double);
+  /// The guard band the last RADIAL_BLUR frame used (0 when none ran).
+  vtkGetMacro(LastRadialGuardBand, double);
+  ///@}
+
+  ///@{
+  /**
    * Distributed rendering (each process holding part of the scene, e.g. ParaView under MPI):
    * the world bounds of every process's shadow casters. When set, the light camera's depth
    * range comes from them rather than from this process's props, so all processes render
@@ -588,6 +603,7 @@ protected:
   double Density = 1.0;
   double Weight = 1.0;
   bool RadialJitter = true;
+  double RadialGuardBand = 2.0;
 
   // Last-frame statistics.
   int LastNumberOfSlicesDrawn = 0;
@@ -603,6 +619,7 @@ protected:
   bool UseShadowCasterBounds = false;
   double ShadowCasterBounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 };
   int LastNumberOfPostPasses = 0;
+  double LastRadialGuardBand = 0.0;
 
 private:
   void RenderFrame(const vtkRenderState* s);

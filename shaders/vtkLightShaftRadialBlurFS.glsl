@@ -5,7 +5,8 @@
 // pixel walks towards the light's screen position, counts the occlusion-buffer samples that
 // hold an occluder nearer to the light than its own shaft (decay^i weighted), and darkens the
 // unshadowed in-scatter (rgb of `unshadowed`; alpha: the shaft's distance to the light) by that
-// fraction times weight. Samples off the screen have no data and count as unoccluded.
+// fraction times weight. The occlusion buffer covers guardBand times the screen about its
+// centre; samples beyond it have no data and count as unoccluded.
 in vec2 texCoord;
 
 uniform sampler2D unshadowed;
@@ -17,6 +18,7 @@ uniform float decay;
 uniform float weight;
 uniform float density;       // fraction of the way to the light the samples cover
 uniform int stochastic;      // per-pixel offset of the sample positions
+uniform float guardBand;     // the occlusion buffer's extent relative to the screen (>= 1)
 
 void main()
 {
@@ -27,18 +29,21 @@ void main()
     return;
   }
   vec2 toLight = lightUV - texCoord;
-  // Keep the walk on the screen: beyond it the occlusion buffer has no data (the guard band
-  // is the unshadowed in-scatter itself, which never depends on where the light projects).
+  // Keep the walk inside the occlusion buffer (the screen and its guard band): beyond it there
+  // is no data. (The brightness, from the unshadowed integral, never depends on where the
+  // light projects.)
+  float low = 0.5 - 0.5 * guardBand;
+  float high = 0.5 + 0.5 * guardBand;
   float reach = density;
   for (int axis = 0; axis < 2; ++axis)
   {
     if (toLight[axis] > 1e-9)
     {
-      reach = min(reach, (1.0 - texCoord[axis]) / toLight[axis]);
+      reach = min(reach, (high - texCoord[axis]) / toLight[axis]);
     }
     else if (toLight[axis] < -1e-9)
     {
-      reach = min(reach, -texCoord[axis] / toLight[axis]);
+      reach = min(reach, (low - texCoord[axis]) / toLight[axis]);
     }
   }
   vec2 step = toLight * (max(reach, 0.0) / float(samples));
@@ -55,7 +60,7 @@ void main()
   for (int i = 0; i < samples; ++i)
   {
     vec2 uv = texCoord + (float(i) + start) * step;
-    float occluderDistance = texture(occlusion, uv).r;
+    float occluderDistance = texture(occlusion, 0.5 + (uv - 0.5) / guardBand).r;
     visible += illuminationDecay * ((occluderDistance < 0.99 * shaftDistance) ? 0.0 : 1.0);
     total += illuminationDecay;
     illuminationDecay *= decay;

@@ -200,7 +200,9 @@ def test_radial_blur_shadows_approximately():
     renderer, window, info, shafts = render_scene(Method=vtkLightShaftPass.RADIAL_BLUR)
     assert shafts.GetLastMethod() == vtkLightShaftPass.RADIAL_BLUR
     assert not shafts.GetLastShadowMapRendered()
-    assert shafts.GetLastNumberOfPostPasses() == 2  # occlusion pre-pass and radial walk
+    # The casters' depth over the guard band, the occlusion pre-pass and the radial walk.
+    assert shafts.GetLastNumberOfPostPasses() == 3
+    assert shafts.GetLastRadialGuardBand() == 2.0
     reference = rh.reference_for(renderer, window, info, shafts)
     radial = error(renderer, window, info, shafts, reference=reference)
     blurred = rh.in_scatter(shafts)
@@ -256,6 +258,48 @@ def test_radial_blur_with_the_light_off_screen():
     renderer.WorldToDisplay()
     assert renderer.GetDisplayPoint()[1] > 240  # really off-screen
     assert error(renderer, window, info, shafts) < 0.3
+
+
+def test_radial_blur_guard_band_catches_occluders_off_the_screen():
+    # Low and close, looking under the sphere (centre y = 1.5, radius 0.8): the light and the
+    # whole sphere are above the top edge; the shafts below it and its shadow are in the picture.
+    def prepare(renderer, info, shafts):
+        camera = renderer.GetActiveCamera()
+        camera.SetPosition(0.0, 0.2, 2.5)
+        camera.SetFocalPoint(0.0, -0.2, 0.0)
+        camera.SetViewUp(0.0, 1.0, 0.0)
+        camera.SetViewAngle(30.0)
+    renderer, window, info, shafts = render_scene(prepare, Method=vtkLightShaftPass.RADIAL_BLUR)
+    for point in [(0.0, 0.7, 0.0), (0.8, 1.5, 0.0), (0.0, 0.7, 0.8)]:  # the sphere's bottom
+        renderer.SetWorldPoint(*point, 1.0)
+        renderer.WorldToDisplay()
+        assert renderer.GetDisplayPoint()[1] > 240  # above the picture
+    reference = rh.reference_for(renderer, window, info, shafts)
+    guarded = error(renderer, window, info, shafts, reference=reference)
+    shafts.SetRadialGuardBand(1.0)
+    window.Render()
+    assert shafts.GetLastRadialGuardBand() == 1.0
+    assert shafts.GetLastNumberOfPostPasses() == 2  # no guard-band render
+    screen_only = error(renderer, window, info, shafts, reference=reference)
+    shafts.SetMethodToAnalytic()
+    window.Render()
+    unshadowed = error(renderer, window, info, shafts, reference=reference)
+    # Measured 25% / 51% / 50%: with the screen's depth alone the walk never meets the sphere
+    # and the picture is the unshadowed one; the guard band finds it and halves the error.
+    assert guarded < 0.7 * screen_only, (guarded, screen_only)
+    assert abs(screen_only - unshadowed) < 0.1 * unshadowed
+
+
+def test_radial_guard_band_parameter(messages):
+    p = vtkLightShaftPass()
+    log = messages(p)
+    assert p.GetRadialGuardBand() == 2.0 and p.GetLastRadialGuardBand() == 0.0
+    p.SetRadialGuardBand(0.5)
+    assert p.GetRadialGuardBand() == 1.0
+    p.SetRadialGuardBand(9.0)
+    assert p.GetRadialGuardBand() == 4.0
+    p.SetRadialGuardBand(math.nan)
+    assert p.GetRadialGuardBand() == 4.0 and len(log.errors) == 1
 
 
 def test_radial_controls_change_the_image_deterministically():
