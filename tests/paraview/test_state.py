@@ -44,6 +44,7 @@ VALUES = {
     "Weight": 0.6,
     "RadialJitter": 0,
     "DistributedShadowMap": 0,
+    "RadialGuardBand": 3.0,
 }
 
 

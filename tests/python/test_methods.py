@@ -200,9 +200,8 @@ def test_radial_blur_shadows_approximately():
     renderer, window, info, shafts = render_scene(Method=vtkLightShaftPass.RADIAL_BLUR)
     assert shafts.GetLastMethod() == vtkLightShaftPass.RADIAL_BLUR
     assert not shafts.GetLastShadowMapRendered()
-    # The casters' depth over the guard band, the occlusion pre-pass and the radial walk.
-    assert shafts.GetLastNumberOfPostPasses() == 3
-    assert shafts.GetLastRadialGuardBand() == 2.0
+    assert shafts.GetLastNumberOfPostPasses() == 2  # occlusion pre-pass and radial walk
+    assert shafts.GetLastRadialGuardBand() == 1.0  # the screen's own depth (the default)
     reference = rh.reference_for(renderer, window, info, shafts)
     radial = error(renderer, window, info, shafts, reference=reference)
     blurred = rh.in_scatter(shafts)
@@ -269,7 +268,11 @@ def test_radial_blur_guard_band_catches_occluders_off_the_screen():
         camera.SetFocalPoint(0.0, -0.2, 0.0)
         camera.SetViewUp(0.0, 1.0, 0.0)
         camera.SetViewAngle(30.0)
-    renderer, window, info, shafts = render_scene(prepare, Method=vtkLightShaftPass.RADIAL_BLUR)
+    renderer, window, info, shafts = render_scene(prepare, Method=vtkLightShaftPass.RADIAL_BLUR,
+                                                  RadialGuardBand=2.0)
+    assert shafts.GetLastRadialGuardBand() == 2.0
+    # The casters' depth over the guard band, the occlusion pre-pass and the radial walk.
+    assert shafts.GetLastNumberOfPostPasses() == 3
     for point in [(0.0, 0.7, 0.0), (0.8, 1.5, 0.0), (0.0, 0.7, 0.8)]:  # the sphere's bottom
         renderer.SetWorldPoint(*point, 1.0)
         renderer.WorldToDisplay()
@@ -293,7 +296,7 @@ def test_radial_blur_guard_band_catches_occluders_off_the_screen():
 def test_radial_guard_band_parameter(messages):
     p = vtkLightShaftPass()
     log = messages(p)
-    assert p.GetRadialGuardBand() == 2.0 and p.GetLastRadialGuardBand() == 0.0
+    assert p.GetRadialGuardBand() == 1.0 and p.GetLastRadialGuardBand() == 0.0
     p.SetRadialGuardBand(0.5)
     assert p.GetRadialGuardBand() == 1.0
     p.SetRadialGuardBand(9.0)

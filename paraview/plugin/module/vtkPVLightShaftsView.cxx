@@ -356,6 +356,12 @@ void vtkPVLightShaftsView::SetRadialJitter(bool jitter)
 }
 
 //------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetRadialGuardBand(double extent)
+{
+  this->Impl->Shafts->SetRadialGuardBand(extent);
+}
+
+//------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetAttenuateScene(bool attenuate)
 {
   this->Impl->Shafts->SetAttenuateScene(attenuate);

@@ -96,7 +96,7 @@ public:
   /**
    * The method and its own controls, forwarded to vtkLightShaftPass (SetMethod,
    * SetLatticeResolution, SetNumberOfSteps, SetInterleaveSize, SetRadialSamples, SetDecay,
-   * SetDensity, SetWeight, SetRadialJitter; same ranges and defaults).
+   * SetDensity, SetWeight, SetRadialJitter, SetRadialGuardBand; same ranges and defaults).
    */
   void SetShaftMethod(int method);
   void SetLatticeResolution(int resolution);
@@ -107,6 +107,7 @@ public:
   void SetDensity(double density);
   void SetWeight(double weight);
   void SetRadialJitter(bool jitter);
+  void SetRadialGuardBand(double extent);
   ///@}
 
   ///@{
