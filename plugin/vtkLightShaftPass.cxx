@@ -73,6 +73,10 @@ constexpr double MaximumExposure = 1.0e6;
 constexpr double MaximumAnisotropy = 0.99;
 // The bounding pyramid of a cone wider than this is numerically useless; such cones are
 // bounded by the view volume instead (the shader still clips to the true cone).
+// Relative view-depth difference under which two pixels see "the same surface" (the depth-aware
+// blur, gather and upsampling).
+constexpr float SameSurfaceTolerance = 0.05f;
+
 constexpr double MaximumBoundingHalfAngle = vtkMath::Pi() * 89.9 / 180.0;
 
 // VTK's key matrices are stored transposed (ready for glUniformMatrix4fv), which is exactly
@@ -754,7 +758,8 @@ public:
     const vtkRenderState* s,
     LightFrame& frame,
     vtkCamera* camera,
-    vtkOpenGLFramebufferObject* target);
+    vtkSmartPointer<vtkOpenGLFramebufferObject>& target,
+    vtkTextureObject* depth);
   vtkShaderProgram* ReadySliceProgram(vtkLightShaftPass& self,
     int method,
     bool shadows,
@@ -762,6 +767,18 @@ public:
     bool noise);
   bool ReadyCookie(vtkLightShaftPass& self);
   bool ReadyNoise(vtkLightShaftPass& self);
+  // Two passes of the blur shader (x, then y): a Gaussian of `radius`, or with boxWidth > 0
+  // the interleaved-sampling gather. Counts its passes in LastNumberOfPostPasses.
+  vtkTextureObject* SeparableFilter(vtkLightShaftPass& self,
+    vtkTextureObject* source,
+    OwnedTexture& temporary,
+    OwnedTexture& output,
+    const CameraFrame& camera,
+    vtkTextureObject* slabDepth,
+    int radius,
+    int boxWidth,
+    int lw,
+    int lh);
   vtkTextureObject* Gather(vtkLightShaftPass& self,
     vtkTextureObject* source,
     const CameraFrame& camera,
@@ -1428,6 +1445,23 @@ double FarthestViewPoint(const glm::dmat4& clipToView, const glm::dvec3& pointVC
   return farthest;
 }
 
+// Extend [nearest, deepest] by the depths along `axis` (from `apex`) of a box's eight corners.
+void ExtendDepthRange(const double bounds[6],
+  const glm::dvec3& apex,
+  const glm::dvec3& axis,
+  double& nearest,
+  double& deepest)
+{
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const glm::dvec3 p(
+      bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)]);
+    const double depth = glm::dot(p - apex, axis);
+    nearest = std::min(nearest, depth);
+    deepest = std::max(deepest, depth);
+  }
+}
+
 // Whether an axis-aligned box can reach into the light's bounding pyramid (apex, unit axis a,
 // unit u, v across it, half-angle with tangent `tangent`): false when all its corners are
 // outside one of the pyramid's planes.
@@ -1515,14 +1549,7 @@ bool vtkLightShaftPass::Internals::ComputeLightFrame(vtkLightShaftPass& self,
       continue;
     }
     frame.Casters.push_back(prop);
-    for (int corner = 0; corner < 8; ++corner)
-    {
-      const glm::dvec3 p(
-        bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)]);
-      const double depth = glm::dot(p - frame.PositionWC, frame.AxisWC);
-      nearest = std::min(nearest, depth);
-      deepest = std::max(deepest, depth);
-    }
+    ExtendDepthRange(bounds, frame.PositionWC, frame.AxisWC, nearest, deepest);
   }
   self.LastNumberOfShadowCasters = static_cast<int>(frame.Casters.size());
   frame.ShadowsPossible = !frame.Casters.empty();
@@ -1537,14 +1564,7 @@ bool vtkLightShaftPass::Internals::ComputeLightFrame(vtkLightShaftPass& self,
       BoxReachesPyramid(bounds, frame.PositionWC, frame.AxisWC, u, v, tangent);
     if (frame.ShadowsPossible)
     {
-      for (int corner = 0; corner < 8; ++corner)
-      {
-        const glm::dvec3 p(
-          bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)]);
-        const double depth = glm::dot(p - frame.PositionWC, frame.AxisWC);
-        nearest = std::min(nearest, depth);
-        deepest = std::max(deepest, depth);
-      }
+      ExtendDepthRange(bounds, frame.PositionWC, frame.AxisWC, nearest, deepest);
     }
   }
 
@@ -1580,8 +1600,30 @@ void vtkLightShaftPass::Internals::RenderCasters(vtkLightShaftPass& self,
   const vtkRenderState* s,
   LightFrame& frame,
   vtkCamera* camera,
-  vtkOpenGLFramebufferObject* target)
+  vtkSmartPointer<vtkOpenGLFramebufferObject>& target,
+  vtkTextureObject* depth)
 {
+  // A depth-only target, cleared, with the depth test of an opaque step.
+  if (!target)
+  {
+    target = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    target->SetContext(this->Window);
+  }
+  const int w = static_cast<int>(depth->GetWidth());
+  const int h = static_cast<int>(depth->GetHeight());
+  vtkOpenGLState* ostate = this->Window->GetState();
+  target->Bind();
+  target->AddDepthAttachment(depth);
+  target->StartNonOrtho(w, h);
+  target->DeactivateDrawBuffers();
+  ostate->vtkglViewport(0, 0, w, h);
+  ostate->vtkglScissor(0, 0, w, h);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglClearDepth(1.0);
+  ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_LEQUAL);
+
   vtkRenderer* ren = s->GetRenderer();
   vtkRenderState casterState(ren);
   casterState.SetPropArrayAndCount(frame.Casters.data(), static_cast<int>(frame.Casters.size()));
@@ -1616,10 +1658,7 @@ bool vtkLightShaftPass::Internals::RenderShadowMap(vtkLightShaftPass& self,
   {
     return false; // nothing can shadow the light's volume
   }
-  vtkRenderer* ren = s->GetRenderer();
   vtkOpenGLRenderWindow* renWin = this->Window;
-  vtkOpenGLState* ostate = renWin->GetState();
-
   const int size = std::min(self.ShadowMapSize, vtkTextureObject::GetMaximumTextureSize(renWin));
   vtkTextureObject* map = this->ShadowMap.Object;
   if (!map || static_cast<int>(map->GetWidth()) != size)
@@ -1635,24 +1674,7 @@ bool vtkLightShaftPass::Internals::RenderShadowMap(vtkLightShaftPass& self,
     map->SetMagnificationFilter(vtkTextureObject::Nearest);
     map->AllocateDepth(size, size, vtkTextureObject::Float32);
   }
-  if (!this->ShadowFramebuffer)
-  {
-    this->ShadowFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    this->ShadowFramebuffer->SetContext(renWin);
-  }
-  this->ShadowFramebuffer->Bind();
-  this->ShadowFramebuffer->AddDepthAttachment(map);
-  this->ShadowFramebuffer->StartNonOrtho(size, size);
-  this->ShadowFramebuffer->DeactivateDrawBuffers();
-  ostate->vtkglViewport(0, 0, size, size);
-  ostate->vtkglScissor(0, 0, size, size);
-  ostate->vtkglDepthMask(GL_TRUE);
-  ostate->vtkglClearDepth(1.0);
-  ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_LEQUAL);
-
-  this->RenderCasters(self, s, frame, this->LightCamera, this->ShadowFramebuffer);
+  this->RenderCasters(self, s, frame, this->LightCamera, this->ShadowFramebuffer, map);
 
   // Observers may read and rewrite the map now (distributed processes combine theirs).
   this->ShadowMapEventTexture = map;
@@ -2328,19 +2350,42 @@ vtkTextureObject* vtkLightShaftPass::Internals::Gather(vtkLightShaftPass& self,
 {
   // Interleaved sampling's gather: two separable passes, each an unweighted, depth-aware mean
   // over InterleaveSize consecutive pixels (the blur shader's box mode).
+  return this->SeparableFilter(self,
+    source,
+    this->GatherTemporary,
+    this->Gathered,
+    camera,
+    slabDepth,
+    0,
+    self.InterleaveSize,
+    lw,
+    lh);
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftPass::Internals::SeparableFilter(vtkLightShaftPass& self,
+  vtkTextureObject* source,
+  OwnedTexture& temporary,
+  OwnedTexture& output,
+  const CameraFrame& camera,
+  vtkTextureObject* slabDepth,
+  int radius,
+  int boxWidth,
+  int lw,
+  int lh)
+{
   vtkOpenGLRenderWindow* renWin = this->Window;
   vtkShaderProgram* program = this->Blur.Ready(renWin, vtkLightShaftBlurFS);
   if (!program)
   {
     return source;
   }
-  vtkTextureObject* temporary = this->GatherTemporary.Ensure(renWin, TextureKind::RGBA32F, lw, lh);
-  vtkTextureObject* gathered = this->Gathered.Ensure(renWin, TextureKind::RGBA32F, lw, lh);
+  vtkTextureObject* sources[2] = { source, temporary.Ensure(renWin, TextureKind::RGBA32F, lw, lh) };
+  vtkTextureObject* outputs[2] = { sources[1],
+    output.Ensure(renWin, TextureKind::RGBA32F, lw, lh) };
   auto invProjection = ToFloatColumnMajor(camera.ClipToView);
   const float targetSize[2] = { static_cast<float>(lw), static_cast<float>(lh) };
   const int directions[2][2] = { { 1, 0 }, { 0, 1 } };
-  vtkTextureObject* sources[2] = { source, temporary };
-  vtkTextureObject* outputs[2] = { temporary, gathered };
   for (int pass = 0; pass < 2; ++pass)
   {
     this->BindWork(outputs[pass], nullptr, lw, lh);
@@ -2352,15 +2397,15 @@ vtkTextureObject* vtkLightShaftPass::Internals::Gather(vtkLightShaftPass& self,
     program->SetUniformMatrix4x4("invProjectionDCVC", invProjection.data());
     program->SetUniform2f("targetSize", targetSize);
     program->SetUniform2i("direction", directions[pass]);
-    program->SetUniformi("radius", 0);
-    program->SetUniformi("boxWidth", self.InterleaveSize);
-    program->SetUniformf("depthTolerance", 0.05f);
+    program->SetUniformi("radius", radius);
+    program->SetUniformi("boxWidth", boxWidth);
+    program->SetUniformf("depthTolerance", SameSurfaceTolerance);
     this->Blur.Quad->Render();
     slabDepth->Deactivate();
     sources[pass]->Deactivate();
+    ++self.LastNumberOfPostPasses;
   }
-  self.LastNumberOfPostPasses += 2;
-  return gathered;
+  return outputs[1];
 }
 
 //------------------------------------------------------------------------------
@@ -2442,25 +2487,8 @@ vtkTextureObject* vtkLightShaftPass::Internals::RenderRadialBlur(vtkLightShaftPa
         vtkMath::DegreesFromRadians(2.0 * std::atan(std::tan(halfAngle) * guard)));
     }
     occluderDepth = this->GuardDepth.Ensure(this->Window, TextureKind::Depth, mw, mh);
-    if (!this->GuardFramebuffer)
-    {
-      this->GuardFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-      this->GuardFramebuffer->SetContext(this->Window);
-    }
-    vtkOpenGLState* ostate = this->Window->GetState();
-    this->GuardFramebuffer->Bind();
-    this->GuardFramebuffer->AddDepthAttachment(occluderDepth);
-    this->GuardFramebuffer->StartNonOrtho(mw, mh);
-    this->GuardFramebuffer->DeactivateDrawBuffers();
-    ostate->vtkglViewport(0, 0, mw, mh);
-    ostate->vtkglScissor(0, 0, mw, mh);
-    ostate->vtkglDepthMask(GL_TRUE);
-    ostate->vtkglClearDepth(1.0);
-    ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
-    ostate->vtkglEnable(GL_DEPTH_TEST);
-    ostate->vtkglDepthFunc(GL_LEQUAL);
-    this->RenderCasters(self, s, light, guardCamera, this->GuardFramebuffer);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
+    this->RenderCasters(self, s, light, guardCamera, this->GuardFramebuffer, occluderDepth);
+    this->Window->GetState()->vtkglDisable(GL_DEPTH_TEST);
     // The same view; x and y of the projection scaled by 1 / g.
     const glm::dmat4 scale = glm::scale(glm::dmat4(1.0), glm::dvec3(1.0 / guard, 1.0 / guard, 1.0));
     occluderClipToView = glm::inverse(scale * camera.ViewToClip);
@@ -2526,7 +2554,6 @@ void vtkLightShaftPass::Internals::PostProcess(vtkLightShaftPass& self,
 {
   vtkOpenGLRenderWindow* renWin = this->Window;
   auto invProjection = ToFloatColumnMajor(camera.ClipToView);
-  constexpr float depthTolerance = 0.05f; // relative view-depth difference of "same surface"
 
   if (this->EightBitThisFrame)
   {
@@ -2553,36 +2580,16 @@ void vtkLightShaftPass::Internals::PostProcess(vtkLightShaftPass& self,
 
   if (self.BlurRadius > 0)
   {
-    vtkShaderProgram* program = this->Blur.Ready(renWin, vtkLightShaftBlurFS);
-    vtkTextureObject* temporary = this->BlurTemporary.Ensure(renWin, TextureKind::RGBA32F, lw, lh);
-    vtkTextureObject* blurred = this->Blurred.Ensure(renWin, TextureKind::RGBA32F, lw, lh);
-    if (program)
-    {
-      const float targetSize[2] = { static_cast<float>(lw), static_cast<float>(lh) };
-      const int directions[2][2] = { { 1, 0 }, { 0, 1 } };
-      vtkTextureObject* sources[2] = { current, temporary };
-      vtkTextureObject* outputs[2] = { temporary, blurred };
-      for (int pass = 0; pass < 2; ++pass)
-      {
-        this->BindWork(outputs[pass], nullptr, lw, lh);
-        renWin->GetShaderCache()->ReadyShaderProgram(program);
-        sources[pass]->Activate();
-        slabDepth->Activate();
-        program->SetUniformi("source", sources[pass]->GetTextureUnit());
-        program->SetUniformi("sceneDepth", slabDepth->GetTextureUnit());
-        program->SetUniformMatrix4x4("invProjectionDCVC", invProjection.data());
-        program->SetUniform2f("targetSize", targetSize);
-        program->SetUniform2i("direction", directions[pass]);
-        program->SetUniformi("radius", self.BlurRadius);
-        program->SetUniformi("boxWidth", 0);
-        program->SetUniformf("depthTolerance", depthTolerance);
-        this->Blur.Quad->Render();
-        ++self.LastNumberOfPostPasses;
-        slabDepth->Deactivate();
-        sources[pass]->Deactivate();
-      }
-      current = blurred;
-    }
+    current = this->SeparableFilter(self,
+      current,
+      this->BlurTemporary,
+      this->Blurred,
+      camera,
+      slabDepth,
+      self.BlurRadius,
+      0,
+      lw,
+      lh);
   }
 
   if (lw != w || lh != h)
@@ -2600,7 +2607,7 @@ void vtkLightShaftPass::Internals::PostProcess(vtkLightShaftPass& self,
       program->SetUniformMatrix4x4("invProjectionDCVC", invProjection.data());
       const float fullSize[2] = { static_cast<float>(w), static_cast<float>(h) };
       program->SetUniform2f("fullSize", fullSize);
-      program->SetUniformf("depthTolerance", depthTolerance);
+      program->SetUniformf("depthTolerance", SameSurfaceTolerance);
       this->Upsample.Quad->Render();
       ++self.LastNumberOfPostPasses;
       this->SceneDepth.Object->Deactivate();

@@ -81,13 +81,11 @@ def make_scene(view=None, occluder=True, **shaft_properties):
     return view, light, ball_display
 
 
-def screenshot(view, path):
-    """SaveScreenshot at the test size; returns the image as (height, width, 3) floats."""
+def read_png(path):
+    """A PNG as (height, width, 3) floats, row 0 at the top."""
     import numpy as np
-    from paraview import simple
     from vtkmodules.vtkIOImage import vtkPNGReader
     from paraview.vtk.util.numpy_support import vtk_to_numpy
-    simple.SaveScreenshot(path, view, ImageResolution=[WIDTH, HEIGHT])
     reader = vtkPNGReader()
     reader.SetFileName(path)
     reader.Update()
@@ -96,6 +94,20 @@ def screenshot(view, path):
     c = data.GetPointData().GetScalars().GetNumberOfComponents()
     pixels = vtk_to_numpy(data.GetPointData().GetScalars()).reshape(h, w, c)[:, :, :3]
     return pixels[::-1].astype(np.float64)
+
+
+def screenshot(view, path):
+    """SaveScreenshot at the test size; returns the image as (height, width, 3) floats."""
+    from paraview import simple
+    simple.SaveScreenshot(path, view, ImageResolution=[WIDTH, HEIGHT])
+    return read_png(path)
+
+
+def report(failures):
+    """Print the failures; the test's exit status."""
+    for failure in failures:
+        print("FAIL:", failure)
+    return 1 if failures else 0
 
 
 def to_pixel(view, point):

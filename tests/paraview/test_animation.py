@@ -12,8 +12,6 @@ import lightshafts_pvscene as scene  # noqa: E402
 
 def main():
     import numpy as np
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    from vtkmodules.vtkIOImage import vtkPNGReader
     out = sys.argv[1] if len(sys.argv) > 1 else "."
     example = os.path.join(scene.ROOT, "examples", "paraview", "animate_noise.py")
     env = dict(os.environ, LIGHTSHAFTS_PARAVIEW_PLUGIN=scene.plugin_path())
@@ -30,13 +28,7 @@ def main():
             return 1
         runs[name] = directory
 
-    def read(path):
-        reader = vtkPNGReader()
-        reader.SetFileName(path)
-        reader.Update()
-        image = reader.GetOutput()
-        return vtk_to_numpy(image.GetPointData().GetScalars()).astype(float)
-
+    read = scene.read_png
     a = [read(os.path.join(runs["a"], f"frame_{k:04d}.png")) for k in range(3)]
     b2 = read(os.path.join(runs["b"], "frame_0002.png"))  # t = 4, as a's frame 1
     failures = []
@@ -51,9 +43,7 @@ def main():
         failures.append("the noise does not move with the animation time")
     if same > 0:
         failures.append("the same animation time gave a different frame")
-    for failure in failures:
-        print("FAIL:", failure)
-    return 1 if failures else 0
+    return scene.report(failures)
 
 
 if __name__ == "__main__":

@@ -43,16 +43,8 @@ def main():
     if update:
         simple.SaveScreenshot(BASELINE, view, ImageResolution=[scene.WIDTH, scene.HEIGHT])
         print("baseline updated:", BASELINE)
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    from paraview.vtk.util.numpy_support import vtk_to_numpy
-    reader = vtkPNGReader()
-    reader.SetFileName(BASELINE)
-    reader.Update()
-    data = reader.GetOutput()
-    w, h, _ = data.GetDimensions()
-    c = data.GetPointData().GetScalars().GetNumberOfComponents()
-    baseline = vtk_to_numpy(data.GetPointData().GetScalars()).reshape(h, w, c)[::-1, :, :3]
-    mean, fraction, ok = scene.compare_images(shot, baseline.astype(np.float64),
+    baseline = scene.read_png(BASELINE)
+    mean, fraction, ok = scene.compare_images(shot, baseline,
                                               MEAN_TOLERANCE, PIXEL_FRACTION, PIXEL_LEVEL)
     print(f"baseline: mean |diff| {mean:.3f} levels (<= {MEAN_TOLERANCE}), "
           f"{100 * fraction:.3f}% pixels off by > {PIXEL_LEVEL} (<= {100 * PIXEL_FRACTION}%)")
@@ -127,9 +119,7 @@ def main():
     if not (curve_change > 1.0 and off_curve < 0.35 * curve_change):
         failures.append("tone mapping does not map the light-shaft picture")
 
-    for failure in failures:
-        print("FAIL:", failure)
-    return 1 if failures else 0
+    return scene.report(failures)
 
 
 if __name__ == "__main__":

@@ -104,9 +104,7 @@ def main():
         if line not in text:
             failures.append(f"trace lacks {line!r}")
     print("trace:\n" + text)
-    for failure in failures:
-        print("FAIL:", failure)
-    return 1 if failures else 0
+    return scene.report(failures)
 
 
 if __name__ == "__main__":
