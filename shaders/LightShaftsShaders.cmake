@@ -12,3 +12,22 @@ set(lightshafts_pass_shaders
   vtkLightShaftSliceFS
   vtkLightShaftSliceVS
   vtkLightShaftUpsampleFS)
+set(lightshafts_shader_dir "${CMAKE_CURRENT_LIST_DIR}")
+
+# Embed shaders/<name>.glsl for each name as C strings; the generated sources and headers are
+# returned in <sources_var> and <headers_var>.
+function (lightshafts_encode_shaders sources_var headers_var)
+  set(sources)
+  set(headers)
+  foreach (shader IN LISTS ARGN)
+    vtk_encode_string(
+      INPUT         "${lightshafts_shader_dir}/${shader}.glsl"
+      NAME          "${shader}"
+      HEADER_OUTPUT header
+      SOURCE_OUTPUT source)
+    list(APPEND sources "${source}")
+    list(APPEND headers "${header}")
+  endforeach ()
+  set("${sources_var}" "${sources}" PARENT_SCOPE)
+  set("${headers_var}" "${headers}" PARENT_SCOPE)
+endfunction ()
