@@ -44,6 +44,7 @@
 #include "vtkLightShaftCommon.h"
 #include "vtkLightShaftCompositeFS.h"
 #include "vtkLightShaftDepthDownsampleFS.h"
+#include "vtkLightShaftDepthResolveFS.h"
 #include "vtkLightShaftIntegrand.h"
 #include "vtkLightShaftNoise.h"
 #include "vtkLightShaftOcclusionFS.h"
@@ -255,6 +256,80 @@ std::vector<glm::dvec2> ConvexHull(std::vector<glm::dvec2> points)
   hull.resize(k - 1);
   return hull;
 }
+
+// One slab to draw: its index (for the shader's slab boundaries), its near view depth, and the
+// convex hull of its screen footprint (NDC).
+struct SlabFootprint
+{
+  int Index;
+  double NearDepth;
+  std::vector<glm::dvec2> Hull;
+};
+
+// Append the triangles covering `slab` to `vertices` (x, y in NDC, slab index, near depth per
+// vertex): the hull as a fan, or with lattice > 0 an n x n lattice over the hull's bounding
+// rectangle with each cell clipped to the hull, so that no more fragments are drawn than
+// without the lattice.
+void AppendSlabTriangles(const SlabFootprint& slab, int lattice, std::vector<float>& vertices)
+{
+  const std::vector<glm::dvec2>& hull = slab.Hull;
+  auto emit = [&](const glm::dvec2& p)
+  {
+    vertices.insert(vertices.end(),
+      { static_cast<float>(p.x),
+        static_cast<float>(p.y),
+        static_cast<float>(slab.Index),
+        static_cast<float>(slab.NearDepth) });
+  };
+  if (lattice <= 0)
+  {
+    for (size_t i = 1; i + 1 < hull.size(); ++i)
+    {
+      emit(hull[0]);
+      emit(hull[i]);
+      emit(hull[i + 1]);
+    }
+    return;
+  }
+  glm::dvec2 low = hull[0];
+  glm::dvec2 high = hull[0];
+  for (const glm::dvec2& p : hull)
+  {
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  }
+  auto corner = [&](int i, int j)
+  { return low + (high - low) * glm::dvec2(double(i) / lattice, double(j) / lattice); };
+  // Clip against the hull without its near-coincident vertices: the direction of an edge a
+  // rounding error long is noise, and its half-plane would cut a sliver out of the slab.
+  const double tiny = 1e-9 * glm::length(high - low);
+  std::vector<glm::dvec2> window;
+  for (const glm::dvec2& p : hull)
+  {
+    if (window.empty() || glm::length(p - window.back()) > tiny)
+    {
+      window.push_back(p);
+    }
+  }
+  while (window.size() > 1 && glm::length(window.front() - window.back()) <= tiny)
+  {
+    window.pop_back();
+  }
+  for (int j = 0; j < lattice; ++j)
+  {
+    for (int i = 0; i < lattice; ++i)
+    {
+      const std::vector<glm::dvec2> cell = ClipToConvex(
+        { corner(i, j), corner(i + 1, j), corner(i + 1, j + 1), corner(i, j + 1) }, window);
+      for (size_t c = 1; c + 1 < cell.size(); ++c)
+      {
+        emit(cell[0]);
+        emit(cell[c]);
+        emit(cell[c + 1]);
+      }
+    }
+  }
+}
 } // namespace
 
 namespace
@@ -312,9 +387,14 @@ struct OwnedTexture
   vtkSmartPointer<vtkTextureObject> Object;
   TextureKind Kind = TextureKind::RGBA8;
 
-  vtkTextureObject* Ensure(vtkOpenGLRenderWindow* window, TextureKind kind, int w, int h)
+  // `samples` > 0 makes a multisampled texture (GL_TEXTURE_2D_MULTISAMPLE) of that many samples.
+  vtkTextureObject* Ensure(vtkOpenGLRenderWindow* window,
+    TextureKind kind,
+    int w,
+    int h,
+    int samples = 0)
   {
-    if (this->Object && this->Kind != kind)
+    if (this->Object && (this->Kind != kind || this->Object->GetSamples() != samples))
     {
       this->Release(window);
     }
@@ -322,6 +402,7 @@ struct OwnedTexture
     {
       this->Object = vtkSmartPointer<vtkTextureObject>::New();
       this->Object->SetContext(window);
+      this->Object->SetSamples(samples);
       this->Object->SetWrapS(vtkTextureObject::ClampToEdge);
       this->Object->SetWrapT(vtkTextureObject::ClampToEdge);
       this->Object->SetMinificationFilter(vtkTextureObject::Nearest);
@@ -370,6 +451,65 @@ struct OwnedTexture
     this->Object = nullptr;
   }
 };
+
+/**
+ * The delegate's render of the scene in one frame: colour (and, for a cookie on surfaces, the
+ * colour without the spotlight) and depth, multisampled like the target the pass draws into,
+ * and the single-sample depth the shafts read (the nearest of each pixel's samples).
+ */
+struct SceneImage
+{
+  vtkTextureObject* Color = nullptr;
+  vtkTextureObject* ColorUnlit = nullptr;
+  vtkTextureObject* Depth = nullptr;
+  vtkTextureObject* ShaftDepth = nullptr;
+  int Samples = 0;
+};
+
+// Lattice cells built and drawn per frame at most (SetLatticeResolution): the cells are clipped
+// on the CPU, so their number bounds the frame's CPU time (about 1.5 s for 2^21 cells here:
+// README "Behaviour with any scene"); beyond it the lattice resolution is lowered for all slabs.
+constexpr long long LatticeCellBudget = 1LL << 21;
+
+// Slab vertices built and drawn in one batch (about 6 MiB of vertex data).
+constexpr size_t SlabBatchVertices = 6 * 65536;
+
+// Colour attachments the pass ever binds at once (the 8-bit mode's three accumulation buffers).
+constexpr unsigned int MaximumColorAttachments = 3;
+
+// Bind `fbo` with exactly these attachments (any others removed: a target of another size left
+// attached would make it incomplete), all of size w x h, drawing into all colour attachments.
+void BindTargets(vtkOpenGLFramebufferObject* fbo,
+  std::initializer_list<vtkTextureObject*> colors,
+  vtkTextureObject* depth,
+  int w,
+  int h)
+{
+  fbo->Bind();
+  fbo->RemoveColorAttachments(MaximumColorAttachments);
+  fbo->RemoveDepthAttachment();
+  unsigned int count = 0;
+  for (vtkTextureObject* color : colors)
+  {
+    fbo->AddColorAttachment(count++, color);
+  }
+  if (depth)
+  {
+    fbo->AddDepthAttachment(depth);
+  }
+  if (count > 0)
+  {
+    fbo->ActivateDrawBuffers(count);
+  }
+  else
+  {
+    fbo->DeactivateDrawBuffers();
+  }
+  fbo->StartNonOrtho(w, h);
+  vtkOpenGLState* ostate = fbo->GetContext()->GetState();
+  ostate->vtkglViewport(0, 0, w, h);
+  ostate->vtkglScissor(0, 0, w, h);
+}
 
 std::string JoinDefines(const std::vector<std::string>& defines)
 {
@@ -486,6 +626,7 @@ public:
   bool WarnedCookie = false;
   bool WarnedNoise = false;
   bool WarnedAnalyticShadows = false;
+  bool WarnedLatticeBudget = false;
   bool EightBitThisFrame = false;
   vtkTextureObject* ShadowMapEventTexture = nullptr;
 
@@ -503,12 +644,14 @@ public:
   vtkNew<vtkOpaquePass> ShadowOpaquePass;
   vtkNew<vtkCamera> LightCamera;
 
-  // Targets. Full resolution: the scene (lit, and unlit for cookies on surfaces), its depth,
-  // the final in-scatter. Reduced resolution (DownsampleFactor): the accumulation buffers, a
-  // depth for the slabs and its copy for the depth test, blur buffers.
+  // Targets. Full resolution: the scene (lit, and unlit for cookies on surfaces) and its depth,
+  // multisampled like the pass's own target, the nearest-sample depth when they are, the final
+  // in-scatter. Reduced resolution (DownsampleFactor): the accumulation buffers, a depth for
+  // the slabs and its copy for the depth test, blur buffers.
   OwnedTexture SceneColor;
   OwnedTexture SceneColorUnlit;
   OwnedTexture SceneDepth;
+  OwnedTexture ResolvedDepth;
   OwnedTexture ReducedDepth;
   OwnedTexture SlabDepthTest;
   OwnedTexture Accumulation[3];
@@ -528,6 +671,7 @@ public:
   vtkMTimeType NoiseUploadTime = 0;
   bool NoiseIsGenerated = false;
   vtkSmartPointer<vtkOpenGLFramebufferObject> SceneFramebuffer;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> AccumulationFramebuffer;
   vtkSmartPointer<vtkOpenGLFramebufferObject> WorkFramebuffer;
   vtkSmartPointer<vtkOpenGLFramebufferObject> ShadowFramebuffer;
   vtkSmartPointer<vtkOpenGLFramebufferObject> GuardFramebuffer;
@@ -549,9 +693,11 @@ public:
   vtkSmartPointer<vtkOpenGLVertexArrayObject> SliceArray;
   vtkSmartPointer<vtkOpenGLBufferObject> SliceBuffer;
   vtkShaderProgram* SliceArrayProgram = nullptr;
+  std::vector<SlabFootprint> SlabFootprints;
   std::vector<float> SliceVertices;
 
   FullScreenPass Composite;
+  FullScreenPass DepthResolve;
   FullScreenPass DepthDownsample;
   FullScreenPass Resolve;
   FullScreenPass Blur;
@@ -642,6 +788,7 @@ public:
     for (OwnedTexture* t : { &this->SceneColor,
            &this->SceneColorUnlit,
            &this->SceneDepth,
+           &this->ResolvedDepth,
            &this->ReducedDepth,
            &this->SlabDepthTest,
            &this->Accumulation[0],
@@ -671,6 +818,7 @@ public:
     this->CookieUploadTime = 0;
     this->NoiseUploadTime = 0;
     for (auto* f : { &this->SceneFramebuffer,
+           &this->AccumulationFramebuffer,
            &this->WorkFramebuffer,
            &this->ShadowFramebuffer,
            &this->GuardFramebuffer })
@@ -696,6 +844,7 @@ public:
     this->SliceSource.clear();
     this->SliceKey.clear();
     for (FullScreenPass* p : { &this->Composite,
+           &this->DepthResolve,
            &this->DepthDownsample,
            &this->Resolve,
            &this->Blur,
@@ -712,27 +861,14 @@ public:
   // Bind the work framebuffer with `color` (and optionally `depth`) as its only attachments.
   void BindWork(vtkTextureObject* color, vtkTextureObject* depth, int w, int h)
   {
-    vtkOpenGLFramebufferObject* fbo = this->WorkFramebuffer;
-    fbo->Bind();
-    fbo->RemoveColorAttachments(3);
-    fbo->RemoveDepthAttachment();
     if (color)
     {
-      fbo->AddColorAttachment(0, color);
-      fbo->ActivateDrawBuffer(0);
+      BindTargets(this->WorkFramebuffer, { color }, depth, w, h);
     }
-    if (depth)
+    else
     {
-      fbo->AddDepthAttachment(depth);
+      BindTargets(this->WorkFramebuffer, {}, depth, w, h);
     }
-    fbo->StartNonOrtho(w, h);
-    if (!color)
-    {
-      fbo->DeactivateDrawBuffers();
-    }
-    vtkOpenGLState* ostate = this->Window->GetState();
-    ostate->vtkglViewport(0, 0, w, h);
-    ostate->vtkglScissor(0, 0, w, h);
   }
 
   bool ComputeLightFrame(vtkLightShaftPass& self,
@@ -740,17 +876,21 @@ public:
     vtkLight* light,
     const CameraFrame& camera,
     LightFrame& frame);
-  void RenderScene(vtkLightShaftPass& self,
+  SceneImage RenderScene(vtkLightShaftPass& self,
     const vtkRenderState* s,
     vtkRenderPass* delegate,
     vtkLight* light,
     bool twice,
+    int samples,
     int w,
     int h);
+  vtkTextureObject* ResolveDepth(vtkTextureObject* depthSamples, int samples, int w, int h);
   void RenderInScatter(vtkLightShaftPass& self,
     const vtkRenderState* s,
     LightFrame& light,
     const CameraFrame& camera,
+    const SceneImage& scene,
+    bool cookie,
     int w,
     int h);
   bool RenderShadowMap(vtkLightShaftPass& self, const vtkRenderState* s, LightFrame& frame);
@@ -766,6 +906,7 @@ public:
     bool cookie,
     bool noise);
   bool ReadyCookie(vtkLightShaftPass& self);
+  int LatticeWithinBudget(vtkLightShaftPass& self, int slabs);
   bool ReadyNoise(vtkLightShaftPass& self);
   // Two passes of the blur shader (x, then y): a Gaussian of `radius`, or with boxWidth > 0
   // the interleaved-sampling gather. Counts its passes in LastNumberOfPostPasses.
@@ -796,6 +937,7 @@ public:
     vtkTextureObject* current,
     const CameraFrame& camera,
     vtkTextureObject* slabDepth,
+    vtkTextureObject* fullDepth,
     int w,
     int h,
     int lw,
@@ -804,6 +946,7 @@ public:
     vtkRenderer* ren,
     const CameraFrame& camera,
     const LightFrame* light,
+    const SceneImage& scene,
     bool cookieSurfaces,
     int w,
     int h);
@@ -1160,6 +1303,52 @@ bool IsSpotLight(vtkLight* light)
 {
   return light->GetPositional() && light->GetConeAngle() < 90.0;
 }
+
+// Renders that need the scene exactly as without the pass: a hardware selector's (VTK's
+// picking and selection draw ids, not colours), and those of passes that render a subset of
+// the props by their information keys (shadow-map bakers, value passes).
+bool NeedsPlainScene(const vtkRenderState* s)
+{
+  return s->GetRenderer()->GetSelector() != nullptr || s->GetRequiredKeys() != nullptr;
+}
+
+// The scene exactly as the renderer would draw it without `pass`. For a hardware selector
+// that is the renderer's own pass-less render, which hands the props (or the pick list) to
+// the selector: render passes draw colours, not ids. Returns the number of props rendered.
+int RenderPlainScene(vtkRenderPass* pass, vtkRenderPass* delegate, const vtkRenderState* s)
+{
+  vtkRenderer* ren = s->GetRenderer();
+  if (ren->GetSelector() && ren->GetPass() == pass)
+  {
+    vtkSmartPointer<vtkRenderPass> keep = pass; // the renderer may hold the only reference
+    ren->SetPass(nullptr);
+    ren->DeviceRender();
+    ren->SetPass(pass);
+    return ren->GetNumberOfPropsRendered();
+  }
+  // Nested in another pass: what that pass would have drawn without this one.
+  delegate->Render(s);
+  return delegate->GetNumberOfRenderedProps();
+}
+
+// Samples per pixel of the target the pass draws into (the window's multisampled render
+// framebuffer, or an outer pass's target), 0 when it is not multisampled. The scene is then
+// rendered with as many samples, so that it keeps its antialiasing; where multisampled
+// textures cannot have that many, it is rendered single-sampled.
+int TargetSamples()
+{
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  if (samples <= 1)
+  {
+    return 0;
+  }
+  GLint colorSamples = 0;
+  GLint depthSamples = 0;
+  glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &colorSamples);
+  glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &depthSamples);
+  return samples <= std::min(colorSamples, depthSamples) ? samples : 0;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -1197,6 +1386,10 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   this->LastMethod = -1;
   this->LastNumberOfPostPasses = 0;
   this->LastRadialGuardBand = 0.0;
+  this->LastLatticeResolution = 0;
+  this->LastNumberOfSlabBatches = 0;
+  this->LastMultiSamples = 0;
+  this->LastPlainScene = false;
   this->LastSliceDepthRange[0] = this->LastSliceDepthRange[1] = 0.0;
   impl.InScatterValid = false;
   impl.FinalInScatter = nullptr;
@@ -1206,6 +1399,15 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   if (!renWin)
   {
     vtkErrorMacro("vtkLightShaftPass needs an OpenGL render window.");
+    return;
+  }
+  if (NeedsPlainScene(s))
+  {
+    this->NumberOfRenderedProps = RenderPlainScene(this,
+      this->DelegatePass ? this->DelegatePass : static_cast<vtkRenderPass*>(impl.DefaultDelegate),
+      s);
+    this->LastNumberOfSceneRenders = 1;
+    this->LastPlainScene = true;
     return;
   }
   if (impl.Window != renWin)
@@ -1298,6 +1500,7 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable cullSaver(ostate, GL_CULL_FACE);
   vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglEnableDisable multisampleSaver(ostate, GL_MULTISAMPLE);
   vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
   vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
@@ -1308,14 +1511,18 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
 
   if (!impl.SceneFramebuffer)
   {
-    for (auto* f : { &impl.SceneFramebuffer, &impl.WorkFramebuffer })
+    for (auto* f : { &impl.SceneFramebuffer, &impl.AccumulationFramebuffer, &impl.WorkFramebuffer })
     {
       *f = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
       (*f)->SetContext(renWin);
     }
   }
+  // The scene is rendered with the samples of the target it is composited into.
+  const int samples = TargetSamples();
+  this->LastMultiSamples = samples;
 
-  // A cookie shapes the spotlight's light on surfaces too: that needs the scene without it.
+  // The one decision whether this frame has a cookie: it shapes the shafts and, rendering the
+  // scene a second time without the spotlight, the light on surfaces.
   const bool cookie = impl.Cookie && impl.ReadyCookie(*this);
 
   // The 2D overlay step of a vtkRenderStepsPass is held back and drawn after compositing so
@@ -1328,7 +1535,7 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   }
 
   ostate->PushFramebufferBindings();
-  impl.RenderScene(*this, s, delegate, light, cookie, w, h);
+  const SceneImage scene = impl.RenderScene(*this, s, delegate, light, cookie, samples, w, h);
   if (overlay)
   {
     steps->SetOverlayPass(overlay);
@@ -1349,14 +1556,20 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   }
   LightFrame lightFrame;
   const bool lightFrameValid = impl.ComputeLightFrame(*this, ren, light, camera, lightFrame);
-  impl.RenderInScatter(*this, s, lightFrame, camera, w, h);
+  impl.RenderInScatter(*this, s, lightFrame, camera, scene, cookie, w, h);
   ostate->PopFramebufferBindings();
 
   ostate->vtkglViewport(x, y, w, h);
   ostate->vtkglEnable(GL_SCISSOR_TEST);
   ostate->vtkglScissor(x, y, w, h);
-  impl.RenderComposite(
-    *this, ren, camera, lightFrameValid ? &lightFrame : nullptr, cookie && lightFrameValid, w, h);
+  impl.RenderComposite(*this,
+    ren,
+    camera,
+    lightFrameValid ? &lightFrame : nullptr,
+    scene,
+    cookie && lightFrameValid,
+    w,
+    h);
 
   if (overlay)
   {
@@ -1366,21 +1579,25 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-void vtkLightShaftPass::Internals::RenderScene(vtkLightShaftPass& self,
+SceneImage vtkLightShaftPass::Internals::RenderScene(vtkLightShaftPass& self,
   const vtkRenderState* s,
   vtkRenderPass* delegate,
   vtkLight* light,
   bool twice,
+  int samples,
   int w,
   int h)
 {
   vtkRenderer* ren = s->GetRenderer();
   vtkOpenGLState* ostate = this->Window->GetState();
-  vtkTextureObject* color = this->SceneColor.Ensure(this->Window, TextureKind::RGBA8, w, h);
-  vtkTextureObject* depth = this->SceneDepth.Ensure(this->Window, TextureKind::Depth, w, h);
+  SceneImage scene;
+  scene.Samples = samples;
+  scene.Color = this->SceneColor.Ensure(this->Window, TextureKind::RGBA8, w, h, samples);
+  scene.Depth = this->SceneDepth.Ensure(this->Window, TextureKind::Depth, w, h, samples);
   if (twice)
   {
-    this->SceneColorUnlit.Ensure(this->Window, TextureKind::RGBA8, w, h);
+    scene.ColorUnlit =
+      this->SceneColorUnlit.Ensure(this->Window, TextureKind::RGBA8, w, h, samples);
   }
 
   vtkRenderState sceneState(ren);
@@ -1388,13 +1605,7 @@ void vtkLightShaftPass::Internals::RenderScene(vtkLightShaftPass& self,
   sceneState.SetFrameBuffer(this->SceneFramebuffer);
   auto renderInto = [&](vtkTextureObject* target)
   {
-    this->SceneFramebuffer->Bind();
-    this->SceneFramebuffer->AddColorAttachment(0, target);
-    this->SceneFramebuffer->ActivateDrawBuffer(0);
-    this->SceneFramebuffer->AddDepthAttachment(depth);
-    this->SceneFramebuffer->StartNonOrtho(w, h);
-    ostate->vtkglViewport(0, 0, w, h);
-    ostate->vtkglScissor(0, 0, w, h);
+    BindTargets(this->SceneFramebuffer, { target }, scene.Depth, w, h);
     // Renderers that do not erase (layers) would otherwise see the previous frame.
     ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
     ostate->vtkglDepthMask(GL_TRUE);
@@ -1417,10 +1628,41 @@ void vtkLightShaftPass::Internals::RenderScene(vtkLightShaftPass& self,
     // intensity rather than switching it off: with no light on, VTK would add a headlight.)
     const double intensity = light->GetIntensity();
     light->SetIntensity(0.0);
-    renderInto(this->SceneColorUnlit.Object);
+    renderInto(scene.ColorUnlit);
     light->SetIntensity(intensity);
   }
-  renderInto(color);
+  renderInto(scene.Color);
+  scene.ShaftDepth = samples > 0 ? this->ResolveDepth(scene.Depth, samples, w, h) : scene.Depth;
+  return scene;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftPass::Internals::ResolveDepth(vtkTextureObject* depthSamples,
+  int samples,
+  int w,
+  int h)
+{
+  vtkTextureObject* resolved = this->ResolvedDepth.Ensure(this->Window, TextureKind::Depth, w, h);
+  this->BindWork(nullptr, resolved, w, h);
+  vtkOpenGLState* ostate = this->Window->GetState();
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  if (vtkShaderProgram* program =
+        this->DepthResolve.Ready(this->Window, vtkLightShaftDepthResolveFS))
+  {
+    depthSamples->Activate();
+    program->SetUniformi("sceneDepthSamples", depthSamples->GetTextureUnit());
+    program->SetUniformi("sampleCount", samples);
+    this->DepthResolve.Quad->Render();
+    depthSamples->Deactivate();
+  }
+  else
+  {
+    ostate->vtkglClearDepth(1.0);
+    ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  }
+  return resolved;
 }
 
 //------------------------------------------------------------------------------
@@ -1707,6 +1949,13 @@ bool vtkLightShaftPass::Internals::ReadyCookie(vtkLightShaftPass& self)
   int height = 0;
   if (!vtkLightShaftImageToRGB(cookie, rgb, width, height))
   {
+    // No cookie this frame: drop the texture of an earlier image so that nothing uses it.
+    if (this->CookieTexture)
+    {
+      this->CookieTexture->ReleaseGraphicsResources(this->Window);
+      this->CookieTexture = nullptr;
+    }
+    this->CookieUploadTime = 0;
     if (!this->WarnedCookie)
     {
       vtkWarningWithObjectMacro(&self, "The cookie texture has no image: no cookie is applied.");
@@ -1766,6 +2015,34 @@ bool vtkLightShaftPass::Internals::ReadyNoise(vtkLightShaftPass& self)
     this->NoiseIsGenerated = true;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightShaftPass::Internals::LatticeWithinBudget(vtkLightShaftPass& self, int slabs)
+{
+  const int requested = self.LatticeResolution;
+  if (requested <= 0)
+  {
+    return 0;
+  }
+  const int affordable = std::max(
+    1, static_cast<int>(std::floor(std::sqrt(static_cast<double>(LatticeCellBudget) / slabs))));
+  if (requested <= affordable)
+  {
+    this->WarnedLatticeBudget = false;
+    return requested;
+  }
+  if (!this->WarnedLatticeBudget)
+  {
+    vtkWarningWithObjectMacro(&self,
+      "LatticeResolution " << requested << " over " << slabs << " slabs would be "
+                           << static_cast<long long>(requested) * requested * slabs
+                           << " lattice cells in a frame, more than the " << LatticeCellBudget
+                           << " allowed: using a lattice of " << affordable
+                           << " (GetLastLatticeResolution).");
+    this->WarnedLatticeBudget = true;
+  }
+  return affordable;
 }
 
 //------------------------------------------------------------------------------
@@ -1856,6 +2133,8 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   const vtkRenderState* s,
   LightFrame& light,
   const CameraFrame& camera,
+  const SceneImage& scene,
+  bool cookie,
   int w,
   int h)
 {
@@ -1893,8 +2172,7 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
   // The depth the slabs read: the scene's, or at reduced resolution the nearest of each block.
-  vtkOpenGLFramebufferObject* depthSource = this->SceneFramebuffer;
-  vtkTextureObject* slabDepth = this->SceneDepth.Object;
+  vtkTextureObject* slabDepth = scene.ShaftDepth;
   if (factor > 1)
   {
     slabDepth = this->ReducedDepth.Ensure(renWin, TextureKind::Depth, lw, lh);
@@ -1905,62 +2183,47 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
       ostate->vtkglEnable(GL_DEPTH_TEST);
       ostate->vtkglDepthFunc(GL_ALWAYS);
       ostate->vtkglDepthMask(GL_TRUE);
-      this->SceneDepth.Object->Activate();
-      program->SetUniformi("fullDepth", this->SceneDepth.Object->GetTextureUnit());
+      scene.ShaftDepth->Activate();
+      program->SetUniformi("fullDepth", scene.ShaftDepth->GetTextureUnit());
       program->SetUniformi("factor", factor);
       const float reducedSize[2] = { static_cast<float>(lw), static_cast<float>(lh) };
       program->SetUniform2f("reducedSize", reducedSize);
       this->DepthDownsample.Quad->Render();
-      this->SceneDepth.Object->Deactivate();
+      scene.ShaftDepth->Deactivate();
     }
-    depthSource = this->WorkFramebuffer;
   }
 
-  // Accumulation target(s), cleared, with a copy of the slab depth for the depth test.
+  // Accumulation target(s), cleared, with a copy of the slab depth for the depth test (the
+  // slabs sample the slab depth, so it cannot be their depth target too).
   vtkTextureObject* depthTest = this->SlabDepthTest.Ensure(renWin, TextureKind::Depth, lw, lh);
   const unsigned int targets = eightBit ? 3 : 1;
-  auto bindAccumulation = [&]()
-  {
-    vtkOpenGLFramebufferObject* fbo = this->SceneFramebuffer;
-    fbo->Bind();
-    fbo->RemoveColorAttachments(3);
-    for (unsigned int i = 0; i < targets; ++i)
-    {
-      fbo->AddColorAttachment(i, this->Accumulation[i].Object);
-    }
-    fbo->ActivateDrawBuffers(targets);
-    fbo->AddDepthAttachment(depthTest);
-    fbo->StartNonOrtho(lw, lh);
-    ostate->vtkglViewport(0, 0, lw, lh);
-    ostate->vtkglScissor(0, 0, lw, lh);
-  };
   for (unsigned int i = 0; i < targets; ++i)
   {
     this->Accumulation[i].Ensure(renWin, accumulationKind, lw, lh);
   }
-  if (factor > 1)
+  auto bindAccumulation = [&]()
   {
-    // The reduced depth is attached to the work framebuffer: copy it from there.
-    bindAccumulation();
-    depthSource->Bind(GL_READ_FRAMEBUFFER);
-    ostate->vtkglBlitFramebuffer(0, 0, lw, lh, 0, 0, lw, lh, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  }
-  else
-  {
-    // The scene framebuffer holds the scene depth; attach the copy to the accumulation only
-    // after the blit (the same framebuffer object serves both).
-    this->WorkFramebuffer->Bind();
-    this->WorkFramebuffer->RemoveColorAttachments(3);
-    this->WorkFramebuffer->RemoveDepthAttachment();
-    this->WorkFramebuffer->AddDepthAttachment(depthTest);
-    this->WorkFramebuffer->DeactivateDrawBuffers();
-    this->SceneFramebuffer->Bind(GL_READ_FRAMEBUFFER);
-    this->WorkFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-    ostate->vtkglBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-    this->WorkFramebuffer->Bind();
-    this->WorkFramebuffer->RemoveDepthAttachment();
-    bindAccumulation();
-  }
+    vtkOpenGLFramebufferObject* fbo = this->AccumulationFramebuffer;
+    if (eightBit)
+    {
+      BindTargets(fbo,
+        { this->Accumulation[0].Object,
+          this->Accumulation[1].Object,
+          this->Accumulation[2].Object },
+        depthTest,
+        lw,
+        lh);
+    }
+    else
+    {
+      BindTargets(fbo, { this->Accumulation[0].Object }, depthTest, lw, lh);
+    }
+  };
+  this->BindWork(nullptr, slabDepth, lw, lh);
+  bindAccumulation();
+  this->WorkFramebuffer->Bind(GL_READ_FRAMEBUFFER);
+  ostate->vtkglBlitFramebuffer(0, 0, lw, lh, 0, 0, lw, lh, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  this->AccumulationFramebuffer->Bind();
   ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
   this->FinalInScatter = this->Accumulation[0].Object;
@@ -2056,13 +2319,10 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   // slab, and footprints covering two thicknesses.
   const int drawnSlabs = jitter ? slices + 1 : slices;
 
-  // Slabs: for each, the screen footprint of the lit polytope between its two depths (as a
-  // lattice of n x n cells when the smooth factors are evaluated per lattice vertex).
-  const int lattice = slabs ? self.LatticeResolution : 0;
-  std::vector<float>& vertices = this->SliceVertices;
-  vertices.clear();
+  // Slabs: for each, the screen footprint of the lit polytope between its two depths.
+  std::vector<SlabFootprint>& footprints = this->SlabFootprints;
+  footprints.clear();
   std::vector<glm::dvec2> footprint;
-  int drawn = 0;
   for (int k = 0; k < drawnSlabs; ++k)
   {
     const double za = std::max(nearest, nearest + (jitter ? k - 1 : k) * thickness);
@@ -2095,83 +2355,26 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
         }
       }
     }
-    const std::vector<glm::dvec2> hull = ConvexHull(footprint);
-    if (hull.size() < 3)
+    std::vector<glm::dvec2> hull = ConvexHull(footprint);
+    if (hull.size() >= 3)
     {
-      continue;
-    }
-    ++drawn;
-    if (lattice > 0)
-    {
-      // An n x n lattice over the footprint's bounding rectangle, its cells clipped to the
-      // footprint so that no more fragments are drawn than without the lattice.
-      glm::dvec2 low = hull[0];
-      glm::dvec2 high = hull[0];
-      for (const glm::dvec2& p : hull)
-      {
-        low = glm::min(low, p);
-        high = glm::max(high, p);
-      }
-      auto corner = [&](int i, int j)
-      { return low + (high - low) * glm::dvec2(double(i) / lattice, double(j) / lattice); };
-      // Clip against the hull without its near-coincident vertices: the direction of an edge a
-      // rounding error long is noise, and its half-plane would cut a sliver out of the slab.
-      const double tiny = 1e-9 * glm::length(high - low);
-      std::vector<glm::dvec2> window;
-      for (const glm::dvec2& p : hull)
-      {
-        if (window.empty() || glm::length(p - window.back()) > tiny)
-        {
-          window.push_back(p);
-        }
-      }
-      while (window.size() > 1 && glm::length(window.front() - window.back()) <= tiny)
-      {
-        window.pop_back();
-      }
-      for (int j = 0; j < lattice; ++j)
-      {
-        for (int i = 0; i < lattice; ++i)
-        {
-          const std::vector<glm::dvec2> cell = ClipToConvex(
-            { corner(i, j), corner(i + 1, j), corner(i + 1, j + 1), corner(i, j + 1) }, window);
-          for (size_t c = 1; c + 1 < cell.size(); ++c)
-          {
-            for (const glm::dvec2& p : { cell[0], cell[c], cell[c + 1] })
-            {
-              vertices.insert(vertices.end(),
-                { static_cast<float>(p.x),
-                  static_cast<float>(p.y),
-                  static_cast<float>(k),
-                  static_cast<float>(za) });
-            }
-          }
-        }
-      }
-      continue;
-    }
-    for (size_t i = 1; i + 1 < hull.size(); ++i)
-    {
-      for (const glm::dvec2& p : { hull[0], hull[i], hull[i + 1] })
-      {
-        vertices.insert(vertices.end(),
-          { static_cast<float>(p.x),
-            static_cast<float>(p.y),
-            static_cast<float>(k),
-            static_cast<float>(za) });
-      }
+      footprints.push_back({ k, za, std::move(hull) });
     }
   }
-  if (vertices.empty())
+  if (footprints.empty())
   {
     return;
   }
+  // Each slab is drawn as its footprint, or as a lattice of n x n cells over it when the smooth
+  // factors are evaluated per lattice vertex (n within the frame's cell budget).
+  const int lattice =
+    slabs ? this->LatticeWithinBudget(self, static_cast<int>(footprints.size())) : 0;
+  self.LastLatticeResolution = lattice;
 
   // Shadow map of the casters, seen from the light (skipped when nothing can shadow).
   // Only the slabs and the march look up a shadow map.
   const bool shadows =
     (method == SLICES || method == RAY_MARCH) && this->RenderShadowMap(self, s, light);
-  const bool cookie = this->Cookie && this->CookieTexture;
   const bool noise = noiseOn && this->ReadyNoise(self);
   vtkShaderProgram* program = this->ReadySliceProgram(self, method, shadows, cookie, noise);
   if (!program)
@@ -2294,20 +2497,49 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
       "accumulationScale", static_cast<float>(self.Exposure > 0.0 ? self.Exposure : 1.0));
   }
 
-  this->SliceBuffer->Upload(vertices, vtkOpenGLBufferObject::ArrayBuffer);
-  if (this->SliceArrayProgram != program)
+  // The slabs' triangles are built and drawn in batches of about SlabBatchVertices, so that the
+  // vertex memory stays bounded and no single draw holds the GPU for the whole frame. Before
+  // the next batch the driver finishes this one: drivers that queue the whole frame's triangles
+  // (llvmpipe) would otherwise hold them all (measured: 0.9 GiB instead of 0.2 GiB at 2^21
+  // lattice cells).
+  std::vector<float>& vertices = this->SliceVertices;
+  vertices.clear();
+  auto drawBatch = [&](bool more)
   {
-    this->SliceArray->ShaderProgramChanged();
-  }
-  this->SliceArray->Bind();
-  if (this->SliceArrayProgram != program)
+    if (vertices.empty())
+    {
+      return;
+    }
+    this->SliceBuffer->Upload(vertices, vtkOpenGLBufferObject::ArrayBuffer);
+    if (this->SliceArrayProgram != program)
+    {
+      this->SliceArray->ShaderProgramChanged();
+    }
+    this->SliceArray->Bind();
+    if (this->SliceArrayProgram != program)
+    {
+      this->SliceArray->AddAttributeArray(
+        program, this->SliceBuffer, "sliceVertex", 0, 4 * sizeof(float), VTK_FLOAT, 4, false);
+      this->SliceArrayProgram = program;
+    }
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size() / 4));
+    this->SliceArray->Release();
+    if (more)
+    {
+      glFinish();
+    }
+    ++self.LastNumberOfSlabBatches;
+    vertices.clear();
+  };
+  for (const SlabFootprint& slab : footprints)
   {
-    this->SliceArray->AddAttributeArray(
-      program, this->SliceBuffer, "sliceVertex", 0, 4 * sizeof(float), VTK_FLOAT, 4, false);
-    this->SliceArrayProgram = program;
+    AppendSlabTriangles(slab, lattice, vertices);
+    if (vertices.size() / 4 >= SlabBatchVertices)
+    {
+      drawBatch(true);
+    }
   }
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size() / 4));
-  this->SliceArray->Release();
+  drawBatch(false);
 
   slabDepth->Deactivate();
   for (vtkTextureObject* t : { shadows ? this->ShadowMap.Object.Get() : nullptr,
@@ -2325,7 +2557,7 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   }
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglDisable(GL_BLEND);
-  self.LastNumberOfSlicesDrawn = drawn;
+  self.LastNumberOfSlicesDrawn = static_cast<int>(footprints.size());
 
   vtkTextureObject* current = this->Accumulation[0].Object;
   if (method == RADIAL_BLUR)
@@ -2336,7 +2568,7 @@ void vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftPass& self,
   {
     current = this->Gather(self, current, camera, slabDepth, lw, lh);
   }
-  this->PostProcess(self, current, camera, slabDepth, w, h, lw, lh);
+  this->PostProcess(self, current, camera, slabDepth, scene.ShaftDepth, w, h, lw, lh);
   this->InScatterValid = true;
 }
 
@@ -2547,6 +2779,7 @@ void vtkLightShaftPass::Internals::PostProcess(vtkLightShaftPass& self,
   vtkTextureObject* current,
   const CameraFrame& camera,
   vtkTextureObject* slabDepth,
+  vtkTextureObject* fullDepth,
   int w,
   int h,
   int lw,
@@ -2600,17 +2833,17 @@ void vtkLightShaftPass::Internals::PostProcess(vtkLightShaftPass& self,
     {
       current->Activate();
       slabDepth->Activate();
-      this->SceneDepth.Object->Activate();
+      fullDepth->Activate();
       program->SetUniformi("reduced", current->GetTextureUnit());
       program->SetUniformi("reducedDepth", slabDepth->GetTextureUnit());
-      program->SetUniformi("fullDepth", this->SceneDepth.Object->GetTextureUnit());
+      program->SetUniformi("fullDepth", fullDepth->GetTextureUnit());
       program->SetUniformMatrix4x4("invProjectionDCVC", invProjection.data());
       const float fullSize[2] = { static_cast<float>(w), static_cast<float>(h) };
       program->SetUniform2f("fullSize", fullSize);
       program->SetUniformf("depthTolerance", SameSurfaceTolerance);
       this->Upsample.Quad->Render();
       ++self.LastNumberOfPostPasses;
-      this->SceneDepth.Object->Deactivate();
+      fullDepth->Deactivate();
       slabDepth->Deactivate();
       current->Deactivate();
     }
@@ -2624,6 +2857,7 @@ void vtkLightShaftPass::Internals::RenderComposite(vtkLightShaftPass& self,
   vtkRenderer* ren,
   const CameraFrame& camera,
   const LightFrame* light,
+  const SceneImage& scene,
   bool cookieSurfaces,
   int w,
   int h)
@@ -2645,6 +2879,11 @@ void vtkLightShaftPass::Internals::RenderComposite(vtkLightShaftPass& self,
   {
     defines.emplace_back("LIGHTSHAFT_COOKIE_SURFACES");
   }
+  const bool multisample = scene.Samples > 0;
+  if (multisample)
+  {
+    defines.emplace_back("LIGHTSHAFT_MULTISAMPLE");
+  }
   vtkShaderProgram* program = this->Composite.Ready(renWin, vtkLightShaftCompositeFS, defines);
   if (!program)
   {
@@ -2652,16 +2891,16 @@ void vtkLightShaftPass::Internals::RenderComposite(vtkLightShaftPass& self,
     return;
   }
 
-  vtkTextureObject* sceneColor = this->SceneColor.Object;
-  vtkTextureObject* sceneDepth = this->SceneDepth.Object;
+  // Multisampled scene textures are read per sample (their uniforms have a "Samples" suffix).
+  const std::string suffix = multisample ? "Samples" : "";
   vtkTextureObject* inScatter = this->FinalInScatter;
-  std::vector<vtkTextureObject*> active = { sceneColor, sceneDepth, inScatter };
+  std::vector<vtkTextureObject*> active = { scene.Color, scene.Depth, inScatter };
   for (vtkTextureObject* t : active)
   {
     t->Activate();
   }
-  program->SetUniformi("sceneColor", sceneColor->GetTextureUnit());
-  program->SetUniformi("sceneDepth", sceneDepth->GetTextureUnit());
+  program->SetUniformi(("sceneColor" + suffix).c_str(), scene.Color->GetTextureUnit());
+  program->SetUniformi(("sceneDepth" + suffix).c_str(), scene.Depth->GetTextureUnit());
   program->SetUniformi("inScatter", inScatter->GetTextureUnit());
   program->SetUniformf("exposure", static_cast<float>(self.Exposure));
   auto invProjection = ToFloatColumnMajor(camera.ClipToView);
@@ -2677,12 +2916,12 @@ void vtkLightShaftPass::Internals::RenderComposite(vtkLightShaftPass& self,
   }
   if (cookieSurfaces)
   {
-    vtkTextureObject* unlit = this->SceneColorUnlit.Object;
+    vtkTextureObject* unlit = scene.ColorUnlit;
     unlit->Activate();
     this->CookieTexture->Activate();
     active.push_back(unlit);
     active.push_back(this->CookieTexture);
-    program->SetUniformi("sceneColorUnlit", unlit->GetTextureUnit());
+    program->SetUniformi(("sceneColorUnlit" + suffix).c_str(), unlit->GetTextureUnit());
     program->SetUniformi("cookieTexture", this->CookieTexture->GetTextureUnit());
     program->SetUniformf("cookieSize",
       static_cast<float>(
@@ -2698,7 +2937,12 @@ void vtkLightShaftPass::Internals::RenderComposite(vtkLightShaftPass& self,
       static_cast<float>(2.0 * std::tan(std::min(light->ConeHalfAngle, MaximumBoundingHalfAngle))));
   }
 
-  // Write colour and the scene's depth, so later passes and overlays see the surfaces.
+  // Write colour and the scene's depth, so later passes and overlays see the surfaces; per
+  // sample when the scene is multisampled (the shader reads gl_SampleID).
+  if (multisample)
+  {
+    ostate->vtkglEnable(GL_MULTISAMPLE);
+  }
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_ALWAYS);
   ostate->vtkglDepthMask(GL_TRUE);

@@ -530,6 +530,18 @@ public:
   vtkGetMacro(LastMethod, int);
   /// Full-screen-sized passes the last frame ran after the slabs/march (gather, blur, etc.).
   vtkGetMacro(LastNumberOfPostPasses, int);
+  /// The lattice resolution the last frame's slabs used: LatticeResolution, or less when that
+  /// would exceed the per-frame budget of 2^21 lattice cells (0: no lattice).
+  vtkGetMacro(LastLatticeResolution, int);
+  /// Draw calls the last frame's slabs took (they are drawn in batches of bounded size).
+  vtkGetMacro(LastNumberOfSlabBatches, int);
+  /// Samples per pixel the last frame rendered the scene with: those of the target the pass
+  /// draws into (the window's MultiSamples), 0 when it is not multisampled.
+  vtkGetMacro(LastMultiSamples, int);
+  /// True when the last render drew only the plain scene, exactly as without the pass: the
+  /// renderer was rendering for a hardware selector (picking, selection) or for a pass that
+  /// renders props by their keys (the shafts come back on the next frame).
+  vtkGetMacro(LastPlainScene, bool);
   vtkGetVector2Macro(LastSliceDepthRange, double);
   vtkGetVector2Macro(LastViewportSize, int);
   ///@}
@@ -623,6 +635,10 @@ protected:
   double ShadowCasterBounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 };
   int LastNumberOfPostPasses = 0;
   double LastRadialGuardBand = 0.0;
+  int LastLatticeResolution = 0;
+  int LastNumberOfSlabBatches = 0;
+  int LastMultiSamples = 0;
+  bool LastPlainScene = false;
 
 private:
   void RenderFrame(const vtkRenderState* s);

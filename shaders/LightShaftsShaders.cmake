@@ -5,6 +5,7 @@ set(lightshafts_pass_shaders
   vtkLightShaftCommon
   vtkLightShaftCompositeFS
   vtkLightShaftDepthDownsampleFS
+  vtkLightShaftDepthResolveFS
   vtkLightShaftIntegrand
   vtkLightShaftOcclusionFS
   vtkLightShaftRadialBlurFS

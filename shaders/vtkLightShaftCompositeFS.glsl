@@ -1,23 +1,49 @@
 //VTK::System::Dec
-//VTK::Output::Dec
-
 // Composite: out = scene * exp(-sigma_t * t_surface) + Exposure * L_in, depth passed through.
 // Features (#defines): LIGHTSHAFT_ATTENUATE (aerial perspective), LIGHTSHAFT_COOKIE_SURFACES
 // (the cookie shapes the spotlight's light on surfaces: scene = unlit + cookie * (lit - unlit),
-// from two renders of the scene, with and without the spotlight).
+// from two renders of the scene, with and without the spotlight), LIGHTSHAFT_MULTISAMPLE (the
+// scene was rendered multisampled: the composite runs once per sample, reading and writing that
+// sample's colour and depth, so the target keeps its antialiasing and resolves as it would
+// have without the pass).
 //VTK::LightShaft::Features
+#ifdef LIGHTSHAFT_MULTISAMPLE
+#extension GL_ARB_sample_shading : require
+#endif
+//VTK::Output::Dec
 
 in vec2 texCoord;
 
 //VTK::LightShaft::Common
 
-uniform sampler2D sceneColor;
 uniform sampler2D inScatter;
 uniform vec3 sigmaT;
 uniform float exposure;
 
+#ifdef LIGHTSHAFT_MULTISAMPLE
+uniform sampler2DMS sceneColorSamples;
+uniform sampler2DMS sceneDepthSamples;
+ivec2 sceneSize() { return textureSize(sceneColorSamples); }
+vec4 sceneColorAt(ivec2 pixel) { return texelFetch(sceneColorSamples, pixel, gl_SampleID); }
+float sceneDepthAt(ivec2 pixel) { return texelFetch(sceneDepthSamples, pixel, gl_SampleID).r; }
+#else
+uniform sampler2D sceneColor;
+ivec2 sceneSize() { return textureSize(sceneColor, 0); }
+vec4 sceneColorAt(ivec2 pixel) { return texelFetch(sceneColor, pixel, 0); }
+float sceneDepthAt(ivec2 pixel) { return texelFetch(sceneDepth, pixel, 0).r; }
+#endif
+
 #ifdef LIGHTSHAFT_COOKIE_SURFACES
+#ifdef LIGHTSHAFT_MULTISAMPLE
+uniform sampler2DMS sceneColorUnlitSamples;
+vec4 sceneColorUnlitAt(ivec2 pixel)
+{
+  return texelFetch(sceneColorUnlitSamples, pixel, gl_SampleID);
+}
+#else
 uniform sampler2D sceneColorUnlit;
+vec4 sceneColorUnlitAt(ivec2 pixel) { return texelFetch(sceneColorUnlit, pixel, 0); }
+#endif
 uniform sampler2D cookieTexture;
 uniform float cookieSize;
 uniform mat4 lightClipFromVC;
@@ -29,9 +55,9 @@ uniform float lightTexelAngle;
 void main()
 {
   // texCoord runs over the viewport, pixel centres at (i + 0.5) / size.
-  ivec2 pixel = ivec2(texCoord * vec2(textureSize(sceneColor, 0)));
-  vec4 color = texelFetch(sceneColor, pixel, 0);
-  float depth = texelFetch(sceneDepth, pixel, 0).r;
+  ivec2 pixel = ivec2(texCoord * vec2(sceneSize()));
+  vec4 color = sceneColorAt(pixel);
+  float depth = sceneDepthAt(pixel);
   // Nearest sample: the in-scatter buffer is full size here (upsampled when it was computed
   // at a lower resolution).
   vec3 inScattered = texture(inScatter, texCoord).rgb;
@@ -57,7 +83,7 @@ void main()
       float lod = max(log2(footprint / max(r * lightTexelAngle, 1e-30) * cookieSize), 0.0);
       cookie = max(textureLod(cookieTexture, lightUV, lod).rgb, vec3(0.0));
     }
-    vec4 unlit = texelFetch(sceneColorUnlit, pixel, 0);
+    vec4 unlit = sceneColorUnlitAt(pixel);
     color.rgb = unlit.rgb + cookie * max(color.rgb - unlit.rgb, vec3(0.0));
   }
 #endif

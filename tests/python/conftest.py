@@ -1,5 +1,9 @@
 """pytest setup: the tests import the built `lightshafts` package (PYTHONPATH set by
-tools/test.sh) and render offscreen (run under xvfb-run)."""
+tools/test.sh) and render offscreen (run under xvfb-run).
+
+Every test runs with VTK's output captured: an error or warning that VTK (or the pass) prints
+through its output window during a test fails that test, unless the test said it expects it
+(`vtk_messages.expect(pattern)`) or caught it with an observer on the object (`messages`)."""
 
 import os
 import sys
@@ -10,9 +14,12 @@ import pytest  # noqa: E402
 from vtkmodules.util.misc import calldata_type  # noqa: E402
 from vtkmodules.vtkCommonCore import VTK_STRING  # noqa: E402
 
+from vtk_output import VTK_OUTPUT  # noqa: E402
+
 
 class Messages:
-    """Collects the ErrorEvent/WarningEvent messages a VTK object emits."""
+    """Collects the ErrorEvent/WarningEvent messages a VTK object emits (VTK then does not print
+    them)."""
 
     def __init__(self, obj):
         self.errors = []
@@ -31,6 +38,48 @@ class Messages:
         obj.AddObserver("WarningEvent", on_warning)
 
 
+def _check_vtk_output(phase):
+    unexpected = VTK_OUTPUT.unexpected()
+    if unexpected:
+        listing = "\n".join(f"  {kind}: {text.strip()}" for kind, text in unexpected)
+        VTK_OUTPUT.messages.clear()
+        pytest.fail(f"VTK printed {len(unexpected)} unexpected message(s) during {phase}:\n"
+                    f"{listing}", pytrace=False)
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_setup(item):
+    VTK_OUTPUT.reset()
+    yield
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_call(item):
+    outcome = yield
+    if outcome.excinfo is None:
+        _check_vtk_output("the test")
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_teardown(item):
+    yield
+    _check_vtk_output("teardown")
+
+
 @pytest.fixture
 def messages():
     return Messages
+
+
+@pytest.fixture
+def vtk_messages():
+    """The current test's VTK output log: `vtk_messages.expect(pattern)` allows a message,
+    `vtk_messages.messages` lists what was printed."""
+    return VTK_OUTPUT
+
+
+def pytest_addoption(parser):
+    parser.addoption("--fuzz-frames", type=int, default=300,
+                     help="frames the seeded fuzz test renders (default 300)")
+    parser.addoption("--fuzz-seed", default="20261129",
+                     help="seed of the fuzz test's random sequence, or 'random'")

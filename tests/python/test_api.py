@@ -241,7 +241,7 @@ def test_quality_presets():
             p.GetAutomaticSliceCount()) == defaults
 
 
-def test_reference_parameters(messages):
+def test_reference_parameters(messages, vtk_messages):
     from lightshafts import vtkLightShaftReference
     r = vtkLightShaftReference()
     assert r.GetRelativeTolerance() == 1e-9
@@ -268,12 +268,14 @@ def test_reference_parameters(messages):
     r.SetRelativeTolerance(math.nan)
     assert r.GetRelativeTolerance() == 1e-14
     assert len(log.errors) == 1 and "RelativeTolerance" in log.errors[0]
-    # Without a renderer and a pass, Update() reports the missing inputs.
+    # Without a renderer and a pass, Update() reports the missing inputs (and VTK's executive
+    # that the algorithm failed).
+    vtk_messages.expect("vtkLightShaftReference.*returned failure for request")
     r.Update()
     assert any("SetRenderer" in e for e in log.errors)
 
 
-def test_fetch_floor_measures_more_for_more_fetches():
+def test_fetch_floor_measures_more_for_more_fetches(vtk_messages):
     import render_helpers as rh
     from lightshafts import vtkLightShaftFetchFloor
     renderer, window = rh.make_window(64, 48)
@@ -282,4 +284,6 @@ def test_fetch_floor_measures_more_for_more_fetches():
     few = floor.Measure(window, 256, 256, 1, 3)
     many = floor.Measure(window, 256, 256, 400, 3)
     assert 0.0 < few < many
+    vtk_messages.expect("vtkLightShaftFetchFloor.*window")
     assert floor.Measure(None, 16, 16, 1, 1) == -1.0
+    assert len(vtk_messages.messages) == 1

@@ -17,6 +17,7 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 
 import lightshaft_reference as ref
 import render_helpers as rh
+from vtk_output import ANALYTIC_IGNORES_SHADOWS, VTK_OUTPUT
 
 
 METHODS = ["slices", "ray-march", "radial-blur", "analytic"]
@@ -30,6 +31,8 @@ _method = "slices"
 def method(request):
     global _method
     _method = request.param
+    # ANALYTIC says once that it ignores the scene's shadows: documented, expected here.
+    VTK_OUTPUT.expect(ANALYTIC_IGNORES_SHADOWS)
     yield request.param
     _method = "slices"
 
@@ -247,14 +250,20 @@ def test_occluder_touching_the_light():
 
 
 def test_degenerate_scene():
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
     renderer, window = rh.make_window(160, 120)
-    # Zero-area geometry: a plane collapsed to a line, and the light.
-    plate = vtkPlaneSource()
-    plate.SetOrigin(0.0, 0.0, 0.0)
-    plate.SetPoint1(1.0, 0.0, 0.0)
-    plate.SetPoint2(2.0, 0.0, 0.0)
+    # Zero-area geometry: a triangle collapsed to a line, and the light.
+    points = vtkPoints()
+    for x in (0.0, 1.0, 2.0):
+        points.InsertNextPoint(x, 0.0, 0.0)
+    triangles = vtkCellArray()
+    triangles.InsertNextCell(3, (0, 1, 2))
+    plate = vtkPolyData()
+    plate.SetPoints(points)
+    plate.SetPolys(triangles)
     mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(plate.GetOutputPort())
+    mapper.SetInputData(plate)
     actor = vtkActor()
     actor.SetMapper(mapper)
     renderer.AddActor(actor)

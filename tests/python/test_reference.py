@@ -182,7 +182,7 @@ def test_shadow_map_visibility_separates_shadow_map_error():
     assert error_same_map < 0.005
 
 
-def test_shadow_map_visibility_needs_a_shadow_map(messages):
+def test_shadow_map_visibility_needs_a_shadow_map(messages, vtk_messages):
     renderer, window, info, shafts = scene(40, 30)
     shafts.SetScatteringCoefficient(0.0)  # nothing scatters: no shadow map is rendered
     window.Render()
@@ -191,6 +191,7 @@ def test_shadow_map_visibility_needs_a_shadow_map(messages):
     reference.SetRenderer(renderer)
     reference.SetLightShaftPass(shafts)
     reference.SetVisibilityModeToShadowMap()
+    vtk_messages.expect("vtkLightShaftReference.*returned failure for request")
     reference.Update()
     assert any("shadow map" in e for e in log.errors)
 

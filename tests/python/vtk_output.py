@@ -1,0 +1,48 @@
+"""What VTK prints during the tests: every error and warning that goes through VTK's output
+window. conftest.py fails a test on any message it did not expect; a test (or a helper) that
+expects one says so with `VTK_OUTPUT.expect(pattern)`."""
+
+import re
+
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.vtkCommonCore import VTK_STRING, vtkOutputWindow
+
+# The pass's documented warnings that tests meet on purpose.
+ANALYTIC_IGNORES_SHADOWS = r"Method ANALYTIC ignores shadows"
+
+
+class VTKOutputLog:
+    """Every error and warning VTK prints through its output window (vtkErrorMacro,
+    vtkWarningMacro, vtkGenericWarningMacro, ... of any object without its own observer)."""
+
+    def __init__(self):
+        self.messages = []  # (kind, text)
+        self.expected = []  # regular expressions
+        window = vtkOutputWindow.GetInstance()
+
+        @calldata_type(VTK_STRING)
+        def on_error(_obj, _event, text):
+            self.messages.append(("error", text))
+
+        @calldata_type(VTK_STRING)
+        def on_warning(_obj, _event, text):
+            self.messages.append(("warning", text))
+
+        self._callbacks = (on_error, on_warning)
+        window.AddObserver("ErrorEvent", on_error)
+        window.AddObserver("WarningEvent", on_warning)
+
+    def reset(self):
+        self.messages.clear()
+        self.expected.clear()
+
+    def expect(self, pattern):
+        """Messages matching `pattern` (a regular expression) do not fail the current test."""
+        self.expected.append(re.compile(pattern))
+
+    def unexpected(self):
+        return [(kind, text) for kind, text in self.messages
+                if not any(p.search(text) for p in self.expected)]
+
+
+VTK_OUTPUT = VTKOutputLog()
