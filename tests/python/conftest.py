@@ -11,31 +11,8 @@ import sys
 sys.path.insert(0, os.path.dirname(__file__))
 
 import pytest  # noqa: E402
-from vtkmodules.util.misc import calldata_type  # noqa: E402
-from vtkmodules.vtkCommonCore import VTK_STRING  # noqa: E402
 
-from vtk_output import VTK_OUTPUT  # noqa: E402
-
-
-class Messages:
-    """Collects the ErrorEvent/WarningEvent messages a VTK object emits (VTK then does not print
-    them)."""
-
-    def __init__(self, obj):
-        self.errors = []
-        self.warnings = []
-
-        @calldata_type(VTK_STRING)
-        def on_error(_obj, _event, message):
-            self.errors.append(message)
-
-        @calldata_type(VTK_STRING)
-        def on_warning(_obj, _event, message):
-            self.warnings.append(message)
-
-        self._callbacks = (on_error, on_warning)
-        obj.AddObserver("ErrorEvent", on_error)
-        obj.AddObserver("WarningEvent", on_warning)
+from vtk_output import VTK_OUTPUT, Messages  # noqa: E402
 
 
 def _check_vtk_output(phase):

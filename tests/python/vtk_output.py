@@ -11,6 +11,27 @@ from vtkmodules.vtkCommonCore import VTK_STRING, vtkOutputWindow
 ANALYTIC_IGNORES_SHADOWS = r"Method ANALYTIC ignores shadows"
 
 
+class Messages:
+    """Collects the ErrorEvent/WarningEvent messages a VTK object emits (VTK then does not print
+    them)."""
+
+    def __init__(self, obj):
+        self.errors = []
+        self.warnings = []
+
+        @calldata_type(VTK_STRING)
+        def on_error(_obj, _event, message):
+            self.errors.append(message)
+
+        @calldata_type(VTK_STRING)
+        def on_warning(_obj, _event, message):
+            self.warnings.append(message)
+
+        self._callbacks = (on_error, on_warning)
+        obj.AddObserver("ErrorEvent", on_error)
+        obj.AddObserver("WarningEvent", on_warning)
+
+
 class VTKOutputLog:
     """Every error and warning VTK prints through its output window (vtkErrorMacro,
     vtkWarningMacro, vtkGenericWarningMacro, ... of any object without its own observer)."""
