@@ -948,8 +948,7 @@ public:
     const LightFrame* light,
     const SceneImage& scene,
     bool cookieSurfaces,
-    int w,
-    int h);
+    const int viewport[4]);
 };
 
 vtkStandardNewMacro(vtkLightShaftPass);
@@ -1331,6 +1330,37 @@ int RenderPlainScene(vtkRenderPass* pass, vtkRenderPass* delegate, const vtkRend
   return delegate->GetNumberOfRenderedProps();
 }
 
+// Whether the bound draw framebuffer's depth has the format and samples of `depth`, so that a
+// blit copies it bit for bit.
+bool TargetDepthMatches(vtkTextureObject* depth)
+{
+  GLint target = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+  const GLenum attachment = target ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
+  GLint type = GL_NONE;
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+  if (type == GL_NONE)
+  {
+    return false;
+  }
+  GLint theirs[4] = { 0, 0, 0, 0 };
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &theirs[0]);
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &theirs[1]);
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &theirs[2]);
+  glGetIntegerv(GL_SAMPLES, &theirs[3]);
+  GLint ours[4] = { 0, 0, 0, static_cast<GLint>(depth->GetSamples()) };
+  depth->Activate();
+  glGetTexLevelParameteriv(depth->GetTarget(), 0, GL_TEXTURE_DEPTH_SIZE, &ours[0]);
+  glGetTexLevelParameteriv(depth->GetTarget(), 0, GL_TEXTURE_DEPTH_TYPE, &ours[1]);
+  glGetTexLevelParameteriv(depth->GetTarget(), 0, GL_TEXTURE_STENCIL_SIZE, &ours[2]);
+  depth->Deactivate();
+  return std::equal(theirs, theirs + 4, ours);
+}
+
 // Samples per pixel of the target the pass draws into (the window's multisampled render
 // framebuffer, or an outer pass's target), 0 when it is not multisampled. The scene is then
 // rendered with as many samples, so that it keeps its antialiasing; where multisampled
@@ -1562,14 +1592,14 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   ostate->vtkglViewport(x, y, w, h);
   ostate->vtkglEnable(GL_SCISSOR_TEST);
   ostate->vtkglScissor(x, y, w, h);
+  const int viewport[4] = { x, y, w, h };
   impl.RenderComposite(*this,
     ren,
     camera,
     lightFrameValid ? &lightFrame : nullptr,
     scene,
     cookie && lightFrameValid,
-    w,
-    h);
+    viewport);
 
   if (overlay)
   {
@@ -2859,9 +2889,10 @@ void vtkLightShaftPass::Internals::RenderComposite(vtkLightShaftPass& self,
   const LightFrame* light,
   const SceneImage& scene,
   bool cookieSurfaces,
-  int w,
-  int h)
+  const int viewport[4])
 {
+  const int w = viewport[2];
+  const int h = viewport[3];
   vtkOpenGLRenderWindow* renWin = this->Window;
   vtkOpenGLState* ostate = renWin->GetState();
   double sigmaT[3];
@@ -2883,6 +2914,14 @@ void vtkLightShaftPass::Internals::RenderComposite(vtkLightShaftPass& self,
   if (multisample)
   {
     defines.emplace_back("LIGHTSHAFT_MULTISAMPLE");
+  }
+  // The scene's depth goes to the target unchanged, so that later passes, overlays and depth
+  // queries (vtkRenderer::GetZ) see the surfaces as without the pass: copied when the target's
+  // depth has the same format, else written by the shader.
+  const bool copyDepth = TargetDepthMatches(scene.Depth);
+  if (!copyDepth)
+  {
+    defines.emplace_back("LIGHTSHAFT_WRITE_DEPTH");
   }
   vtkShaderProgram* program = this->Composite.Ready(renWin, vtkLightShaftCompositeFS, defines);
   if (!program)
@@ -2937,15 +2976,22 @@ void vtkLightShaftPass::Internals::RenderComposite(vtkLightShaftPass& self,
       static_cast<float>(2.0 * std::tan(std::min(light->ConeHalfAngle, MaximumBoundingHalfAngle))));
   }
 
-  // Write colour and the scene's depth, so later passes and overlays see the surfaces; per
-  // sample when the scene is multisampled (the shader reads gl_SampleID).
+  // Write colour (and depth), per sample when the scene is multisampled (the shader reads
+  // gl_SampleID).
   if (multisample)
   {
     ostate->vtkglEnable(GL_MULTISAMPLE);
   }
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_ALWAYS);
-  ostate->vtkglDepthMask(GL_TRUE);
+  if (copyDepth)
+  {
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+  }
+  else
+  {
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_ALWAYS);
+    ostate->vtkglDepthMask(GL_TRUE);
+  }
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   if (ren->Transparent())
   {
@@ -2961,6 +3007,23 @@ void vtkLightShaftPass::Internals::RenderComposite(vtkLightShaftPass& self,
   for (auto it = active.rbegin(); it != active.rend(); ++it)
   {
     (*it)->Deactivate();
+  }
+  if (copyDepth)
+  {
+    ostate->PushReadFramebufferBinding();
+    this->SceneFramebuffer->Bind(GL_READ_FRAMEBUFFER);
+    ostate->vtkglDepthMask(GL_TRUE);
+    ostate->vtkglBlitFramebuffer(0,
+      0,
+      w,
+      h,
+      viewport[0],
+      viewport[1],
+      viewport[0] + w,
+      viewport[1] + h,
+      GL_DEPTH_BUFFER_BIT,
+      GL_NEAREST);
+    ostate->PopReadFramebufferBinding();
   }
 }
 

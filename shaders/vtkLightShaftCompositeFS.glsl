@@ -5,7 +5,8 @@
 // from two renders of the scene, with and without the spotlight), LIGHTSHAFT_MULTISAMPLE (the
 // scene was rendered multisampled: the composite runs once per sample, reading and writing that
 // sample's colour and depth, so the target keeps its antialiasing and resolves as it would
-// have without the pass).
+// have without the pass), LIGHTSHAFT_WRITE_DEPTH (the scene's depth is written here, when the
+// target's depth format differs from the scene's; else it is copied after the composite).
 //VTK::LightShaft::Features
 #ifdef LIGHTSHAFT_MULTISAMPLE
 #extension GL_ARB_sample_shading : require
@@ -97,5 +98,7 @@ void main()
   vec3 added = exposure * inScattered;
   float coverage = clamp(max(added.r, max(added.g, added.b)), 0.0, 1.0);
   gl_FragData[0] = vec4(color.rgb + added, color.a + (1.0 - color.a) * coverage);
+#ifdef LIGHTSHAFT_WRITE_DEPTH
   gl_FragDepth = depth;
+#endif
 }
