@@ -1454,7 +1454,9 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   vtkRenderPass* delegate = this->DelegatePass;
   if (!delegate && this->ShadowSurfaces)
   {
-    impl.SurfaceShadows->GetShadowMapBakerPass()->SetResolution(this->ShadowMapSize);
+    // VTK's baker does not check the size against the GL's limit: the pass does.
+    impl.SurfaceShadows->GetShadowMapBakerPass()->SetResolution(
+      std::min(this->ShadowMapSize, vtkTextureObject::GetMaximumTextureSize(renWin)));
     delegate = impl.ShadowedDelegate;
   }
   else if (!delegate)

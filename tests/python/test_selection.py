@@ -3,7 +3,8 @@
 VTK's hardware selector renders ids, not colours: while it renders, the pass draws the plain
 scene as the renderer would without it (GetLastPlainScene), and the next frame has its shafts
 again. Compared with the same scene and camera with no pass: vtkHardwareSelector (cells,
-points; the whole window, boxes and single pixels), vtkPropPicker, vtkCellPicker (software),
+points; the whole window, boxes and single pixels), vtkPropPicker (with and without a pick
+list), vtkCellPicker (software),
 vtkRenderer.PickProp, and vtkRenderer.GetZ after a frame.
 """
 
@@ -98,6 +99,33 @@ def test_prop_picker_is_unchanged():
         return found
     plain, shafted = both(pick)
     assert plain[0][1] == 0  # the sphere at the centre
+    assert shafted == plain
+
+
+def display_point(renderer, world):
+    renderer.SetWorldPoint(*world, 1.0)
+    renderer.WorldToDisplay()
+    x, y, _ = renderer.GetDisplayPoint()
+    return int(round(x)), int(round(y))
+
+
+def test_prop_picker_honours_its_pick_list():
+    # A pixel on the sphere's lower part, with the floor behind it: with the floor alone in the
+    # pick list the picker finds the floor through the sphere.
+    def pick(renderer, window, info, shafts):
+        x, y = display_point(renderer, (0.0, 0.9, 0.5))
+        found = []
+        for listed in (None, 0, 1):
+            picker = vtkPropPicker()
+            if listed is not None:
+                picker.PickFromListOn()
+                picker.AddPickList(info.actors[listed])
+            picker.Pick(x, y, 0, renderer)
+            prop = picker.GetViewProp()
+            found.append(info.actors.index(prop) if prop else None)
+        return found
+    plain, shafted = both(pick)
+    assert plain == [0, 0, 1]
     assert shafted == plain
 
 
