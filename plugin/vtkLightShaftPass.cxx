@@ -6,6 +6,7 @@
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMatrix3x3.h"
@@ -18,6 +19,7 @@
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
@@ -1304,11 +1306,27 @@ bool IsSpotLight(vtkLight* light)
 }
 
 // Renders that need the scene exactly as without the pass: a hardware selector's (VTK's
-// picking and selection draw ids, not colours), and those of passes that render a subset of
-// the props by their information keys (shadow-map bakers, value passes).
+// picking and selection draw ids, not colours); those of an enclosing pass that renders the
+// props itself, with its own shaders (a vtkOpenGLRenderPass such as a shadow-map baker or a
+// value pass marks the props while it renders) or by their information keys; and those into
+// a target that takes no colour (depth only).
 bool NeedsPlainScene(const vtkRenderState* s)
 {
-  return s->GetRenderer()->GetSelector() != nullptr || s->GetRequiredKeys() != nullptr;
+  if (s->GetRenderer()->GetSelector() != nullptr || s->GetRequiredKeys() != nullptr)
+  {
+    return true;
+  }
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkInformation* keys = s->GetPropArray()[i]->GetPropertyKeys();
+    if (keys && keys->Length(vtkOpenGLRenderPass::RenderPasses()) > 0)
+    {
+      return true;
+    }
+  }
+  GLint drawBuffer = GL_NONE;
+  glGetIntegerv(GL_DRAW_BUFFER0, &drawBuffer);
+  return drawBuffer == GL_NONE;
 }
 
 // The scene exactly as the renderer would draw it without `pass`. For a hardware selector

@@ -539,8 +539,9 @@ public:
   /// draws into (the window's MultiSamples), 0 when it is not multisampled.
   vtkGetMacro(LastMultiSamples, int);
   /// True when the last render drew only the plain scene, exactly as without the pass: the
-  /// renderer was rendering for a hardware selector (picking, selection) or for a pass that
-  /// renders props by their keys (the shafts come back on the next frame).
+  /// renderer was rendering for a hardware selector (picking, selection), for an enclosing
+  /// pass that renders the props with its own shaders (a shadow-map baker, a value pass) or by
+  /// their keys, or into a target without colour; the shafts come back on the next frame.
   vtkGetMacro(LastPlainScene, bool);
   vtkGetVector2Macro(LastSliceDepthRange, double);
   vtkGetVector2Macro(LastViewportSize, int);

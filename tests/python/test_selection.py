@@ -173,3 +173,45 @@ def test_selection_with_a_delegate_and_multisampling(multisamples):
         results.append(select(renderer, (0, 0, WIDTH - 1, HEIGHT - 1), FIELDS["cells"]))
         window.SetMultiSamples(0)
     assert results[0] and results[1] == results[0]
+
+
+def test_depth_only_passes_get_the_plain_scene():
+    # vtkShadowMapBakerPass renders its opaque sequence into a depth-only target from each
+    # light: the pass nested there draws only what its delegate draws (no shafts), so the
+    # surface shadows are the same as without it.
+    from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkLightsPass, vtkOpaquePass,
+                                                vtkRenderPassCollection, vtkRenderStepsPass,
+                                                vtkSequencePass, vtkShadowMapPass)
+
+    def sequence(*passes):
+        collection = vtkRenderPassCollection()
+        for p in passes:
+            collection.AddItem(p)
+        result = vtkSequencePass()
+        result.SetPasses(collection)
+        return result
+
+    pictures = []
+    for nest in (False, True):
+        renderer, window = rh.make_window(WIDTH, HEIGHT)
+        scenes.sphere_and_floor(renderer, sphere_resolution=24)
+        shadows = vtkShadowMapPass()
+        baker = shadows.GetShadowMapBakerPass()
+        occluders = sequence(vtkLightsPass(), vtkOpaquePass())
+        nested = vtkLightShaftPass()
+        if nest:
+            nested.SetDelegatePass(occluders)
+            occluders = nested
+        camera = vtkCameraPass()
+        camera.SetDelegatePass(occluders)
+        baker.SetOpaqueSequence(camera)
+        steps = vtkRenderStepsPass()
+        steps.SetOpaquePass(sequence(baker, shadows))
+        renderer.SetPass(steps)
+        window.Render()
+        assert baker.GetHasShadows()
+        pictures.append(rh.screenshot(window))
+        if nest:
+            assert nested.GetLastPlainScene()
+            assert nested.GetLastMethod() == -1 and nested.GetLastNumberOfSlicesDrawn() == 0
+    np.testing.assert_array_equal(pictures[1], pictures[0])
