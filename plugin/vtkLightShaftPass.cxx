@@ -908,6 +908,7 @@ public:
     bool cookie,
     bool noise);
   bool ReadyCookie(vtkLightShaftPass& self);
+  vtkLight* ChooseLight(vtkLightShaftPass& self, vtkRenderer* ren);
   int LatticeWithinBudget(vtkLightShaftPass& self, int slabs);
   bool ReadyNoise(vtkLightShaftPass& self);
   // Two passes of the blur shader (x, then y): a Gaussian of `radius`, or with boxWidth > 0
@@ -1497,43 +1498,7 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   this->LastViewportSize[0] = std::max(w, 0);
   this->LastViewportSize[1] = std::max(h, 0);
 
-  // Find the light (warn once when there is none).
-  vtkLight* light = impl.Light;
-  if (light && !IsSpotLight(light))
-  {
-    if (!impl.WarnedNoLight)
-    {
-      vtkWarningMacro("The light given to SetLight is not a spotlight (positional, cone angle "
-                      "< 90 degrees): rendering the scene without shafts.");
-      impl.WarnedNoLight = true;
-    }
-    light = nullptr;
-  }
-  else if (!light)
-  {
-    vtkLightCollection* lights = ren->GetLights();
-    vtkCollectionSimpleIterator it;
-    lights->InitTraversal(it);
-    while (vtkLight* candidate = lights->GetNextLight(it))
-    {
-      if (candidate->GetSwitch() && IsSpotLight(candidate))
-      {
-        light = candidate;
-        break;
-      }
-    }
-    if (!light && !impl.WarnedNoLight)
-    {
-      vtkWarningMacro("No spotlight in the renderer (a switched-on positional light with cone "
-                      "angle < 90 degrees): rendering the scene without shafts.");
-      impl.WarnedNoLight = true;
-    }
-  }
-  if (light)
-  {
-    impl.WarnedNoLight = false;
-  }
-  impl.LastUsedLight = light;
+  vtkLight* light = impl.ChooseLight(*this, ren);
 
   const bool hasMedium =
     AnyPositive(this->ScatteringCoefficient) || AnyPositive(this->AbsorptionCoefficient);
@@ -1626,6 +1591,52 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
     overlay->Render(s);
     this->NumberOfRenderedProps += overlay->GetNumberOfRenderedProps();
   }
+}
+
+//------------------------------------------------------------------------------
+// The scattering light: the one set, or the renderer's first switched-on spotlight; nullptr
+// (one warning until a light is found again) when there is none.
+vtkLight* vtkLightShaftPass::Internals::ChooseLight(vtkLightShaftPass& self, vtkRenderer* ren)
+{
+  vtkLight* light = this->Light;
+  if (light && !IsSpotLight(light))
+  {
+    if (!this->WarnedNoLight)
+    {
+      vtkWarningWithObjectMacro(&self,
+        "The light given to SetLight is not a spotlight (positional, cone angle "
+        "< 90 degrees): rendering the scene without shafts.");
+      this->WarnedNoLight = true;
+    }
+    light = nullptr;
+  }
+  else if (!light)
+  {
+    vtkLightCollection* lights = ren->GetLights();
+    vtkCollectionSimpleIterator it;
+    lights->InitTraversal(it);
+    while (vtkLight* candidate = lights->GetNextLight(it))
+    {
+      if (candidate->GetSwitch() && IsSpotLight(candidate))
+      {
+        light = candidate;
+        break;
+      }
+    }
+    if (!light && !this->WarnedNoLight)
+    {
+      vtkWarningWithObjectMacro(&self,
+        "No spotlight in the renderer (a switched-on positional light with cone "
+        "angle < 90 degrees): rendering the scene without shafts.");
+      this->WarnedNoLight = true;
+    }
+  }
+  if (light)
+  {
+    this->WarnedNoLight = false;
+  }
+  this->LastUsedLight = light;
+  return light;
 }
 
 //------------------------------------------------------------------------------

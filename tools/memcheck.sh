@@ -4,6 +4,6 @@
 # loader reads are not ours.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-xvfb-run -a valgrind --leak-check=full --show-leak-kinds=definite \
+xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" valgrind --leak-check=full --show-leak-kinds=definite \
   build/bin/TestLightShaftPass tests/baselines/TestLightShaftPass.png 2>&1 |
   tee build/memcheck.log | grep -E "definitely lost|ERROR SUMMARY|mean absolute"

@@ -70,6 +70,6 @@ cmake -S examples/cpp -B build/example -DCMAKE_BUILD_TYPE=Release >> build.log
 cmake --build build/example -j "$jobs" >> build.log
 
 echo "== rendering the example scene offscreen"
-xvfb-run -a -s "-screen 0 1280x1024x24" /usr/bin/python3 examples/window_shafts.py -o window_shafts.png
-xvfb-run -a -s "-screen 0 1280x1024x24" build/example/window_shafts window_shafts_cpp.png
+xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" /usr/bin/python3 examples/window_shafts.py -o window_shafts.png
+xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" build/example/window_shafts window_shafts_cpp.png
 echo "== done: window_shafts.png (Python) and window_shafts_cpp.png (C++)"

@@ -19,6 +19,15 @@ for f in serial np2; do
   if [ ! -f "$out/$f.npz" ]; then
     cat "$out/$f.log"
     echo "FAIL: no $f results"
+    if grep -q "bad X server connection" "$out/$f.log"; then
+      echo "(XOpenDisplay failed. Is the X server up? An Xvfb without -noreset drops a client" \
+        "that connects as the server resets after its last client left: README, Known issues.)"
+    fi
+    exit 1
+  fi
+  # Any error or warning VTK printed in a rank fails the test (as for the other tests).
+  if grep -E "ERROR: In |Warning: In |Generic Warning|ERR\||WARN\|" "$out/$f.log"; then
+    echo "FAIL: VTK printed errors or warnings in the $f run"
     exit 1
   fi
 done

@@ -15,9 +15,10 @@ _shared_window = None
 def make_window(width=320, height=240):
     """A fresh renderer in the session's one offscreen window.
 
-    One window serves every test: Mesa 22's llvmpipe under Xvfb intermittently fails to open a
-    new X display right after a window that rendered heavy shaders is destroyed (see README,
-    Known issues), so the tests do not create and destroy windows one after another.
+    One window serves every test, so the tests do not close and reopen X connections one after
+    another: an Xvfb started without -noreset (xvfb-run's default) resets when its last client
+    disconnects and drops a client that connected just before, and VTK then aborts with
+    `bad X server connection` (see README, Known issues).
     """
     global _shared_window
     if _shared_window is None:
