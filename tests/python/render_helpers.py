@@ -61,12 +61,32 @@ def in_scatter(shaft_pass):
     return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, 3).astype(np.float64)
 
 
-def screenshot(window):
-    """The window's RGB pixels as (height, width, 3) uint8, row 0 at the bottom."""
+def add_sphere(renderer, centre, radius, color, resolution=32):
+    """Add a sphere actor to `renderer` and return it."""
+    from vtkmodules.vtkFiltersSources import vtkSphereSource
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
+    sphere = vtkSphereSource()
+    sphere.SetCenter(*centre)
+    sphere.SetRadius(radius)
+    sphere.SetThetaResolution(resolution)
+    sphere.SetPhiResolution(resolution)
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(sphere.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(*color)
+    renderer.AddActor(actor)
+    return actor
+
+
+def screenshot(window, front=False):
+    """The window's RGB pixels as (height, width, 3) uint8, row 0 at the bottom: the back buffer
+    (as rendered), or with front=True the front buffer (as displayed, without re-rendering)."""
     grab = vtkWindowToImageFilter()
     grab.SetInput(window)
     grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOff()
+    grab.SetReadFrontBuffer(front)
+    grab.SetShouldRerender(not front)
     grab.Update()
     image = grab.GetOutput()
     w, h, _ = image.GetDimensions()

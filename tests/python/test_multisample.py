@@ -13,26 +13,11 @@ import numpy as np
 import pytest
 
 from lightshafts import scenes, vtkLightShaftPass
-from vtkmodules.vtkFiltersSources import vtkSphereSource
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkWindowToImageFilter
-from vtkmodules.util.numpy_support import vtk_to_numpy
 
 import render_helpers as rh
 
 WIDTH, HEIGHT = 200, 150
 SAMPLES = [0, 2, 4, 8]
-
-
-def front_buffer(window):
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOn()
-    grab.ShouldRerenderOff()
-    grab.Update()
-    image = grab.GetOutput()
-    w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, 3).copy()
 
 
 def render(multisamples, configure=None):
@@ -44,17 +29,7 @@ def render(multisamples, configure=None):
     # A bright fill and background, so that silhouettes show the antialiasing.
     scenes.add_fill_light(renderer, intensity=0.8)
     renderer.SetBackground(0.25, 0.35, 0.5)
-    side = vtkSphereSource()
-    side.SetCenter(-4.5, 2.5, 2.0)
-    side.SetRadius(0.9)
-    side.SetThetaResolution(48)
-    side.SetPhiResolution(48)
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(side.GetOutputPort())
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.GetProperty().SetColor(0.3, 0.7, 0.9)
-    renderer.AddActor(actor)
+    rh.add_sphere(renderer, (-4.5, 2.5, 2.0), 0.9, (0.3, 0.7, 0.9), resolution=48)
     renderer.GetActiveCamera().SetPosition(0.0, 3.0, 14.0)
     renderer.ResetCameraClippingRange()
     shafts = None
@@ -64,7 +39,7 @@ def render(multisamples, configure=None):
         renderer.SetPass(shafts)
     window.Render()
     back = rh.screenshot(window)
-    front = front_buffer(window)
+    front = rh.screenshot(window, front=True)
     if shafts:
         assert shafts.GetLastGLErrorCount() == 0
     window.SetMultiSamples(0)

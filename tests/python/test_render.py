@@ -7,12 +7,10 @@ from lightshafts import scenes, vtkLightShaftPass
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkRenderingCore import (
-    vtkActor, vtkColorTransferFunction, vtkRenderer, vtkTextActor, vtkVolume, vtkVolumeProperty)
+    vtkColorTransferFunction, vtkRenderer, vtkTextActor, vtkVolume, vtkVolumeProperty)
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
 from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLGPUVolumeRayCastMapper
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
-from vtkmodules.vtkFiltersSources import vtkSphereSource
-from vtkmodules.vtkRenderingCore import vtkPolyDataMapper
 import vtkmodules.vtkRenderingFreeType  # noqa: F401
 
 import lightshaft_reference as ref
@@ -254,16 +252,8 @@ def test_translucent_and_volume_props_still_render():
         renderer, window = rh.make_window(200, 150)
         scenes.sphere_and_floor(renderer, sphere_resolution=32)
         renderer.SetUseDepthPeeling(True)
-        glass = vtkSphereSource()
-        glass.SetCenter(-1.5, 1.0, 2.0)
-        glass.SetRadius(0.6)
-        mapper = vtkPolyDataMapper()
-        mapper.SetInputConnection(glass.GetOutputPort())
-        actor = vtkActor()
-        actor.SetMapper(mapper)
-        actor.GetProperty().SetColor(0.2, 0.4, 1.0)
+        actor = rh.add_sphere(renderer, (-1.5, 1.0, 2.0), 0.6, (0.2, 0.4, 1.0), resolution=8)
         actor.GetProperty().SetOpacity(0.4)
-        renderer.AddActor(actor)
         source = vtkRTAnalyticSource()
         source.SetWholeExtent(-8, 8, -8, 8, -8, 8)
         volume_mapper = vtkOpenGLGPUVolumeRayCastMapper()

@@ -106,13 +106,18 @@ def test_any_transition_is_clean_and_forgets_the_previous_state(setup, fresh_ima
     np.testing.assert_array_equal(image, expected)
 
 
-def test_cookie_replaced_by_an_empty_texture_or_removed(setup, messages):
+def without_cookie(setup, messages):
+    """(window, pass, its message log, the in-scatter without a cookie) in the default state."""
     renderer, window, shafts = setup
     apply(setup, STATES[0])
     log = messages(shafts)
     window.Render()
-    no_cookie = rh.in_scatter(shafts)
     assert "cookie" not in shafts.GetLastShaderVariant()
+    return window, shafts, log, rh.in_scatter(shafts)
+
+
+def test_cookie_replaced_by_an_empty_texture_or_removed(setup, messages):
+    window, shafts, log, no_cookie = without_cookie(setup, messages)
 
     shafts.SetCookie(COOKIE)
     window.Render()
@@ -141,11 +146,7 @@ def test_cookie_replaced_by_an_empty_texture_or_removed(setup, messages):
 
 
 def test_cookie_image_arriving_later_is_used(setup, messages):
-    renderer, window, shafts = setup
-    apply(setup, STATES[0])
-    log = messages(shafts)
-    window.Render()
-    no_cookie = rh.in_scatter(shafts)
+    window, shafts, log, no_cookie = without_cookie(setup, messages)
     texture = vtkTexture()
     shafts.SetCookie(texture)
     window.Render()
