@@ -1,6 +1,7 @@
 # The GLSL sources vtkLightShaftPass embeds (vtk_encode_string), shared by the VTK module
 # (plugin/CMakeLists.txt) and the ParaView plugin's module (paraview/plugin/module).
 set(lightshafts_pass_shaders
+  vtkLightShaftAnalyticFS
   vtkLightShaftBlurFS
   vtkLightShaftCommon
   vtkLightShaftCompositeFS
@@ -9,9 +10,11 @@ set(lightshafts_pass_shaders
   vtkLightShaftIntegrand
   vtkLightShaftOcclusionFS
   vtkLightShaftRadialBlurFS
+  vtkLightShaftRayMarchFS
   vtkLightShaftResolveFS
+  vtkLightShaftSegment
+  vtkLightShaftSlabVS
   vtkLightShaftSliceFS
-  vtkLightShaftSliceVS
   vtkLightShaftUpsampleFS)
 set(lightshafts_shader_dir "${CMAKE_CURRENT_LIST_DIR}")
 

@@ -1,23 +1,11 @@
 //VTK::System::Dec
 //VTK::Output::Dec
 
-// Features compiled in (#defines): LIGHTSHAFT_PHASE_HG / _RAYLEIGH (else isotropic),
-// LIGHTSHAFT_SHADOW, LIGHTSHAFT_COOKIE, LIGHTSHAFT_NOISE, LIGHTSHAFT_JITTER,
-// LIGHTSHAFT_ACCUMULATE_8BIT, and the method: slabs (none), LIGHTSHAFT_RAY_MARCH (one slab
-// spanning the lit depth range, marched in NumberOfSteps segments per pixel) or
-// LIGHTSHAFT_ANALYTIC (one slab, no shadow: the whole lit interval integrated in pieces fine
-// enough for float precision). Code for a feature that is off is not compiled.
+// SLICES: one fragment of slab slabIndex integrates the pixel's view ray over the slab (its
+// view-depth interval), cut at the cone and the scene surface. Features (#defines):
+// LIGHTSHAFT_PHASE_HG / _RAYLEIGH (else isotropic), LIGHTSHAFT_SHADOW, LIGHTSHAFT_COOKIE,
+// LIGHTSHAFT_NOISE, LIGHTSHAFT_LATTICE, LIGHTSHAFT_JITTER, LIGHTSHAFT_ACCUMULATE_8BIT.
 //VTK::LightShaft::Features
-#if defined(LIGHTSHAFT_SHADOW) || defined(LIGHTSHAFT_COOKIE) || defined(LIGHTSHAFT_NOISE)
-#define LIGHTSHAFT_LIGHT_SPACE
-#endif
-
-// One segment of the pixel's view ray: integrates the in-scattered radiance
-//   sigma_s p(cos theta) I S(x) A(r) V(x) exp(-sigma_t (r + t)) dt
-// over the part of the slab that lies inside the spot cone and in front of the scene surface.
-// A(r) = 1 / (c0 + c1 r + c2 r^2) is integrated in closed form (c1 = 0) or by Gauss-Legendre
-// in the equiangular variable; the remaining factors are evaluated at the segment's
-// equiangular midpoint (the arithmetic midpoint when A is constant).
 
 flat in float slabIndex;
 
@@ -28,175 +16,16 @@ uniform float slabEnd;
 uniform float slabThickness;
 uniform float lastSlab;
 
-//VTK::LightShaft::Common
-//VTK::LightShaft::Integrand
-
-#ifdef LIGHTSHAFT_LATTICE
-// The smooth factors' mean over this slab, evaluated at the lattice's vertices (Chen, Li and
-// Wang) and interpolated; shadow, cookie and noise stay per pixel.
-in vec3 latticeSmooth;
-#endif
-
-#ifdef LIGHTSHAFT_LIGHT_SPACE
-uniform mat4 lightClipFromVC;   // VC -> the light camera's clip coordinates
-uniform vec2 pixelFootprint;    // a pixel's width at view depth z: x * z + y (view units)
-uniform float lightTexelAngle;  // 2 tan(cone half-angle): the light square's width at r = 1
-#endif
-
-#ifdef LIGHTSHAFT_SHADOW
-uniform sampler2D shadowMap;
-uniform vec2 lightDepthRange;   // near, far of the light camera
-uniform float shadowBias;       // relative depth tolerance
-#endif
-
-#ifdef LIGHTSHAFT_COOKIE
-uniform sampler2D cookieTexture;
-uniform float cookieSize;       // texels across the light's square
-#endif
-
-#ifdef LIGHTSHAFT_NOISE
-uniform sampler2D noiseTexture;
-uniform float noiseSize;        // texels across one tile
-uniform float noiseAmplitude;
-uniform float noiseScale;       // tiles across the light's square (layer 1; layer 2 is 1.37x)
-uniform vec4 noiseShift;        // both layers' scroll offsets at the current time, in tiles
-#endif
-
-#ifdef LIGHTSHAFT_RAY_MARCH
-uniform int numberOfSteps;
-uniform int interleaveSize;     // M: the pixels of an M x M block march with M^2 offsets
-#endif
-
-#ifdef LIGHTSHAFT_ANALYTIC
-uniform int analyticPieces;     // pieces of the lit interval (1 when the closed form is exact)
-uniform float maximumSigmaT;    // largest extinction coefficient (more pieces in thick media)
-#endif
-
 #ifdef LIGHTSHAFT_ACCUMULATE_8BIT
 uniform float accumulationScale; // Exposure: the talk's buffers hold displayed values
 #endif
 
-// integral of dt / (c0 + c1 r + c2 r^2) for x = t + b in [x0, x1], r^2 = h2 + x^2.
-float lightShaftAttenuationIntegral(float x0, float x1, float h2)
-{
-  float c0 = attenuationCoefficients.x;
-  float c1 = attenuationCoefficients.y;
-  float c2 = attenuationCoefficients.z;
-  if (c1 == 0.0)
-  {
-    if (c2 == 0.0)
-    {
-      return (x1 - x0) / c0;
-    }
-    // (atan(s x1) - atan(s x0)) / sqrt(c2 k) with s = sqrt(c2 / k), k = c0 + c2 h^2, written
-    // with atan2 so that it stays accurate as k -> 0 (ray through the light).
-    float k = c0 + c2 * h2;
-    float q = sqrt(c2 * k);
-    float num = q * (x1 - x0);
-    float den = k + c2 * x0 * x1;
-    return (q > 1e-30) ? atan(num, den) / q : (x1 - x0) / den;
-  }
-  // General case: 4-point Gauss-Legendre in the equiangular variable phi, x = h tan(phi),
-  // where dt = r^2 / h dphi keeps the integrand bounded near the light.
-  float h = max(sqrt(h2), 1e-6 * max(abs(x0), abs(x1)) + 1e-30);
-  float phi0 = atan(x0, h);
-  float phi1 = atan(x1, h);
-  float half_ = 0.5 * (phi1 - phi0);
-  float mid = 0.5 * (phi1 + phi0);
-  const vec4 nodes = vec4(-0.8611363116, -0.3399810436, 0.3399810436, 0.8611363116);
-  const vec4 weights = vec4(0.3478548451, 0.6521451549, 0.6521451549, 0.3478548451);
-  float sum = 0.0;
-  for (int i = 0; i < 4; ++i)
-  {
-    float phi = mid + half_ * nodes[i];
-    float r = h / cos(phi);
-    sum += weights[i] * (r * r / h) / (c0 + c1 * r + c2 * r * r);
-  }
-  return sum * half_;
-}
-
-// The in-scattered radiance over the piece x in [x0, x1] of the ray originVC + t dirVC, where
-// x = t + b is measured from the foot of the perpendicular from the light (squared length h2)
-// and the piece lies inside the cone and in front of the surface. Shadow, cookie and noise are
-// looked up once, at the piece's (equiangular) midpoint.
-vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, float x1)
-{
-  // Product rule: the exact integral of A(r) over the segment times the A-weighted mean of the
-  // smooth factors (phase, spot, extinction; lightShaftSmoothMean).
-  float weight = lightShaftAttenuationIntegral(x0, x1, h2);
-  bool constantA = attenuationCoefficients.y == 0.0 && attenuationCoefficients.z == 0.0;
-  float h = max(sqrt(h2), 1e-6 * max(abs(x0), abs(x1)) + 1e-30);
-  float u0 = constantA ? x0 : atan(x0, h);
-  float u1 = constantA ? x1 : atan(x1, h);
-  vec3 sampleVC;
-  float sampleR;
-  float sampleSinTheta;
-#ifdef LIGHTSHAFT_LATTICE
-  vec3 smoothMean = latticeSmooth;
-  lightShaftNode(originVC, dirVC, b, h, constantA, 0.5 * (u0 + u1), sampleVC, sampleR,
-    sampleSinTheta);
-#else
-  vec3 smoothMean = lightShaftSmoothMean(originVC, dirVC, b, h, constantA, u0, u1, sampleVC,
-    sampleR, sampleSinTheta);
-#endif
-
-  // Per-segment light-space factors, once, at the (equiangular) midpoint.
-  float visibility = 1.0;
-  vec3 modulation = vec3(1.0);
-#ifdef LIGHTSHAFT_LIGHT_SPACE
-  vec4 lightClip = lightClipFromVC * vec4(sampleVC, 1.0);
-  vec2 lightNDC = lightClip.xy / max(lightClip.w, 1e-30);
-  vec2 lightUV = 0.5 * lightNDC + 0.5;
-  // The sample stands for a pixel-wide, segment-long footprint: its size in light-square widths
-  // picks the mip level, so cookie and noise are pre-filtered instead of aliasing.
-  float footprint = max(pixelFootprint.x * (-sampleVC.z) + pixelFootprint.y,
-    (x1 - x0) * sampleSinTheta);
-  float footprintInSquares = footprint / max(sampleR * lightTexelAngle, 1e-30);
-#endif
-#ifdef LIGHTSHAFT_SHADOW
-  if (lightClip.w > 0.0 && all(lessThanEqual(abs(lightNDC), vec2(1.0))))
-  {
-    float stored = texture(shadowMap, lightUV).r;
-    if (stored < 1.0)
-    {
-      float n = lightDepthRange.x;
-      float f = lightDepthRange.y;
-      float casterDepth = 2.0 * n * f / ((f + n) - (2.0 * stored - 1.0) * (f - n));
-      visibility = (lightClip.w > casterDepth * (1.0 + shadowBias)) ? 0.0 : 1.0;
-    }
-  }
-#endif
-#ifdef LIGHTSHAFT_COOKIE
-  modulation *= max(textureLod(cookieTexture, lightUV,
-    max(log2(footprintInSquares * cookieSize), 0.0)).rgb, vec3(0.0));
-#endif
-#ifdef LIGHTSHAFT_NOISE
-  float noiseLod = max(log2(footprintInSquares * noiseScale * noiseSize), 0.0);
-  float n1 = textureLod(noiseTexture, lightUV * noiseScale + noiseShift.xy, noiseLod).r;
-  float n2 = textureLod(noiseTexture, lightUV * (1.37 * noiseScale) + noiseShift.zw,
-    noiseLod + 0.45).r;
-  modulation *= 1.0 + noiseAmplitude * (n1 * n2 - 1.0);
-#endif
-
-  return sigmaS * lightRadiantIntensity * modulation * (weight * visibility) * smoothMean;
-}
-
-// Where the pieces of [x0, x1] start and end: uniform in x (constant A) or in the equiangular
-// angle (falling A: the pieces shorten towards the light, where the integrand changes fastest).
-float lightShaftPieceBoundary(float u0, float u1, float fraction, float h, bool constantA)
-{
-  float u = mix(u0, u1, clamp(fraction, 0.0, 1.0));
-  return constantA ? u : h * tan(u);
-}
+//VTK::LightShaft::Common
+//VTK::LightShaft::Integrand
+//VTK::LightShaft::Segment
 
 void main()
 {
-  vec3 originVC;
-  vec3 dirVC;
-  vec2 ndc;
-  lightShaftViewRay(gl_FragCoord.xy, originVC, dirVC, ndc);
-
-  // The slab [near, far] in view depth, as ray parameters; cut at the scene surface.
   float slabOffset = 0.0;
 #ifdef LIGHTSHAFT_JITTER
   // 4x4 ordered (Bayer) offsets: neighbouring pixels sample between each other's boundaries.
@@ -210,83 +39,17 @@ void main()
     clamp(slabStart + (slabIndex + slabOffset) * slabThickness, slabStart, slabEnd);
   float farDepth = (slabIndex == lastSlab) ? slabEnd :
     clamp(slabStart + (slabIndex + 1.0 + slabOffset) * slabThickness, slabStart, slabEnd);
-  float tPerDepth = -1.0 / dirVC.z;
-  float ta = nearDepth * tPerDepth;
-  float tb = farDepth * tPerDepth;
-  float depth = texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r;
-  tb = min(tb, lightShaftSurfaceDistance(ndc, depth, dirVC));
-
-  // Work relative to the foot of the perpendicular from the light to the ray, x = t + b:
-  // the cone quadratic then has coefficients of the size of h, not of the eye-light distance,
-  // which keeps rays passing next to the apex accurate in float.
-  vec3 m = originVC - lightPositionVC;
-  float b = dot(m, dirVC);
-  vec3 foot = m - b * dirVC;
-  float h2 = dot(foot, foot);
-  float coneIn;
-  float coneOut;
-  if (!lightShaftConeInterval(foot, dirVC, coneIn, coneOut))
+  vec3 originVC;
+  vec3 dirVC;
+  float b;
+  float h2;
+  float x0;
+  float x1;
+  if (!lightShaftLitInterval(nearDepth, farDepth, originVC, dirVC, b, h2, x0, x1))
   {
     discard;
   }
-  float x0 = max(ta + b, coneIn);
-  float x1 = min(tb + b, coneOut);
-  if (x1 <= x0)
-  {
-    discard;
-  }
-
-#if defined(LIGHTSHAFT_RAY_MARCH) || defined(LIGHTSHAFT_ANALYTIC)
-  bool constantA = attenuationCoefficients.y == 0.0 && attenuationCoefficients.z == 0.0;
-  float h = max(sqrt(h2), 1e-6 * max(abs(x0), abs(x1)) + 1e-30);
-  float u0 = constantA ? x0 : atan(x0, h);
-  float u1 = constantA ? x1 : atan(x1, h);
-  vec3 radiance = vec3(0.0);
-#endif
-#if defined(LIGHTSHAFT_RAY_MARCH)
-  // Interleaved sampling: the M^2 pixels of a block shift the step boundaries by different
-  // fractions o of a step, so the block together takes M^2 N samples; the gather passes that
-  // follow average the block back. Step j spans [j - 1 + o, j + o] steps, clamped.
-  float offset = 1.0;
-  if (interleaveSize > 1)
-  {
-    ivec2 cellM = ivec2(gl_FragCoord.xy) % interleaveSize;
-    int cellIndex = cellM.y * interleaveSize + cellM.x;
-    // Scatter neighbouring indices across the step: multiplying by cells / 2 + 1 (coprime
-    // with cells for every M) permutes 0 .. M^2 - 1.
-    int cells = interleaveSize * interleaveSize;
-    int scrambled = (cellIndex * (cells / 2 + 1)) % cells;
-    offset = (float(scrambled) + 0.5) / float(cells);
-  }
-  float steps = float(numberOfSteps);
-  float xa = x0;
-  for (int j = 0; j <= numberOfSteps; ++j)
-  {
-    float xb = lightShaftPieceBoundary(u0, u1, (float(j) + offset) / steps, h, constantA);
-    xb = (j == numberOfSteps) ? x1 : min(xb, x1);
-    if (xb > xa)
-    {
-      radiance += lightShaftSegment(originVC, dirVC, b, h2, xa, xb);
-    }
-    xa = max(xa, xb);
-  }
-#elif defined(LIGHTSHAFT_ANALYTIC)
-  // Nothing occludes: the integrand is smooth over the whole lit interval. The closed form of
-  // A(r) is exact on its own when the other factors are constant (analyticPieces = 1); else
-  // 3-point Gauss-Legendre per piece, with enough pieces that the extinction across a piece
-  // stays below ~0.5 (float precision for the smooth factors).
-  int pieces = clamp(max(analyticPieces, int(ceil(2.0 * maximumSigmaT * (x1 - x0)))), 1, 64);
-  float xa = x0;
-  for (int j = 1; j <= pieces; ++j)
-  {
-    float xb = (j == pieces) ? x1 :
-      lightShaftPieceBoundary(u0, u1, float(j) / float(pieces), h, constantA);
-    radiance += lightShaftSegment(originVC, dirVC, b, h2, xa, xb);
-    xa = xb;
-  }
-#else
   vec3 radiance = lightShaftSegment(originVC, dirVC, b, h2, x0, x1);
-#endif
 
 #ifdef LIGHTSHAFT_ACCUMULATE_8BIT
   // The talk's trick: slab k adds into channel k mod 4 (one RGBA8 buffer per colour).
@@ -296,11 +59,6 @@ void main()
   gl_FragData[0] = displayed.r * mask;
   gl_FragData[1] = displayed.g * mask;
   gl_FragData[2] = displayed.b * mask;
-#elif defined(LIGHTSHAFT_ANALYTIC)
-  // Alpha: the light distance at the lit interval's (equiangular) middle, which the radial
-  // blur compares its occluders with.
-  float xMiddle = lightShaftPieceBoundary(u0, u1, 0.5, h, constantA);
-  gl_FragData[0] = vec4(radiance, sqrt(h2 + xMiddle * xMiddle));
 #else
   gl_FragData[0] = vec4(radiance, 0.0);
 #endif

@@ -1,0 +1,27 @@
+# The pass's private components (not installed, not wrapped), compiled into the VTK module
+# (plugin/CMakeLists.txt) and into the ParaView plugin's module (paraview/plugin/module).
+set(lightshafts_private_classes
+  vtkLightShaftAnalyticMethod
+  vtkLightShaftComposite
+  vtkLightShaftGeometry
+  vtkLightShaftInScatterTarget
+  vtkLightShaftLightTextures
+  vtkLightShaftMethod
+  vtkLightShaftModel
+  vtkLightShaftNoise
+  vtkLightShaftPostProcess
+  vtkLightShaftRadialBlurMethod
+  vtkLightShaftRayMarchMethod
+  vtkLightShaftResources
+  vtkLightShaftSceneRenderer
+  vtkLightShaftSeparableFilter
+  vtkLightShaftShaders
+  vtkLightShaftShadowMap
+  vtkLightShaftSlabDrawer
+  vtkLightShaftSlicesMethod)
+set(lightshafts_private_sources)
+set(lightshafts_private_headers "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftFrame.h")
+foreach (class IN LISTS lightshafts_private_classes)
+  list(APPEND lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/${class}.cxx")
+  list(APPEND lightshafts_private_headers "${CMAKE_CURRENT_LIST_DIR}/${class}.h")
+endforeach ()

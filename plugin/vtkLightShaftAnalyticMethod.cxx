@@ -1,0 +1,66 @@
+#include "vtkLightShaftAnalyticMethod.h"
+
+#include "vtkLightShaftFrame.h"
+#include "vtkLightShaftInScatterTarget.h"
+#include "vtkLightShaftSlabDrawer.h"
+
+#include "vtkShaderProgram.h"
+
+#include "vtkLightShaftAnalyticFS.h"
+
+//------------------------------------------------------------------------------
+vtkLightShaftAnalyticMethod::vtkLightShaftAnalyticMethod(vtkLightShaftSlabDrawer& drawer)
+  : Drawer(drawer)
+{
+}
+
+vtkLightShaftAnalyticMethod::~vtkLightShaftAnalyticMethod() = default;
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftAnalyticMethod::Render(vtkLightShaftFrame& frame,
+  const vtkLightShaftGeometry::LitVolume& lit,
+  vtkLightShaftInScatterTarget& target)
+{
+  return this->RenderUnshadowed(frame, lit, target, this->GetName());
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftAnalyticMethod::RenderUnshadowed(vtkLightShaftFrame& frame,
+  const vtkLightShaftGeometry::LitVolume& lit,
+  vtkLightShaftInScatterTarget& target,
+  const char* methodName)
+{
+  this->Footprints = vtkLightShaftGeometry::ComputeSlabFootprints(lit, frame.Camera, 1, false);
+  if (this->Footprints.empty())
+  {
+    return nullptr;
+  }
+  vtkLightShaftShaders::Variant variant = vtkLightShaftShaders::IntegrandVariant(
+    methodName, "LIGHTSHAFT_ANALYTIC", frame.Medium.Phase, false, frame.Cookie, frame.Noise);
+  variant.Description += FloatAccumulation(frame.Parameters);
+  vtkShaderProgram* program = this->ReadySlabProgram(frame, vtkLightShaftAnalyticFS, variant);
+  if (!program)
+  {
+    return nullptr;
+  }
+  // Cookie and noise vary across the light's square: 16 pieces at least sample them.
+  program->SetUniformi("analyticPieces", (frame.Cookie || frame.Noise) ? 16 : 4);
+  program->SetUniformf("maximumSigmaT", static_cast<float>(frame.Medium.MaximumSigmaT()));
+
+  target.Bind();
+  vtkLightShaftSlabDrawer::Slabs slabs;
+  slabs.Footprints = &this->Footprints;
+  slabs.Start = lit.Nearest;
+  slabs.End = lit.Deepest;
+  slabs.Thickness = lit.Deepest - lit.Nearest;
+  slabs.Depth = target.GetDepth();
+  this->Drawer.Draw(frame, program, slabs);
+  frame.Statistics.SlicesDrawn = static_cast<int>(this->Footprints.size());
+  return target.GetAccumulation(0);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftAnalyticMethod::ReleaseGraphicsResources(vtkWindow*)
+{
+  this->SlabProgram.Release();
+}

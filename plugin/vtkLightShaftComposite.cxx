@@ -1,0 +1,149 @@
+#include "vtkLightShaftComposite.h"
+
+#include "vtkLightShaftFrame.h"
+#include "vtkLightShaftShaders.h"
+
+#include "vtkObject.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include "vtkLightShaftCompositeFS.h"
+
+#include <string>
+#include <vector>
+
+//------------------------------------------------------------------------------
+vtkLightShaftComposite::vtkLightShaftComposite() = default;
+vtkLightShaftComposite::~vtkLightShaftComposite() = default;
+
+//------------------------------------------------------------------------------
+void vtkLightShaftComposite::Render(vtkLightShaftFrame& frame, vtkTextureObject* inScatter)
+{
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  const vtkLightShaftSceneImage& scene = frame.Scene;
+  const int w = frame.Size[0];
+  const int h = frame.Size[1];
+  const bool attenuate = frame.Parameters.AttenuateScene && frame.Medium.Extinguishes();
+  const bool cookieSurfaces = frame.Cookie != nullptr;
+  const bool multisample = scene.Samples > 0;
+  // The scene's depth goes to the target unchanged, so that later passes, overlays and depth
+  // queries (vtkRenderer::GetZ) see the surfaces as without the pass: copied when the target's
+  // depth has the same format, else written by the shader.
+  const bool copyDepth = vtkLightShaftResources::TargetDepthMatches(scene.Depth);
+  std::vector<std::string> defines;
+  if (attenuate)
+  {
+    defines.emplace_back("LIGHTSHAFT_ATTENUATE");
+  }
+  if (cookieSurfaces)
+  {
+    defines.emplace_back("LIGHTSHAFT_COOKIE_SURFACES");
+  }
+  if (multisample)
+  {
+    defines.emplace_back("LIGHTSHAFT_MULTISAMPLE");
+  }
+  if (!copyDepth)
+  {
+    defines.emplace_back("LIGHTSHAFT_WRITE_DEPTH");
+  }
+  vtkShaderProgram* program = this->Pass.Ready(frame.Window, vtkLightShaftCompositeFS, defines);
+  if (!program)
+  {
+    vtkErrorWithObjectMacro(frame.Owner, "Could not build the light-shaft composite shader.");
+    return;
+  }
+
+  // Multisampled scene textures are read per sample (their uniforms have a "Samples" suffix).
+  const std::string suffix = multisample ? "Samples" : "";
+  std::vector<vtkTextureObject*> active = { scene.Color, scene.Depth, inScatter };
+  for (vtkTextureObject* t : active)
+  {
+    t->Activate();
+  }
+  program->SetUniformi(("sceneColor" + suffix).c_str(), scene.Color->GetTextureUnit());
+  program->SetUniformi(("sceneDepth" + suffix).c_str(), scene.Depth->GetTextureUnit());
+  program->SetUniformi("inScatter", inScatter->GetTextureUnit());
+  program->SetUniformf("exposure", static_cast<float>(frame.Parameters.Exposure));
+  if (attenuate || cookieSurfaces)
+  {
+    vtkLightShaftShaders::SetViewUniforms(program, frame.Camera, w, h);
+  }
+  if (attenuate)
+  {
+    program->SetUniform3f("sigmaT", frame.Medium.SigmaT);
+  }
+  if (cookieSurfaces)
+  {
+    scene.ColorUnlit->Activate();
+    active.push_back(scene.ColorUnlit);
+    active.push_back(frame.Cookie);
+    program->SetUniformi(("sceneColorUnlit" + suffix).c_str(), scene.ColorUnlit->GetTextureUnit());
+    vtkLightShaftShaders::SetCookieUniforms(program, frame.Cookie);
+    vtkLightShaftShaders::SetLightSpaceUniforms(program, frame, w);
+    program->SetUniform3f(
+      "lightPositionVC", vtkLightShaftGeometry::ToFloat3(frame.Light.PositionVC).data());
+  }
+
+  // Write colour (and depth), per sample when the scene is multisampled (the shader reads
+  // gl_SampleID).
+  if (multisample)
+  {
+    ostate->vtkglEnable(GL_MULTISAMPLE);
+  }
+  if (copyDepth)
+  {
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+  }
+  else
+  {
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_ALWAYS);
+    ostate->vtkglDepthMask(GL_TRUE);
+  }
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  if (frame.Renderer->Transparent())
+  {
+    // A layer over other renderers: the scene target is premultiplied (cleared to 0 alpha).
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  else
+  {
+    ostate->vtkglDisable(GL_BLEND);
+  }
+  this->Pass.Render();
+  for (auto it = active.rbegin(); it != active.rend(); ++it)
+  {
+    (*it)->Deactivate();
+  }
+  if (copyDepth)
+  {
+    ostate->PushReadFramebufferBinding();
+    scene.Framebuffer->Bind(GL_READ_FRAMEBUFFER);
+    ostate->vtkglDepthMask(GL_TRUE);
+    const int* origin = frame.Origin;
+    ostate->vtkglBlitFramebuffer(0,
+      0,
+      w,
+      h,
+      origin[0],
+      origin[1],
+      origin[0] + w,
+      origin[1] + h,
+      GL_DEPTH_BUFFER_BIT,
+      GL_NEAREST);
+    ostate->PopReadFramebufferBinding();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftComposite::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Pass.Release(window);
+}

@@ -1,0 +1,127 @@
+/**
+ * @file   vtkLightShaftFrame.h
+ * @brief  One frame of vtkLightShaftPass, as its components share it (private, not installed):
+ *         the parameters it runs with, the camera, light and medium, the scene's render, and
+ *         the statistics the frame reports.
+ *
+ * The pass fills a vtkLightShaftFrame when the frame starts (parameters snapshot, camera and
+ * viewport), the components read it and add what they produce (scene image, light frame), and
+ * write what they did into its Statistics, which the pass publishes in one place when the frame
+ * ends.
+ */
+
+#ifndef vtkLightShaftFrame_h
+#define vtkLightShaftFrame_h
+
+#include "vtkLightShaftGeometry.h" // For the camera and light frames
+#include "vtkLightShaftModel.h"    // For the medium
+
+#include <string> // For the shader variant
+
+class vtkLightShaftMethod;
+class vtkObject;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkRenderer;
+class vtkRenderState;
+class vtkTextureObject;
+
+/**
+ * The pass's parameters for one frame (the presets and setters already applied, clamped).
+ */
+struct vtkLightShaftParameters
+{
+  int Method = 0;
+  double Exposure = 1.0;
+  bool AttenuateScene = true;
+  int NumberOfSlices = 64;
+  bool AutomaticSliceCount = false;
+  int MaximumNumberOfSlices = 512;
+  bool Jitter = true;
+  int LatticeResolution = 0;
+  int ShadowMapSize = 1024;
+  int BlurRadius = 2;
+  int DownsampleFactor = 1;
+  int AccumulationPrecision = 0;
+  double NoiseAmplitude = 0.0;
+  double NoiseScale = 3.0;
+  double NoiseShift[4] = { 0.0, 0.0, 0.0, 0.0 }; ///< vtkLightShaftModel::NoiseShifts at Time
+  int NumberOfSteps = 16;
+  int InterleaveSize = 2;
+  int RadialSamples = 64;
+  double Decay = 1.0;
+  double Density = 1.0;
+  double Weight = 1.0;
+  bool RadialJitter = true;
+  double RadialGuardBand = 1.0;
+  const double* ShadowCasterBounds = nullptr; ///< set for distributed rendering, else nullptr
+};
+
+/**
+ * What a frame did; published as the pass's GetLast* read-outs when the frame ends.
+ */
+struct vtkLightShaftStatistics
+{
+  int Method = -1;
+  int SlicesDrawn = 0;
+  int SlabBatches = 0;
+  int LatticeResolution = 0;
+  int PostPasses = 0;
+  int SceneRenders = 0;
+  int RenderedProps = 0;
+  int MultiSamples = 0;
+  bool PlainScene = false;
+  bool ShadowMapRendered = false;
+  int ShadowCasters = 0;
+  double SliceDepthRange[2] = { 0.0, 0.0 };
+  double RadialGuardBand = 0.0;
+  double LightDepthRange[2] = { 0.0, 0.0 }; ///< of the shadow map, when one was rendered
+  double ShadowBias = 0.0;                  ///< of the shadow map, when one was rendered
+};
+
+/**
+ * The delegate's render of the scene: colour (and, for a cookie on surfaces, the colour without
+ * the spotlight) and depth, multisampled like the target the pass draws into, and the
+ * single-sample depth the shafts read (the nearest of each pixel's samples).
+ */
+struct vtkLightShaftSceneImage
+{
+  vtkOpenGLFramebufferObject* Framebuffer = nullptr; ///< holds Color and Depth attached
+  vtkTextureObject* Color = nullptr;
+  vtkTextureObject* ColorUnlit = nullptr;
+  vtkTextureObject* Depth = nullptr;
+  vtkTextureObject* ShaftDepth = nullptr;
+  int Samples = 0;
+};
+
+/**
+ * One frame, shared by the pass's components.
+ */
+struct vtkLightShaftFrame
+{
+  vtkRenderer* Renderer = nullptr;
+  const vtkRenderState* State = nullptr;
+  vtkOpenGLRenderWindow* Window = nullptr;
+  vtkObject* Owner = nullptr; ///< the pass: the source of messages and events
+
+  int Origin[2] = { 0, 0 };  ///< viewport origin in the target, pixels
+  int Size[2] = { 0, 0 };    ///< viewport size, pixels
+  int Reduced[2] = { 0, 0 }; ///< in-scatter size (Size / DownsampleFactor, rounded up)
+
+  vtkLightShaftParameters Parameters;
+  vtkLightShaftModel::Medium Medium;
+  vtkLightShaftGeometry::CameraFrame Camera;
+  vtkLightShaftGeometry::LightFrame Light;
+  vtkLightShaftSceneImage Scene;
+
+  /// Decided once per frame: the cookie and noise textures in use (nullptr: off).
+  vtkTextureObject* Cookie = nullptr;
+  vtkTextureObject* Noise = nullptr;
+
+  /// The method whose slab program the frame readied (GetLastShaderVariant reports it).
+  const vtkLightShaftMethod* ShaderMethod = nullptr;
+
+  vtkLightShaftStatistics Statistics;
+};
+
+#endif

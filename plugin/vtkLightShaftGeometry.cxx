@@ -1,0 +1,553 @@
+#include "vtkLightShaftGeometry.h"
+
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkProp.h"
+#include "vtkPropCollection.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace vtkLightShaftGeometry
+{
+namespace
+{
+// Extend [nearest, deepest] by the depths along `axis` (from `apex`) of a box's eight corners.
+void ExtendDepthRange(const double bounds[6],
+  const glm::dvec3& apex,
+  const glm::dvec3& axis,
+  double& nearest,
+  double& deepest)
+{
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const glm::dvec3 p(
+      bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)]);
+    const double depth = glm::dot(p - apex, axis);
+    nearest = std::min(nearest, depth);
+    deepest = std::max(deepest, depth);
+  }
+}
+
+// A unit vector pair (u, v) across `axis`, (axis, u, v) right-handed.
+void PerpendicularBasis(const glm::dvec3& axis, glm::dvec3& u, glm::dvec3& v)
+{
+  u = glm::normalize(glm::cross(
+    axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0)));
+  v = glm::cross(axis, u);
+}
+
+// A box's corner (index bits: x, y, z).
+glm::dvec3 Corner(const double bounds[6], int corner)
+{
+  return glm::dvec3(
+    bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)]);
+}
+}
+
+//------------------------------------------------------------------------------
+glm::dmat4 FromKeyMatrix(vtkMatrix4x4* key)
+{
+  return glm::make_mat4(&key->Element[0][0]);
+}
+
+glm::dmat4 FromVTKMatrix(vtkMatrix4x4* m)
+{
+  return glm::transpose(glm::make_mat4(&m->Element[0][0]));
+}
+
+void ToVTKMatrix(const glm::dmat4& m, vtkMatrix4x4* out)
+{
+  for (int row = 0; row < 4; ++row)
+  {
+    for (int col = 0; col < 4; ++col)
+    {
+      out->SetElement(row, col, m[col][row]);
+    }
+  }
+}
+
+std::array<float, 16> ToFloatColumnMajor(const glm::dmat4& m)
+{
+  std::array<float, 16> out;
+  const double* p = glm::value_ptr(m);
+  std::copy(p, p + 16, out.begin());
+  return out;
+}
+
+std::array<float, 3> ToFloat3(const glm::dvec3& v)
+{
+  return { static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z) };
+}
+
+//------------------------------------------------------------------------------
+CameraFrame CameraFrame::FromMatrices(const glm::dmat4& worldToView, const glm::dmat4& viewToClip)
+{
+  CameraFrame camera;
+  camera.WorldToView = worldToView;
+  camera.ViewToClip = viewToClip;
+  camera.ClipToView = glm::inverse(viewToClip);
+  camera.Perspective = viewToClip[2][3] != 0.0;
+  const glm::dvec4 farPoint = camera.ClipToView * glm::dvec4(0.0, 0.0, 1.0, 1.0);
+  camera.FarDepth = -farPoint.z / farPoint.w;
+  return camera;
+}
+
+glm::dvec2 CameraFrame::PixelFootprint(int width) const
+{
+  const double pixel = 2.0 / (width * this->ViewToClip[0][0]);
+  return this->Perspective ? glm::dvec2(pixel, 0.0) : glm::dvec2(0.0, pixel);
+}
+
+//------------------------------------------------------------------------------
+bool Pyramid::Reaches(const double bounds[6]) const
+{
+  auto outside = [&](const glm::dvec3& normal, double axial)
+  {
+    // All corners strictly outside the half-space axial * (d . Axis) - d . normal >= 0.
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const glm::dvec3 d = Corner(bounds, corner) - this->Apex;
+      if (axial * glm::dot(d, this->Axis) - glm::dot(d, normal) >= 0.0)
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  if (outside(-this->Axis, 0.0))
+  {
+    return false; // behind the light
+  }
+  for (const glm::dvec3& side : { this->U, -this->U, this->V, -this->V })
+  {
+    if (outside(side, this->Tangent))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+LightFrame ComputeLightFrame(const vtkLightShaftModel::Light& light,
+  const CameraFrame& camera,
+  vtkPropCollection* props,
+  const double* casterBounds,
+  vtkCamera* lightCamera)
+{
+  LightFrame frame;
+  frame.Model = light;
+  frame.PositionVC = glm::dvec3(camera.WorldToView * glm::dvec4(light.Position, 1.0));
+  frame.AxisVC = glm::normalize(glm::dvec3(camera.WorldToView * glm::dvec4(light.Axis, 0.0)));
+
+  // The bounding pyramid, across the view-space axis; the same pyramid in world coordinates
+  // (the view transform is a rotation and a translation: its transpose undoes the rotation).
+  const double halfAngle =
+    std::min(light.ConeHalfAngle, vtkLightShaftModel::MaximumSquareHalfAngle);
+  Pyramid& vc = frame.BoundsVC;
+  vc.Apex = frame.PositionVC;
+  vc.Axis = frame.AxisVC;
+  PerpendicularBasis(vc.Axis, vc.U, vc.V);
+  vc.Tangent = std::tan(halfAngle);
+  const glm::dmat3 viewToWorld = glm::transpose(glm::dmat3(camera.WorldToView));
+  Pyramid& wc = frame.BoundsWC;
+  wc.Apex = light.Position;
+  wc.Axis = light.Axis;
+  wc.U = viewToWorld * vc.U;
+  wc.V = viewToWorld * vc.V;
+  wc.Tangent = vc.Tangent;
+
+  // Casters: visible props (culled from the camera's view or not) whose bounds reach into the
+  // pyramid; only they can shadow the shafts.
+  double nearest = std::numeric_limits<double>::max();
+  double deepest = 0.0;
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    const double* bounds = prop->GetVisibility() ? prop->GetBounds() : nullptr;
+    if (!bounds || !vtkMath::AreBoundsInitialized(bounds) || !wc.Reaches(bounds))
+    {
+      continue;
+    }
+    frame.Casters.push_back(prop);
+    ExtendDepthRange(bounds, light.Position, light.Axis, nearest, deepest);
+  }
+  frame.ShadowsPossible = !frame.Casters.empty();
+  if (casterBounds)
+  {
+    // Distributed: every process uses the global casters' bounds, and so the same light camera.
+    nearest = std::numeric_limits<double>::max();
+    deepest = 0.0;
+    frame.ShadowsPossible = vtkMath::AreBoundsInitialized(casterBounds) && wc.Reaches(casterBounds);
+    if (frame.ShadowsPossible)
+    {
+      ExtendDepthRange(casterBounds, light.Position, light.Axis, nearest, deepest);
+    }
+  }
+
+  // The light camera's depth range: the casters' (tight: best shadow-map precision), else as
+  // far as the view volume reaches.
+  if (deepest <= 0.0)
+  {
+    deepest = std::max(FarthestViewPoint(camera.ClipToView, frame.PositionVC), 1e-30);
+    nearest = 0.0;
+  }
+  frame.Far = deepest * 1.001;
+  frame.Near = std::max(nearest * 0.999, frame.Far * 1e-4);
+  frame.Projection = glm::perspective(2.0 * halfAngle, 1.0, frame.Near, frame.Far);
+
+  const glm::dvec3 focal = light.Position + light.Axis;
+  lightCamera->SetPosition(light.Position.x, light.Position.y, light.Position.z);
+  lightCamera->SetFocalPoint(focal.x, focal.y, focal.z);
+  lightCamera->SetViewUp(light.ViewUp.x, light.ViewUp.y, light.ViewUp.z);
+  vtkNew<vtkMatrix4x4> explicitProjection;
+  ToVTKMatrix(frame.Projection, explicitProjection);
+  lightCamera->SetExplicitProjectionTransformMatrix(explicitProjection);
+  lightCamera->SetUseExplicitProjectionTransformMatrix(true);
+  const glm::dmat4 lightView = FromVTKMatrix(lightCamera->GetViewTransformMatrix());
+  frame.WorldToLightClip = frame.Projection * lightView;
+  frame.ViewToLightClip = frame.WorldToLightClip * glm::inverse(camera.WorldToView);
+  return frame;
+}
+
+//------------------------------------------------------------------------------
+void ConvexPolytope::Clip(const glm::dvec4& plane)
+{
+  const glm::dvec3 n(plane);
+  const double scale = glm::length(n);
+  if (scale == 0.0)
+  {
+    return;
+  }
+  std::vector<std::vector<glm::dvec3>> kept;
+  std::vector<glm::dvec3> cut;
+  for (const auto& face : this->Faces)
+  {
+    std::vector<glm::dvec3> out;
+    const size_t count = face.size();
+    for (size_t i = 0; i < count; ++i)
+    {
+      const glm::dvec3& a = face[i];
+      const glm::dvec3& b = face[(i + 1) % count];
+      const double da = (glm::dot(n, a) + plane.w) / scale;
+      const double db = (glm::dot(n, b) + plane.w) / scale;
+      if (da >= 0.0)
+      {
+        out.push_back(a);
+      }
+      if ((da >= 0.0) != (db >= 0.0))
+      {
+        const glm::dvec3 p = a + (b - a) * (da / (da - db));
+        out.push_back(p);
+        cut.push_back(p);
+      }
+    }
+    if (out.size() >= 3)
+    {
+      kept.push_back(std::move(out));
+    }
+  }
+  if (cut.size() >= 3)
+  {
+    // The cap: the cut points ordered around their centroid in the clipping plane.
+    glm::dvec3 centre(0.0);
+    for (const auto& p : cut)
+    {
+      centre += p;
+    }
+    centre /= static_cast<double>(cut.size());
+    const glm::dvec3 axis = n / scale;
+    glm::dvec3 u =
+      glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0));
+    u = glm::normalize(u);
+    const glm::dvec3 v = glm::cross(axis, u);
+    std::sort(cut.begin(),
+      cut.end(),
+      [&](const glm::dvec3& p, const glm::dvec3& q)
+      {
+        return std::atan2(glm::dot(p - centre, v), glm::dot(p - centre, u)) <
+               std::atan2(glm::dot(q - centre, v), glm::dot(q - centre, u));
+      });
+    kept.push_back(std::move(cut));
+  }
+  this->Faces = std::move(kept);
+}
+
+//------------------------------------------------------------------------------
+std::vector<glm::dvec2> ClipToConvex(std::vector<glm::dvec2> polygon,
+  const std::vector<glm::dvec2>& window)
+{
+  std::vector<glm::dvec2> next;
+  for (size_t e = 0; e < window.size() && !polygon.empty(); ++e)
+  {
+    const glm::dvec2 a = window[e];
+    const glm::dvec2 edge = window[(e + 1) % window.size()] - a;
+    auto side = [&](const glm::dvec2& p) { return edge.x * (p.y - a.y) - edge.y * (p.x - a.x); };
+    next.clear();
+    for (size_t i = 0; i < polygon.size(); ++i)
+    {
+      const glm::dvec2& p = polygon[i];
+      const glm::dvec2& q = polygon[(i + 1) % polygon.size()];
+      const double sp = side(p);
+      const double sq = side(q);
+      if (sp >= 0.0)
+      {
+        next.push_back(p);
+      }
+      if ((sp >= 0.0) != (sq >= 0.0))
+      {
+        next.push_back(p + (q - p) * (sp / (sp - sq)));
+      }
+    }
+    polygon.swap(next);
+  }
+  return polygon;
+}
+
+//------------------------------------------------------------------------------
+std::vector<glm::dvec2> ConvexHull(std::vector<glm::dvec2> points)
+{
+  std::sort(points.begin(),
+    points.end(),
+    [](const glm::dvec2& a, const glm::dvec2& b)
+    { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  if (points.size() < 3)
+  {
+    return points;
+  }
+  auto cross = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b)
+  { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); };
+  std::vector<glm::dvec2> hull(2 * points.size());
+  size_t k = 0;
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
+    {
+      --k;
+    }
+    hull[k++] = points[i];
+  }
+  for (size_t i = points.size() - 1, t = k + 1; i > 0; --i)
+  {
+    while (k >= t && cross(hull[k - 2], hull[k - 1], points[i - 1]) <= 0.0)
+    {
+      --k;
+    }
+    hull[k++] = points[i - 1];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+//------------------------------------------------------------------------------
+LitVolume ComputeLitVolume(const LightFrame& light, const CameraFrame& camera)
+{
+  const glm::dmat4& viewToClip = camera.ViewToClip;
+  const Pyramid& pyramid = light.BoundsVC;
+
+  // The pyramid, its base beyond everything the view can see.
+  const double reach = std::max(FarthestViewPoint(camera.ClipToView, pyramid.Apex), 1e-30);
+  const double halfSide = reach * pyramid.Tangent;
+  const glm::dvec3& u = pyramid.U;
+  const glm::dvec3& v = pyramid.V;
+  const glm::dvec3 baseCentre = pyramid.Apex + reach * pyramid.Axis;
+  const std::array<glm::dvec3, 4> base = { baseCentre + halfSide * (u + v),
+    baseCentre + halfSide * (-u + v),
+    baseCentre + halfSide * (-u - v),
+    baseCentre + halfSide * (u - v) };
+  LitVolume lit;
+  lit.Polytope.Faces.push_back({ base[3], base[2], base[1], base[0] });
+  for (int i = 0; i < 4; ++i)
+  {
+    lit.Polytope.Faces.push_back({ pyramid.Apex, base[i], base[(i + 1) % 4] });
+  }
+
+  // Clipped to the view volume: the four sides, the far plane, and a depth just in front of
+  // the camera plane (slabs must project).
+  const glm::dmat4 clipT = glm::transpose(viewToClip); // rows of the projection as columns
+  const glm::dvec4 row0 = clipT[0];
+  const glm::dvec4 row1 = clipT[1];
+  const glm::dvec4 row2 = clipT[2];
+  const glm::dvec4 row3 = clipT[3];
+  const double minimumDepth = camera.FarDepth * 1e-7;
+  for (const glm::dvec4& plane : { row3 + row0,
+         row3 - row0,
+         row3 + row1,
+         row3 - row1,
+         row3 - row2,
+         glm::dvec4(0.0, 0.0, -1.0, -minimumDepth) })
+  {
+    lit.Polytope.Clip(plane);
+  }
+  if (lit.Polytope.Empty())
+  {
+    return lit;
+  }
+  double nearest = std::numeric_limits<double>::max();
+  double deepest = 0.0;
+  for (const auto& face : lit.Polytope.Faces)
+  {
+    for (const auto& p : face)
+    {
+      nearest = std::min(nearest, -p.z);
+      deepest = std::max(deepest, -p.z);
+    }
+  }
+  lit.Nearest = std::max(nearest, minimumDepth);
+  lit.Deepest = deepest;
+  return lit;
+}
+
+//------------------------------------------------------------------------------
+std::vector<SlabFootprint> ComputeSlabFootprints(const LitVolume& lit,
+  const CameraFrame& camera,
+  int slabs,
+  bool jitter)
+{
+  const double nearest = lit.Nearest;
+  const double deepest = lit.Deepest;
+  const double thickness = (deepest - nearest) / slabs;
+  const int drawnSlabs = jitter ? slabs + 1 : slabs;
+  std::vector<SlabFootprint> footprints;
+  std::vector<glm::dvec2> footprint;
+  for (int k = 0; k < drawnSlabs; ++k)
+  {
+    const double za = std::max(nearest, nearest + (jitter ? k - 1 : k) * thickness);
+    const double zb = std::min(deepest, nearest + (k + 1) * thickness);
+    footprint.clear();
+    auto addPoint = [&](const glm::dvec3& p)
+    {
+      const glm::dvec4 c = camera.ViewToClip * glm::dvec4(p, 1.0);
+      footprint.emplace_back(c.x / c.w, c.y / c.w);
+    };
+    for (const auto& face : lit.Polytope.Faces)
+    {
+      const size_t count = face.size();
+      for (size_t i = 0; i < count; ++i)
+      {
+        const glm::dvec3& a = face[i];
+        const glm::dvec3& b = face[(i + 1) % count];
+        const double da = -a.z;
+        const double db = -b.z;
+        if (da >= za && da <= zb)
+        {
+          addPoint(a);
+        }
+        for (double plane : { za, zb })
+        {
+          if ((da - plane) * (db - plane) < 0.0)
+          {
+            addPoint(a + (b - a) * ((plane - da) / (db - da)));
+          }
+        }
+      }
+    }
+    std::vector<glm::dvec2> hull = ConvexHull(footprint);
+    if (hull.size() >= 3)
+    {
+      footprints.push_back({ k, za, std::move(hull) });
+    }
+  }
+  return footprints;
+}
+
+//------------------------------------------------------------------------------
+void AppendSlabTriangles(const SlabFootprint& slab, int lattice, std::vector<float>& vertices)
+{
+  const std::vector<glm::dvec2>& hull = slab.Hull;
+  auto emit = [&](const glm::dvec2& p)
+  {
+    vertices.insert(vertices.end(),
+      { static_cast<float>(p.x),
+        static_cast<float>(p.y),
+        static_cast<float>(slab.Index),
+        static_cast<float>(slab.NearDepth) });
+  };
+  if (lattice <= 0)
+  {
+    for (size_t i = 1; i + 1 < hull.size(); ++i)
+    {
+      emit(hull[0]);
+      emit(hull[i]);
+      emit(hull[i + 1]);
+    }
+    return;
+  }
+  glm::dvec2 low = hull[0];
+  glm::dvec2 high = hull[0];
+  for (const glm::dvec2& p : hull)
+  {
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  }
+  auto corner = [&](int i, int j)
+  { return low + (high - low) * glm::dvec2(double(i) / lattice, double(j) / lattice); };
+  // Clip against the hull without its near-coincident vertices: the direction of an edge a
+  // rounding error long is noise, and its half-plane would cut a sliver out of the slab.
+  const double tiny = 1e-9 * glm::length(high - low);
+  std::vector<glm::dvec2> window;
+  for (const glm::dvec2& p : hull)
+  {
+    if (window.empty() || glm::length(p - window.back()) > tiny)
+    {
+      window.push_back(p);
+    }
+  }
+  while (window.size() > 1 && glm::length(window.front() - window.back()) <= tiny)
+  {
+    window.pop_back();
+  }
+  for (int j = 0; j < lattice; ++j)
+  {
+    for (int i = 0; i < lattice; ++i)
+    {
+      const std::vector<glm::dvec2> cell = ClipToConvex(
+        { corner(i, j), corner(i + 1, j), corner(i + 1, j + 1), corner(i, j + 1) }, window);
+      for (size_t c = 1; c + 1 < cell.size(); ++c)
+      {
+        emit(cell[0]);
+        emit(cell[c]);
+        emit(cell[c + 1]);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+int AffordableLattice(int requested, int slabs)
+{
+  if (requested <= 0)
+  {
+    return 0;
+  }
+  const int affordable = std::max(
+    1, static_cast<int>(std::floor(std::sqrt(static_cast<double>(LatticeCellBudget) / slabs))));
+  return std::min(requested, affordable);
+}
+
+//------------------------------------------------------------------------------
+double FarthestViewPoint(const glm::dmat4& clipToView, const glm::dvec3& pointVC)
+{
+  double farthest = 0.0;
+  for (int corner = 0; corner < 4; ++corner)
+  {
+    const double sx = (corner & 1) ? 1.0 : -1.0;
+    const double sy = (corner & 2) ? 1.0 : -1.0;
+    const glm::dvec4 nearPoint = clipToView * glm::dvec4(sx, sy, -1.0, 1.0);
+    const glm::dvec4 farPoint = clipToView * glm::dvec4(sx, sy, 1.0, 1.0);
+    const glm::dvec3 n3 = glm::dvec3(nearPoint) / nearPoint.w;
+    const glm::dvec3 f3 = glm::dvec3(farPoint) / farPoint.w;
+    const glm::dvec3 dir = f3 - n3;
+    const glm::dvec3 start = n3 - dir * (n3.z / dir.z);
+    farthest = std::max({ farthest, glm::length(start - pointVC), glm::length(f3 - pointVC) });
+  }
+  return farthest;
+}
+}

@@ -1,0 +1,183 @@
+/**
+ * @file   vtkLightShaftGeometry.h
+ * @brief  The geometry of a light-shaft frame, without GL (private, not installed): the scene
+ *         camera and the light in view coordinates, the light's bounding pyramid and the part
+ *         of the view volume it lights, the shadow casters, the slabs' screen footprints and
+ *         their lattice.
+ *
+ * Double precision throughout; unit-tested on the CPU (tests/cxx/TestLightShaftGeometry.cxx).
+ */
+
+#ifndef vtkLightShaftGeometry_h
+#define vtkLightShaftGeometry_h
+
+#include "vtkLightShaftModel.h" // For vtkLightShaftModel::Light
+
+#include <glm/glm.hpp> // For glm vectors and matrices
+
+#include <array>  // For the float conversions
+#include <vector> // For polygons, faces, casters, vertices
+
+class vtkCamera;
+class vtkMatrix4x4;
+class vtkProp;
+class vtkPropCollection;
+
+namespace vtkLightShaftGeometry
+{
+/// VTK's key matrices (stored transposed for OpenGL) are glm's column-major layout.
+glm::dmat4 FromKeyMatrix(vtkMatrix4x4* key);
+/// A vtkMatrix4x4 (row-major, mathematical) to glm.
+glm::dmat4 FromVTKMatrix(vtkMatrix4x4* m);
+void ToVTKMatrix(const glm::dmat4& m, vtkMatrix4x4* out);
+std::array<float, 16> ToFloatColumnMajor(const glm::dmat4& m);
+std::array<float, 3> ToFloat3(const glm::dvec3& v);
+
+/**
+ * The scene camera exactly as the mappers see it (VTK's key matrices), in double precision.
+ */
+struct CameraFrame
+{
+  glm::dmat4 WorldToView{ 1.0 };
+  glm::dmat4 ViewToClip{ 1.0 };
+  glm::dmat4 ClipToView{ 1.0 };
+  bool Perspective = true; ///< else parallel (orthographic)
+  double FarDepth = 1.0;   ///< view depth of the far clipping plane
+
+  static CameraFrame FromMatrices(const glm::dmat4& worldToView, const glm::dmat4& viewToClip);
+
+  /// Width of a pixel of a `width`-pixel target at view depth z, as x * z + y (view units).
+  glm::dvec2 PixelFootprint(int width) const;
+};
+
+/**
+ * The light's bounding pyramid: apex at the light, square cross-section of half-angle
+ * atan(Tangent) about Axis, its sides facing +-U and +-V. In view coordinates (VC) for the slabs
+ * and in world coordinates (WC) for the casters: the same pyramid.
+ */
+struct Pyramid
+{
+  glm::dvec3 Apex{ 0.0 };
+  glm::dvec3 Axis{ 0.0, 0.0, -1.0 };
+  glm::dvec3 U{ 1.0, 0.0, 0.0 };
+  glm::dvec3 V{ 0.0, 1.0, 0.0 };
+  double Tangent = 1.0;
+
+  /// Whether an axis-aligned box can reach into the pyramid (false when all its corners lie
+  /// outside one of the pyramid's planes).
+  bool Reaches(const double bounds[6]) const;
+};
+
+/**
+ * The light in the scene camera's view coordinates, its casters and the light camera that
+ * renders their depth (the shadow map): everything the shafts need of the light this frame.
+ */
+struct LightFrame
+{
+  vtkLightShaftModel::Light Model; ///< the light in world coordinates
+  glm::dvec3 PositionVC{ 0.0 };
+  glm::dvec3 AxisVC{ 0.0, 0.0, -1.0 };
+  Pyramid BoundsVC; ///< the bounding pyramid in view coordinates
+  Pyramid BoundsWC; ///< the same pyramid in world coordinates
+
+  std::vector<vtkProp*> Casters; ///< visible props whose bounds reach into the pyramid
+  bool ShadowsPossible = false;  ///< casters reach into the light's volume (here or elsewhere)
+
+  /// The light camera: perspective over the light's square, depth range of the casters (else
+  /// of the view volume).
+  double Near = 0.0;
+  double Far = 1.0;
+  glm::dmat4 Projection{ 1.0 };
+  glm::dmat4 WorldToLightClip{ 1.0 };
+  glm::dmat4 ViewToLightClip{ 1.0 };
+};
+
+/**
+ * The light frame of `light` for `camera`: casters among `props` (their bounds reach into the
+ * bounding pyramid), and the light camera `lightCamera` set up to render their depth. With
+ * `casterBounds` (distributed rendering: every process's casters) the light camera's depth
+ * range, and whether shadows are possible, come from those bounds instead.
+ */
+LightFrame ComputeLightFrame(const vtkLightShaftModel::Light& light,
+  const CameraFrame& camera,
+  vtkPropCollection* props,
+  const double* casterBounds,
+  vtkCamera* lightCamera);
+
+/**
+ * A convex polytope as a list of convex faces, clipped by half-spaces.
+ */
+struct ConvexPolytope
+{
+  std::vector<std::vector<glm::dvec3>> Faces;
+
+  /// Keep the part where dot(plane.xyz, p) + plane.w >= 0.
+  void Clip(const glm::dvec4& plane);
+  bool Empty() const { return this->Faces.empty(); }
+};
+
+/// The part of a convex polygon inside a counter-clockwise convex polygon (Sutherland-Hodgman).
+std::vector<glm::dvec2> ClipToConvex(std::vector<glm::dvec2> polygon,
+  const std::vector<glm::dvec2>& window);
+
+/// Counter-clockwise convex hull (Andrew's monotone chain); fewer than 3 points: empty.
+std::vector<glm::dvec2> ConvexHull(std::vector<glm::dvec2> points);
+
+/**
+ * The part of the view volume inside the light's bounding pyramid (view coordinates), and the
+ * view-depth range it spans.
+ */
+struct LitVolume
+{
+  ConvexPolytope Polytope;
+  double Nearest = 0.0;
+  double Deepest = 0.0;
+
+  bool Empty() const { return !(this->Deepest > this->Nearest); }
+};
+
+LitVolume ComputeLitVolume(const LightFrame& light, const CameraFrame& camera);
+
+/**
+ * One slab to draw: its index (the shader's slab boundaries), its near view depth, and the
+ * convex hull of its screen footprint (NDC).
+ */
+struct SlabFootprint
+{
+  int Index;
+  double NearDepth;
+  std::vector<glm::dvec2> Hull;
+};
+
+/**
+ * The footprints of `slabs` slabs of the lit volume's depth range; with `jitter` each pixel's
+ * slab k spans [k - 1 + o, k + o] thicknesses (o in (0, 1)): one more slab, and footprints
+ * covering two thicknesses. Slabs with an empty footprint are left out.
+ */
+std::vector<SlabFootprint> ComputeSlabFootprints(const LitVolume& lit,
+  const CameraFrame& camera,
+  int slabs,
+  bool jitter);
+
+/**
+ * Append the triangles covering `slab` to `vertices` (x, y in NDC, slab index, near depth per
+ * vertex): the hull as a fan, or with lattice > 0 an n x n lattice over the hull's bounding
+ * rectangle with each cell clipped to the hull, so that no more fragments are drawn than
+ * without the lattice.
+ */
+void AppendSlabTriangles(const SlabFootprint& slab, int lattice, std::vector<float>& vertices);
+
+/// Lattice cells built and drawn in one frame at most: the cells are clipped on the CPU, so
+/// their number bounds the frame's CPU time (about 1.5 s for 2^21 cells here: README "Behaviour
+/// with any scene").
+constexpr long long LatticeCellBudget = 1LL << 21;
+
+/// The lattice resolution that `slabs` slabs can afford within LatticeCellBudget: `requested`,
+/// or the largest n with slabs * n^2 within the budget (at least 1).
+int AffordableLattice(int requested, int slabs);
+
+/// The farthest point of the view volume (camera plane to far plane) from `pointVC`.
+double FarthestViewPoint(const glm::dmat4& clipToView, const glm::dvec3& pointVC);
+}
+
+#endif

@@ -1,0 +1,156 @@
+#include "vtkLightShaftLightTextures.h"
+
+#include "vtkLightShaftNoise.h"
+#include "vtkLightShaftResources.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkDataObject.h"
+#include "vtkObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkTexture.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace
+{
+// The latest modification of a texture and of its input image.
+vtkMTimeType ImageTime(vtkTexture* texture)
+{
+  vtkDataObject* input = texture->GetInputDataObject(0, 0);
+  return std::max(texture->GetMTime(), input ? input->GetMTime() : 0);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkLightShaftLightTextures::vtkLightShaftLightTextures() = default;
+vtkLightShaftLightTextures::~vtkLightShaftLightTextures() = default;
+
+//------------------------------------------------------------------------------
+void vtkLightShaftLightTextures::SetCookie(vtkTexture* cookie)
+{
+  this->Cookie = cookie;
+  this->CookieUploadTime = 0;
+  this->WarnedCookie = false;
+}
+
+vtkTexture* vtkLightShaftLightTextures::GetCookie() const
+{
+  return this->Cookie;
+}
+
+void vtkLightShaftLightTextures::SetNoiseImage(vtkTexture* noise)
+{
+  this->NoiseImage = noise;
+  this->NoiseUploadTime = 0;
+  this->WarnedNoise = false;
+}
+
+vtkTexture* vtkLightShaftLightTextures::GetNoiseImage() const
+{
+  return this->NoiseImage;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftLightTextures::ReadyCookie(vtkOpenGLRenderWindow* window,
+  vtkObject* owner)
+{
+  vtkTexture* cookie = this->Cookie;
+  if (!cookie)
+  {
+    return nullptr;
+  }
+  if (cookie->GetNumberOfInputPorts() > 0 && cookie->GetNumberOfInputConnections(0) > 0)
+  {
+    cookie->GetInputAlgorithm()->Update();
+  }
+  const vtkMTimeType time = ImageTime(cookie);
+  if (this->CookieTexture && time <= this->CookieUploadTime)
+  {
+    return this->CookieTexture;
+  }
+  std::vector<float> rgb;
+  int width = 0;
+  int height = 0;
+  if (!vtkLightShaftImageToRGB(cookie, rgb, width, height))
+  {
+    // No cookie this frame: drop the texture of an earlier image so that nothing uses it.
+    if (this->CookieTexture)
+    {
+      this->CookieTexture->ReleaseGraphicsResources(window);
+      this->CookieTexture = nullptr;
+    }
+    this->CookieUploadTime = 0;
+    if (!this->WarnedCookie)
+    {
+      vtkWarningWithObjectMacro(owner, "The cookie texture has no image: no cookie is applied.");
+      this->WarnedCookie = true;
+    }
+    return nullptr;
+  }
+  vtkLightShaftResources::UploadMipmapped(
+    this->CookieTexture, window, rgb, width, height, 3, false);
+  this->CookieUploadTime = time;
+  return this->CookieTexture;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftLightTextures::ReadyNoise(vtkOpenGLRenderWindow* window,
+  vtkObject* owner)
+{
+  if (this->NoiseImage)
+  {
+    const vtkMTimeType time = ImageTime(this->NoiseImage);
+    if (this->NoiseTexture && !this->NoiseIsGenerated && time <= this->NoiseUploadTime)
+    {
+      return this->NoiseTexture;
+    }
+    std::vector<float> rgb;
+    int width = 0;
+    int height = 0;
+    if (vtkLightShaftImageToRGB(this->NoiseImage, rgb, width, height))
+    {
+      std::vector<float> texels(static_cast<size_t>(width) * height);
+      for (size_t i = 0; i < texels.size(); ++i)
+      {
+        texels[i] = rgb[3 * i];
+      }
+      vtkLightShaftNormalizeNoise(texels);
+      vtkLightShaftResources::UploadMipmapped(
+        this->NoiseTexture, window, texels, width, height, 1, true);
+      this->NoiseUploadTime = time;
+      this->NoiseIsGenerated = false;
+      return this->NoiseTexture;
+    }
+    if (!this->WarnedNoise)
+    {
+      vtkWarningWithObjectMacro(
+        owner, "The noise texture has no image: using the generated noise.");
+      this->WarnedNoise = true;
+    }
+  }
+  if (!this->NoiseTexture || !this->NoiseIsGenerated)
+  {
+    constexpr int size = 256;
+    vtkLightShaftResources::UploadMipmapped(
+      this->NoiseTexture, window, vtkLightShaftTileableNoise(size, 5, 2004u), size, size, 1, true);
+    this->NoiseIsGenerated = true;
+  }
+  return this->NoiseTexture;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftLightTextures::ReleaseGraphicsResources(vtkWindow* window)
+{
+  for (auto* texture : { &this->CookieTexture, &this->NoiseTexture })
+  {
+    if (*texture)
+    {
+      (*texture)->ReleaseGraphicsResources(window);
+    }
+    *texture = nullptr;
+  }
+  this->CookieUploadTime = 0;
+  this->NoiseUploadTime = 0;
+}

@@ -1,0 +1,43 @@
+#include "vtkLightShaftMethod.h"
+
+#include "vtkLightShaftFrame.h"
+#include "vtkLightShaftPass.h"
+
+#include "vtkObject.h"
+
+#include "vtkLightShaftSlabVS.h"
+
+//------------------------------------------------------------------------------
+vtkLightShaftResources::TextureKind vtkLightShaftMethod::AccumulationKind(
+  const vtkLightShaftParameters& parameters,
+  int& buffers) const
+{
+  buffers = 1;
+  return parameters.AccumulationPrecision == vtkLightShaftPass::ACCUMULATE_FLOAT16
+           ? vtkLightShaftResources::TextureKind::RGBA16F
+           : vtkLightShaftResources::TextureKind::RGBA32F;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkLightShaftMethod::FloatAccumulation(const vtkLightShaftParameters& parameters)
+{
+  return parameters.AccumulationPrecision == vtkLightShaftPass::ACCUMULATE_FLOAT16
+           ? " accumulate=float16"
+           : " accumulate=float32";
+}
+
+//------------------------------------------------------------------------------
+vtkShaderProgram* vtkLightShaftMethod::ReadySlabProgram(vtkLightShaftFrame& frame,
+  const char* fragment,
+  const vtkLightShaftShaders::Variant& variant)
+{
+  this->Variant = variant.Description;
+  frame.ShaderMethod = this;
+  vtkShaderProgram* program =
+    this->SlabProgram.Ready(frame.Window, vtkLightShaftSlabVS, fragment, variant);
+  if (!program)
+  {
+    vtkErrorWithObjectMacro(frame.Owner, "Could not build the light-shaft slice shader.");
+  }
+  return program;
+}

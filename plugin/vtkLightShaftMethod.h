@@ -1,0 +1,80 @@
+/**
+ * @file   vtkLightShaftMethod.h
+ * @brief  The common interface of vtkLightShaftPass's methods (private, not installed).
+ */
+
+#ifndef vtkLightShaftMethod_h
+#define vtkLightShaftMethod_h
+
+#include "vtkLightShaftResources.h" // For TextureKind
+#include "vtkLightShaftShaders.h"   // For the slab program
+
+#include <string> // For the shader variant
+
+class vtkTextureObject;
+class vtkWindow;
+class vtkLightShaftInScatterTarget;
+struct vtkLightShaftFrame;
+struct vtkLightShaftParameters;
+
+namespace vtkLightShaftGeometry
+{
+struct LitVolume;
+}
+
+/**
+ * @class   vtkLightShaftMethod
+ * @brief   One way to compute the in-scattered radiance L_in of a frame (SLICES, RAY_MARCH,
+ *          RADIAL_BLUR, ANALYTIC): the same model, light and medium, at the frame's reduced
+ *          resolution, into the in-scatter target.
+ *
+ * A new method is a subclass in its own file, with its fragment shader in its own GLSL file
+ * (sharing the integrand and segment chunks), added to the pass's list of methods.
+ */
+class vtkLightShaftMethod
+{
+public:
+  virtual ~vtkLightShaftMethod() = default;
+
+  /// The method's name, as vtkLightShaftPass::GetMethodName and the shader variant say it.
+  virtual const char* GetName() const = 0;
+
+  /**
+   * The accumulation buffers the method adds into: their kind, and how many (`buffers`: 1, or 3
+   * for the 8-bit mode). By default one float buffer of the precision asked for.
+   */
+  virtual vtkLightShaftResources::TextureKind AccumulationKind(
+    const vtkLightShaftParameters& parameters,
+    int& buffers) const;
+
+  /**
+   * Compute L_in over the lit volume `lit` into `target` (prepared: cleared and bound). Returns
+   * the texture holding it (reduced resolution, RGB radiance; alpha as the method uses it) for
+   * the post chain, or nullptr when nothing was drawn (the target then holds zeros).
+   */
+  virtual vtkTextureObject* Render(vtkLightShaftFrame& frame,
+    const vtkLightShaftGeometry::LitVolume& lit,
+    vtkLightShaftInScatterTarget& target) = 0;
+
+  virtual void ReleaseGraphicsResources(vtkWindow* window) = 0;
+
+  /// The feature variant and fragment source of the slab program this method readied last.
+  const std::string& GetShaderVariant() const { return this->Variant; }
+  const std::string& GetShaderSource() const { return this->SlabProgram.GetFragmentSource(); }
+
+protected:
+  /// Ready the slab program of `variant` (the vertex shader is shared by every method),
+  /// remembering its description for GetShaderVariant and this method as the frame's
+  /// ShaderMethod; nullptr (and an error from the frame's owner) when it does not compile.
+  vtkShaderProgram* ReadySlabProgram(vtkLightShaftFrame& frame,
+    const char* fragment,
+    const vtkLightShaftShaders::Variant& variant);
+
+  /// " accumulate=float32" or " accumulate=float16": the description of a float accumulation.
+  static const char* FloatAccumulation(const vtkLightShaftParameters& parameters);
+
+  vtkLightShaftShaders::Program SlabProgram;
+  std::string Variant;
+};
+
+#endif

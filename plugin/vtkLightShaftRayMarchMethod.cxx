@@ -1,0 +1,78 @@
+#include "vtkLightShaftRayMarchMethod.h"
+
+#include "vtkLightShaftFrame.h"
+#include "vtkLightShaftInScatterTarget.h"
+#include "vtkLightShaftShadowMap.h"
+#include "vtkLightShaftSlabDrawer.h"
+
+#include "vtkShaderProgram.h"
+
+#include "vtkLightShaftRayMarchFS.h"
+
+//------------------------------------------------------------------------------
+vtkLightShaftRayMarchMethod::vtkLightShaftRayMarchMethod(vtkLightShaftShadowMap& shadowMap,
+  vtkLightShaftSlabDrawer& drawer,
+  unsigned long shadowMapEvent)
+  : ShadowMap(shadowMap)
+  , Drawer(drawer)
+  , ShadowMapEvent(shadowMapEvent)
+{
+}
+
+vtkLightShaftRayMarchMethod::~vtkLightShaftRayMarchMethod() = default;
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftRayMarchMethod::Render(vtkLightShaftFrame& frame,
+  const vtkLightShaftGeometry::LitVolume& lit,
+  vtkLightShaftInScatterTarget& target)
+{
+  const vtkLightShaftParameters& p = frame.Parameters;
+  this->Footprints = vtkLightShaftGeometry::ComputeSlabFootprints(lit, frame.Camera, 1, false);
+  if (this->Footprints.empty())
+  {
+    return nullptr;
+  }
+  const bool shadows = this->ShadowMap.Render(frame, this->ShadowMapEvent);
+  vtkLightShaftShaders::Variant variant = vtkLightShaftShaders::IntegrandVariant(this->GetName(),
+    "LIGHTSHAFT_RAY_MARCH",
+    frame.Medium.Phase,
+    shadows,
+    frame.Cookie,
+    frame.Noise);
+  variant.Description += FloatAccumulation(p);
+  vtkShaderProgram* program = this->ReadySlabProgram(frame, vtkLightShaftRayMarchFS, variant);
+  if (!program)
+  {
+    return nullptr;
+  }
+  program->SetUniformi("numberOfSteps", p.NumberOfSteps);
+  program->SetUniformi("interleaveSize", p.InterleaveSize);
+
+  target.Bind();
+  vtkLightShaftSlabDrawer::Slabs slabs;
+  slabs.Footprints = &this->Footprints;
+  slabs.Start = lit.Nearest;
+  slabs.End = lit.Deepest;
+  slabs.Thickness = lit.Deepest - lit.Nearest;
+  slabs.Depth = target.GetDepth();
+  slabs.ShadowMap = shadows ? this->ShadowMap.GetTexture() : nullptr;
+  slabs.ShadowBias = shadows ? frame.Statistics.ShadowBias : 0.0;
+  this->Drawer.Draw(frame, program, slabs);
+  frame.Statistics.SlicesDrawn = static_cast<int>(this->Footprints.size());
+
+  vtkTextureObject* marched = target.GetAccumulation(0);
+  if (p.InterleaveSize > 1)
+  {
+    // The gather: an unweighted, depth-aware mean over InterleaveSize consecutive pixels, in
+    // x then in y.
+    marched = this->Gather.Apply(frame, marched, target.GetDepth(), 0, p.InterleaveSize);
+  }
+  return marched;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftRayMarchMethod::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->SlabProgram.Release();
+  this->Gather.ReleaseGraphicsResources(window);
+}

@@ -1,0 +1,109 @@
+/**
+ * @file   vtkLightShaftSceneRenderer.h
+ * @brief  The scene under the shafts, for vtkLightShaftPass (private, not installed).
+ */
+
+#ifndef vtkLightShaftSceneRenderer_h
+#define vtkLightShaftSceneRenderer_h
+
+#include "vtkLightShaftResources.h" // For the owned targets and passes
+#include "vtkNew.h"                 // For the delegates held
+#include "vtkSmartPointer.h"        // For the framebuffers held
+
+#include <functional> // For the step before each delegate render
+
+class vtkLight;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkRenderPass;
+class vtkRenderState;
+class vtkRenderStepsPass;
+class vtkShadowMapPass;
+class vtkWindow;
+struct vtkLightShaftFrame;
+
+/**
+ * @class   vtkLightShaftSceneRenderer
+ * @brief   Renders the scene the shafts go into: the delegate (or, with none, VTK's default
+ *          steps, optionally with surface shadows), into targets multisampled like the pass's
+ *          own target, once with and (for a cookie on surfaces) once without the spotlight; and
+ *          the renders that must stay plain (selection, enclosing passes).
+ *
+ * The 2D overlay step of a vtkRenderStepsPass delegate is held back while the scene renders,
+ * so that the pass can draw it after compositing (on top, unfogged).
+ */
+class vtkLightShaftSceneRenderer
+{
+public:
+  vtkLightShaftSceneRenderer();
+  ~vtkLightShaftSceneRenderer();
+
+  /**
+   * Whether the render `s` needs the scene exactly as without the pass: a hardware selector's
+   * (VTK's picking and selection draw ids, not colours); one of an enclosing pass that renders
+   * the props itself, with its own shaders (a vtkOpenGLRenderPass such as a shadow-map baker or
+   * a value pass marks the props while it renders) or by their information keys; one into a
+   * target that takes no colour (depth only).
+   */
+  static bool NeedsPlainScene(const vtkRenderState* s);
+
+  /**
+   * The scene exactly as the renderer would draw it without `pass`: for a hardware selector the
+   * renderer's own pass-less render (it hands the props, or the pick list, to the selector),
+   * else `userDelegate` or VTK's default steps. Returns the number of props rendered.
+   */
+  int RenderPlain(vtkRenderPass* pass, vtkRenderPass* userDelegate, const vtkRenderState* s);
+
+  /// The pass that renders the scene: `userDelegate`, else VTK's default steps, with the
+  /// opaque step shadowed by vtkShadowMapPass when `shadowSurfaces` (maps of `shadowMapSize`).
+  vtkRenderPass* ChooseDelegate(vtkRenderPass* userDelegate,
+    bool shadowSurfaces,
+    int shadowMapSize,
+    vtkOpenGLRenderWindow* window);
+
+  /// `delegate` into the current target, unchanged (no shafts this frame).
+  void RenderUnchanged(vtkLightShaftFrame& frame, vtkRenderPass* delegate);
+
+  /**
+   * Take the overlay step out of `delegate` (a vtkRenderStepsPass) until RestoreOverlay;
+   * returns it (nullptr when the delegate has none).
+   */
+  vtkRenderPass* HoldOverlay(vtkRenderPass* delegate);
+  void RestoreOverlay();
+
+  /**
+   * Render the scene into the frame's scene image (frame.Scene), with the samples of the
+   * target the pass draws into; `twice`: also without `light` (its intensity at zero), for a
+   * cookie on surfaces.
+   */
+  void Render(vtkLightShaftFrame& frame, vtkRenderPass* delegate, vtkLight* light, bool twice);
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkLightShaftSceneRenderer(const vtkLightShaftSceneRenderer&) = delete;
+  void operator=(const vtkLightShaftSceneRenderer&) = delete;
+
+  void RenderDelegate(vtkLightShaftFrame& frame,
+    vtkRenderPass* delegate,
+    const vtkRenderState* s,
+    const std::function<void()>& prepare);
+  bool FixSurfaceShadowCameras();
+  vtkTextureObject* ResolveDepth(vtkLightShaftFrame& frame, vtkTextureObject* depthSamples);
+
+  vtkNew<vtkRenderStepsPass> DefaultDelegate;
+  vtkNew<vtkRenderStepsPass> ShadowedDelegate;
+  vtkNew<vtkShadowMapPass> SurfaceShadows;
+  vtkRenderStepsPass* OverlayOwner = nullptr;
+  vtkSmartPointer<vtkRenderPass> HeldOverlay;
+
+  vtkLightShaftResources::OwnedTexture Color;
+  vtkLightShaftResources::OwnedTexture ColorUnlit;
+  vtkLightShaftResources::OwnedTexture Depth;
+  vtkLightShaftResources::OwnedTexture ResolvedDepth;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> ResolveFramebuffer;
+  vtkLightShaftResources::FullScreenPass DepthResolve;
+};
+
+#endif

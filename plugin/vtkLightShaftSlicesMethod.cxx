@@ -1,0 +1,184 @@
+#include "vtkLightShaftSlicesMethod.h"
+
+#include "vtkLightShaftFrame.h"
+#include "vtkLightShaftInScatterTarget.h"
+#include "vtkLightShaftPass.h"
+#include "vtkLightShaftShadowMap.h"
+#include "vtkLightShaftSlabDrawer.h"
+
+#include "vtkObject.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include "vtkLightShaftResolveFS.h"
+#include "vtkLightShaftSliceFS.h"
+
+#include <algorithm>
+#include <cmath>
+
+using vtkLightShaftResources::TextureKind;
+
+//------------------------------------------------------------------------------
+vtkLightShaftSlicesMethod::vtkLightShaftSlicesMethod(vtkLightShaftShadowMap& shadowMap,
+  vtkLightShaftSlabDrawer& drawer,
+  unsigned long shadowMapEvent)
+  : ShadowMap(shadowMap)
+  , Drawer(drawer)
+  , ShadowMapEvent(shadowMapEvent)
+{
+}
+
+vtkLightShaftSlicesMethod::~vtkLightShaftSlicesMethod() = default;
+
+//------------------------------------------------------------------------------
+TextureKind vtkLightShaftSlicesMethod::AccumulationKind(const vtkLightShaftParameters& parameters,
+  int& buffers) const
+{
+  if (parameters.AccumulationPrecision == vtkLightShaftPass::ACCUMULATE_8BIT)
+  {
+    buffers = 3; // one RGBA8 buffer per colour, every fourth slab in each channel
+    return TextureKind::RGBA8;
+  }
+  return this->vtkLightShaftMethod::AccumulationKind(parameters, buffers);
+}
+
+//------------------------------------------------------------------------------
+// How many slabs: fixed, or (automatic) as many slabs of thickness far / maximum as the lit
+// depth range needs.
+int vtkLightShaftSlicesMethod::CountSlices(const vtkLightShaftFrame& frame,
+  const vtkLightShaftGeometry::LitVolume& lit)
+{
+  const vtkLightShaftParameters& p = frame.Parameters;
+  if (!p.AutomaticSliceCount)
+  {
+    return p.NumberOfSlices;
+  }
+  const double spacing = frame.Camera.FarDepth / p.MaximumNumberOfSlices;
+  const int slices = static_cast<int>(std::ceil((lit.Deepest - lit.Nearest) / spacing - 1e-9));
+  return std::max(1, std::min(slices, p.MaximumNumberOfSlices));
+}
+
+//------------------------------------------------------------------------------
+int vtkLightShaftSlicesMethod::LatticeWithinBudget(vtkLightShaftFrame& frame, int slabs)
+{
+  const int requested = frame.Parameters.LatticeResolution;
+  const int affordable = vtkLightShaftGeometry::AffordableLattice(requested, slabs);
+  if (affordable == requested)
+  {
+    this->WarnedLatticeBudget = false;
+  }
+  else if (!this->WarnedLatticeBudget)
+  {
+    vtkWarningWithObjectMacro(frame.Owner,
+      "LatticeResolution " << requested << " over " << slabs << " slabs would be "
+                           << static_cast<long long>(requested) * requested * slabs
+                           << " lattice cells in a frame, more than the "
+                           << vtkLightShaftGeometry::LatticeCellBudget
+                           << " allowed: using a lattice of " << affordable
+                           << " (GetLastLatticeResolution).");
+    this->WarnedLatticeBudget = true;
+  }
+  return affordable;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftSlicesMethod::Render(vtkLightShaftFrame& frame,
+  const vtkLightShaftGeometry::LitVolume& lit,
+  vtkLightShaftInScatterTarget& target)
+{
+  const vtkLightShaftParameters& p = frame.Parameters;
+  const int slices = this->CountSlices(frame, lit);
+  const bool jitter = p.Jitter;
+  this->Footprints =
+    vtkLightShaftGeometry::ComputeSlabFootprints(lit, frame.Camera, slices, jitter);
+  if (this->Footprints.empty())
+  {
+    return nullptr;
+  }
+  const int lattice = this->LatticeWithinBudget(frame, static_cast<int>(this->Footprints.size()));
+  frame.Statistics.LatticeResolution = lattice;
+
+  // Shadow map of the casters (skipped when nothing can shadow).
+  const bool shadows = this->ShadowMap.Render(frame, this->ShadowMapEvent);
+  const bool eightBit = p.AccumulationPrecision == vtkLightShaftPass::ACCUMULATE_8BIT;
+  vtkLightShaftShaders::Variant variant = vtkLightShaftShaders::IntegrandVariant(
+    this->GetName(), nullptr, frame.Medium.Phase, shadows, frame.Cookie, frame.Noise);
+  variant.Feature(jitter, "LIGHTSHAFT_JITTER", "jitter");
+  variant.Feature(p.LatticeResolution > 0, "LIGHTSHAFT_LATTICE", "lattice");
+  if (eightBit)
+  {
+    variant.Defines.emplace_back("LIGHTSHAFT_ACCUMULATE_8BIT");
+  }
+  variant.Description += eightBit ? " accumulate=8bit" : FloatAccumulation(p);
+  vtkShaderProgram* program = this->ReadySlabProgram(frame, vtkLightShaftSliceFS, variant);
+  if (!program)
+  {
+    return nullptr;
+  }
+  if (eightBit)
+  {
+    program->SetUniformf(
+      "accumulationScale", static_cast<float>(p.Exposure > 0.0 ? p.Exposure : 1.0));
+  }
+
+  target.Bind();
+  vtkLightShaftSlabDrawer::Slabs slabs;
+  slabs.Footprints = &this->Footprints;
+  slabs.Lattice = lattice;
+  slabs.Start = lit.Nearest;
+  slabs.End = lit.Deepest;
+  slabs.Thickness = (lit.Deepest - lit.Nearest) / slices;
+  slabs.LastSlab = jitter ? slices : slices - 1;
+  slabs.LatticeShift = jitter ? -0.5 : 0.0;
+  slabs.Depth = target.GetDepth();
+  slabs.ShadowMap = shadows ? this->ShadowMap.GetTexture() : nullptr;
+  slabs.ShadowBias = shadows ? frame.Statistics.ShadowBias : 0.0;
+  this->Drawer.Draw(frame, program, slabs);
+  frame.Statistics.SlicesDrawn = static_cast<int>(this->Footprints.size());
+  return eightBit ? this->ResolveEightBit(frame, target) : target.GetAccumulation(0);
+}
+
+//------------------------------------------------------------------------------
+// The 8-bit accumulation (the GDC 2004 trick): the four channels of each colour's RGBA8 buffer
+// hold the partial sums of every fourth slab; add them and undo the display scale.
+vtkTextureObject* vtkLightShaftSlicesMethod::ResolveEightBit(vtkLightShaftFrame& frame,
+  vtkLightShaftInScatterTarget& target)
+{
+  const int lw = frame.Reduced[0];
+  const int lh = frame.Reduced[1];
+  vtkTextureObject* resolved = this->Resolved.Ensure(frame.Window, TextureKind::RGBA32F, lw, lh);
+  vtkLightShaftResources::BindTargets(
+    vtkLightShaftResources::EnsureFramebuffer(this->Framebuffer, frame.Window),
+    { resolved },
+    nullptr,
+    lw,
+    lh);
+  if (vtkShaderProgram* program = this->Resolve.Ready(frame.Window, vtkLightShaftResolveFS))
+  {
+    const char* names[3] = { "accumulatedRed", "accumulatedGreen", "accumulatedBlue" };
+    for (int c = 0; c < 3; ++c)
+    {
+      target.GetAccumulation(c)->Activate();
+      program->SetUniformi(names[c], target.GetAccumulation(c)->GetTextureUnit());
+    }
+    const double exposure = frame.Parameters.Exposure;
+    program->SetUniformf(
+      "inverseScale", static_cast<float>(1.0 / (exposure > 0.0 ? exposure : 1.0)));
+    this->Resolve.Render();
+    for (int c = 0; c < 3; ++c)
+    {
+      target.GetAccumulation(c)->Deactivate();
+    }
+  }
+  return resolved;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftSlicesMethod::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->SlabProgram.Release();
+  this->Resolve.Release(window);
+  this->Resolved.Release(window);
+  vtkLightShaftResources::ReleaseFramebuffer(this->Framebuffer, window);
+}

@@ -1,0 +1,64 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+
+// RAY_MARCH: one slab spans the lit depth range; each pixel marches numberOfSteps segments of
+// its lit interval (shorter towards the light when A falls off), with interleaved sampling over
+// interleaveSize^2 pixel blocks. Features (#defines): LIGHTSHAFT_RAY_MARCH, LIGHTSHAFT_PHASE_HG
+// / _RAYLEIGH (else isotropic), LIGHTSHAFT_SHADOW, LIGHTSHAFT_COOKIE, LIGHTSHAFT_NOISE.
+//VTK::LightShaft::Features
+
+uniform float slabStart; // the lit depth range
+uniform float slabEnd;
+uniform int numberOfSteps;
+uniform int interleaveSize; // M: the pixels of an M x M block march with M^2 offsets
+
+//VTK::LightShaft::Common
+//VTK::LightShaft::Integrand
+//VTK::LightShaft::Segment
+
+void main()
+{
+  vec3 originVC;
+  vec3 dirVC;
+  float b;
+  float h2;
+  float x0;
+  float x1;
+  if (!lightShaftLitInterval(slabStart, slabEnd, originVC, dirVC, b, h2, x0, x1))
+  {
+    discard;
+  }
+  bool constantA = attenuationCoefficients.y == 0.0 && attenuationCoefficients.z == 0.0;
+  float h = max(sqrt(h2), 1e-6 * max(abs(x0), abs(x1)) + 1e-30);
+  float u0 = constantA ? x0 : atan(x0, h);
+  float u1 = constantA ? x1 : atan(x1, h);
+  vec3 radiance = vec3(0.0);
+
+  // Interleaved sampling: the M^2 pixels of a block shift the step boundaries by different
+  // fractions o of a step, so the block together takes M^2 N samples; the gather passes that
+  // follow average the block back. Step j spans [j - 1 + o, j + o] steps, clamped.
+  float offset = 1.0;
+  if (interleaveSize > 1)
+  {
+    ivec2 cellM = ivec2(gl_FragCoord.xy) % interleaveSize;
+    int cellIndex = cellM.y * interleaveSize + cellM.x;
+    // Scatter neighbouring indices across the step: multiplying by cells / 2 + 1 (coprime
+    // with cells for every M) permutes 0 .. M^2 - 1.
+    int cells = interleaveSize * interleaveSize;
+    int scrambled = (cellIndex * (cells / 2 + 1)) % cells;
+    offset = (float(scrambled) + 0.5) / float(cells);
+  }
+  float steps = float(numberOfSteps);
+  float xa = x0;
+  for (int j = 0; j <= numberOfSteps; ++j)
+  {
+    float xb = lightShaftPieceBoundary(u0, u1, (float(j) + offset) / steps, h, constantA);
+    xb = (j == numberOfSteps) ? x1 : min(xb, x1);
+    if (xb > xa)
+    {
+      radiance += lightShaftSegment(originVC, dirVC, b, h2, xa, xb);
+    }
+    xa = max(xa, xb);
+  }
+  gl_FragData[0] = vec4(radiance, 0.0);
+}

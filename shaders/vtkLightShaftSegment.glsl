@@ -1,0 +1,183 @@
+// Shared by the slab fragment shaders of every method (slices, ray march, analytic): the
+// light-space lookups (shadow map, cookie, noise), the in-scattered radiance of one segment of a
+// pixel's view ray, and the pixel's lit interval. Features (#defines): LIGHTSHAFT_SHADOW,
+// LIGHTSHAFT_COOKIE, LIGHTSHAFT_NOISE, LIGHTSHAFT_LATTICE; code for a feature that is off is not
+// compiled.
+#if defined(LIGHTSHAFT_SHADOW) || defined(LIGHTSHAFT_COOKIE) || defined(LIGHTSHAFT_NOISE)
+#define LIGHTSHAFT_LIGHT_SPACE
+#endif
+
+#ifdef LIGHTSHAFT_LATTICE
+// The smooth factors' mean over this slab, evaluated at the lattice's vertices (Chen, Li and
+// Wang) and interpolated; shadow, cookie and noise stay per pixel.
+in vec3 latticeSmooth;
+#endif
+
+#ifdef LIGHTSHAFT_LIGHT_SPACE
+uniform mat4 lightClipFromVC;   // VC -> the light camera's clip coordinates
+uniform vec2 pixelFootprint;    // a pixel's width at view depth z: x * z + y (view units)
+uniform float lightTexelAngle;  // 2 tan(cone half-angle): the light square's width at r = 1
+#endif
+
+#ifdef LIGHTSHAFT_SHADOW
+uniform sampler2D shadowMap;
+uniform vec2 lightDepthRange;   // near, far of the light camera
+uniform float shadowBias;       // relative depth tolerance
+#endif
+
+#ifdef LIGHTSHAFT_COOKIE
+uniform sampler2D cookieTexture;
+uniform float cookieSize;       // texels across the light's square
+#endif
+
+#ifdef LIGHTSHAFT_NOISE
+uniform sampler2D noiseTexture;
+uniform float noiseSize;        // texels across one tile
+uniform float noiseAmplitude;
+uniform float noiseScale;       // tiles across the light's square (layer 1; layer 2 is 1.37x)
+uniform vec4 noiseShift;        // both layers' scroll offsets at the current time, in tiles
+#endif
+
+// integral of dt / (c0 + c1 r + c2 r^2) for x = t + b in [x0, x1], r^2 = h2 + x^2.
+float lightShaftAttenuationIntegral(float x0, float x1, float h2)
+{
+  float c0 = attenuationCoefficients.x;
+  float c1 = attenuationCoefficients.y;
+  float c2 = attenuationCoefficients.z;
+  if (c1 == 0.0)
+  {
+    if (c2 == 0.0)
+    {
+      return (x1 - x0) / c0;
+    }
+    // (atan(s x1) - atan(s x0)) / sqrt(c2 k) with s = sqrt(c2 / k), k = c0 + c2 h^2, written
+    // with atan2 so that it stays accurate as k -> 0 (ray through the light).
+    float k = c0 + c2 * h2;
+    float q = sqrt(c2 * k);
+    float num = q * (x1 - x0);
+    float den = k + c2 * x0 * x1;
+    return (q > 1e-30) ? atan(num, den) / q : (x1 - x0) / den;
+  }
+  // General case: 4-point Gauss-Legendre in the equiangular variable phi, x = h tan(phi),
+  // where dt = r^2 / h dphi keeps the integrand bounded near the light.
+  float h = max(sqrt(h2), 1e-6 * max(abs(x0), abs(x1)) + 1e-30);
+  float phi0 = atan(x0, h);
+  float phi1 = atan(x1, h);
+  float half_ = 0.5 * (phi1 - phi0);
+  float mid = 0.5 * (phi1 + phi0);
+  const vec4 nodes = vec4(-0.8611363116, -0.3399810436, 0.3399810436, 0.8611363116);
+  const vec4 weights = vec4(0.3478548451, 0.6521451549, 0.6521451549, 0.3478548451);
+  float sum = 0.0;
+  for (int i = 0; i < 4; ++i)
+  {
+    float phi = mid + half_ * nodes[i];
+    float r = h / cos(phi);
+    sum += weights[i] * (r * r / h) / (c0 + c1 * r + c2 * r * r);
+  }
+  return sum * half_;
+}
+
+// The in-scattered radiance over the piece x in [x0, x1] of the ray originVC + t dirVC, where
+// x = t + b is measured from the foot of the perpendicular from the light (squared length h2)
+// and the piece lies inside the cone and in front of the surface. Shadow, cookie and noise are
+// looked up once, at the piece's (equiangular) midpoint.
+vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, float x1)
+{
+  // Product rule: the exact integral of A(r) over the segment times the A-weighted mean of the
+  // smooth factors (phase, spot, extinction; lightShaftSmoothMean).
+  float weight = lightShaftAttenuationIntegral(x0, x1, h2);
+  bool constantA = attenuationCoefficients.y == 0.0 && attenuationCoefficients.z == 0.0;
+  float h = max(sqrt(h2), 1e-6 * max(abs(x0), abs(x1)) + 1e-30);
+  float u0 = constantA ? x0 : atan(x0, h);
+  float u1 = constantA ? x1 : atan(x1, h);
+  vec3 sampleVC;
+  float sampleR;
+  float sampleSinTheta;
+#ifdef LIGHTSHAFT_LATTICE
+  vec3 smoothMean = latticeSmooth;
+  lightShaftNode(originVC, dirVC, b, h, constantA, 0.5 * (u0 + u1), sampleVC, sampleR,
+    sampleSinTheta);
+#else
+  vec3 smoothMean = lightShaftSmoothMean(originVC, dirVC, b, h, constantA, u0, u1, sampleVC,
+    sampleR, sampleSinTheta);
+#endif
+
+  // Per-segment light-space factors, once, at the (equiangular) midpoint.
+  float visibility = 1.0;
+  vec3 modulation = vec3(1.0);
+#ifdef LIGHTSHAFT_LIGHT_SPACE
+  vec4 lightClip = lightClipFromVC * vec4(sampleVC, 1.0);
+  vec2 lightNDC = lightClip.xy / max(lightClip.w, 1e-30);
+  vec2 lightUV = 0.5 * lightNDC + 0.5;
+  // The sample stands for a pixel-wide, segment-long footprint: its size in light-square widths
+  // picks the mip level, so cookie and noise are pre-filtered instead of aliasing.
+  float footprint = max(pixelFootprint.x * (-sampleVC.z) + pixelFootprint.y,
+    (x1 - x0) * sampleSinTheta);
+  float footprintInSquares = footprint / max(sampleR * lightTexelAngle, 1e-30);
+#endif
+#ifdef LIGHTSHAFT_SHADOW
+  if (lightClip.w > 0.0 && all(lessThanEqual(abs(lightNDC), vec2(1.0))))
+  {
+    float stored = texture(shadowMap, lightUV).r;
+    if (stored < 1.0)
+    {
+      float n = lightDepthRange.x;
+      float f = lightDepthRange.y;
+      float casterDepth = 2.0 * n * f / ((f + n) - (2.0 * stored - 1.0) * (f - n));
+      visibility = (lightClip.w > casterDepth * (1.0 + shadowBias)) ? 0.0 : 1.0;
+    }
+  }
+#endif
+#ifdef LIGHTSHAFT_COOKIE
+  modulation *= max(textureLod(cookieTexture, lightUV,
+    max(log2(footprintInSquares * cookieSize), 0.0)).rgb, vec3(0.0));
+#endif
+#ifdef LIGHTSHAFT_NOISE
+  float noiseLod = max(log2(footprintInSquares * noiseScale * noiseSize), 0.0);
+  float n1 = textureLod(noiseTexture, lightUV * noiseScale + noiseShift.xy, noiseLod).r;
+  float n2 = textureLod(noiseTexture, lightUV * (1.37 * noiseScale) + noiseShift.zw,
+    noiseLod + 0.45).r;
+  modulation *= 1.0 + noiseAmplitude * (n1 * n2 - 1.0);
+#endif
+
+  return sigmaS * lightRadiantIntensity * modulation * (weight * visibility) * smoothMean;
+}
+
+// Where the pieces of [x0, x1] start and end: uniform in x (constant A) or in the equiangular
+// angle (falling A: the pieces shorten towards the light, where the integrand changes fastest).
+float lightShaftPieceBoundary(float u0, float u1, float fraction, float h, bool constantA)
+{
+  float u = mix(u0, u1, clamp(fraction, 0.0, 1.0));
+  return constantA ? u : h * tan(u);
+}
+
+// The pixel's view ray (origin, unit direction) and the part of it between the view depths
+// [nearDepth, farDepth] that lies inside the cone and in front of the scene surface, as
+// x in [x0, x1] measured from the foot of the perpendicular from the light (b: that foot's ray
+// parameter, h2: its squared distance to the light). False when the part is empty. Working
+// relative to the foot keeps the cone quadratic's coefficients of the size of h, not of the
+// eye-light distance: rays passing next to the apex stay accurate in float.
+bool lightShaftLitInterval(float nearDepth, float farDepth, out vec3 originVC, out vec3 dirVC,
+  out float b, out float h2, out float x0, out float x1)
+{
+  vec2 ndc;
+  lightShaftViewRay(gl_FragCoord.xy, originVC, dirVC, ndc);
+  float tPerDepth = -1.0 / dirVC.z;
+  float ta = nearDepth * tPerDepth;
+  float tb = farDepth * tPerDepth;
+  float depth = texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r;
+  tb = min(tb, lightShaftSurfaceDistance(ndc, depth, dirVC));
+  vec3 m = originVC - lightPositionVC;
+  b = dot(m, dirVC);
+  vec3 foot = m - b * dirVC;
+  h2 = dot(foot, foot);
+  float coneIn;
+  float coneOut;
+  if (!lightShaftConeInterval(foot, dirVC, coneIn, coneOut))
+  {
+    return false;
+  }
+  x0 = max(ta + b, coneIn);
+  x1 = min(tb + b, coneOut);
+  return x1 > x0;
+}
