@@ -1,0 +1,552 @@
+#include "vtkLightShaftRayIntegrator.h"
+
+#include "vtkLight.h"
+#include "vtkLightShaftModel.h"
+#include "vtkLightShaftNoise.h"
+#include "vtkLightShaftPass.h"
+
+#include <algorithm>
+#include <limits>
+#include <utility>
+
+namespace vtkLightShaftRayIntegrator
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+// Gauss-Kronrod 7/15 nodes and weights on [-1, 1].
+constexpr double KronrodNodes[8] = { 0.991455371120812639,
+  0.949107912342758525,
+  0.864864423359769073,
+  0.741531185599394440,
+  0.586087235467691130,
+  0.405845151377397167,
+  0.207784955007898468,
+  0.0 };
+constexpr double KronrodWeights[8] = { 0.022935322010529225,
+  0.063092092629978553,
+  0.104790010322250184,
+  0.140653259715525919,
+  0.169004726639267903,
+  0.190350578064785410,
+  0.204432940075298892,
+  0.209482141084727828 };
+constexpr double GaussWeights[4] = { 0.129484966168869693,
+  0.279705391489276668,
+  0.381830050505118945,
+  0.417959183673469388 };
+
+// Bilinear lookup as GL does it (texel centres at (i + 0.5) / size), clamped or repeated.
+double Lookup(const std::vector<float>& texels,
+  int width,
+  int height,
+  int components,
+  int component,
+  double u,
+  double v,
+  bool repeat)
+{
+  double x = u * width - 0.5;
+  double y = v * height - 0.5;
+  if (!repeat)
+  {
+    x = std::min(std::max(x, 0.0), width - 1.0);
+    y = std::min(std::max(y, 0.0), height - 1.0);
+  }
+  const double fx = std::floor(x);
+  const double fy = std::floor(y);
+  const double ax = x - fx;
+  const double ay = y - fy;
+  auto texel = [&](long i, long j)
+  {
+    if (repeat)
+    {
+      i = ((i % width) + width) % width;
+      j = ((j % height) + height) % height;
+    }
+    else
+    {
+      i = std::min(std::max(i, 0L), static_cast<long>(width) - 1);
+      j = std::min(std::max(j, 0L), static_cast<long>(height) - 1);
+    }
+    return static_cast<double>(
+      texels[(static_cast<size_t>(j) * width + i) * components + component]);
+  };
+  const long i0 = static_cast<long>(fx);
+  const long j0 = static_cast<long>(fy);
+  return (1.0 - ay) * ((1.0 - ax) * texel(i0, j0) + ax * texel(i0 + 1, j0)) +
+         ay * ((1.0 - ax) * texel(i0, j0 + 1) + ax * texel(i0 + 1, j0 + 1));
+}
+
+/**
+ * F(u, v) = int_0^v exp(-u tan xi) d xi (Sun et al. 2005), by adaptive quadrature.
+ */
+double SunF(double u, double v, double tolerance)
+{
+  RGB sum{};
+  RGB error{};
+  Integrate(
+    [u](double xi)
+    {
+      const double value = std::exp(-u * std::tan(xi));
+      return RGB{ value, 0.0, 0.0 };
+    },
+    0.0,
+    v,
+    tolerance,
+    0,
+    sum,
+    error);
+  return sum[0];
+}
+
+Vec ToVec(const glm::dvec3& v)
+{
+  return { v.x, v.y, v.z };
+}
+}
+
+//------------------------------------------------------------------------------
+void Integrate(const std::function<RGB(double)>& f,
+  double a,
+  double b,
+  double relativeTolerance,
+  int depth,
+  RGB& sum,
+  RGB& error)
+{
+  const double half = 0.5 * (b - a);
+  const double centre = 0.5 * (a + b);
+  RGB kronrod{};
+  RGB gauss{};
+  const RGB fc = f(centre);
+  for (int c = 0; c < 3; ++c)
+  {
+    kronrod[c] = KronrodWeights[7] * fc[c];
+    gauss[c] = GaussWeights[3] * fc[c];
+  }
+  for (int i = 0; i < 7; ++i)
+  {
+    const RGB f1 = f(centre - half * KronrodNodes[i]);
+    const RGB f2 = f(centre + half * KronrodNodes[i]);
+    for (int c = 0; c < 3; ++c)
+    {
+      kronrod[c] += KronrodWeights[i] * (f1[c] + f2[c]);
+      if (i % 2 == 1)
+      {
+        gauss[c] += GaussWeights[i / 2] * (f1[c] + f2[c]);
+      }
+    }
+  }
+  bool converged = true;
+  for (int c = 0; c < 3; ++c)
+  {
+    kronrod[c] *= half;
+    gauss[c] *= half;
+    const double e = std::abs(kronrod[c] - gauss[c]);
+    if (e > relativeTolerance * std::abs(kronrod[c]) && e > 1e-300)
+    {
+      converged = false;
+    }
+  }
+  if (converged || depth >= 40)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      sum[c] += kronrod[c];
+      error[c] += std::abs(kronrod[c] - gauss[c]);
+    }
+    return;
+  }
+  Integrate(f, a, centre, relativeTolerance, depth + 1, sum, error);
+  Integrate(f, centre, b, relativeTolerance, depth + 1, sum, error);
+}
+
+//------------------------------------------------------------------------------
+RGB Model::Modulation(const Vec& x) const
+{
+  RGB out{ 1.0, 1.0, 1.0 };
+  if (this->Cookie.empty() && this->Noise.empty())
+  {
+    return out;
+  }
+  const Vec d = x - this->Light;
+  const double depth = Dot(d, this->Axis);
+  if (depth <= 0.0)
+  {
+    return out;
+  }
+  const double u = 0.5 * Dot(d, this->Right) / (depth * this->SquareTangent) + 0.5;
+  const double v = 0.5 * Dot(d, this->Up) / (depth * this->SquareTangent) + 0.5;
+  if (!this->Cookie.empty())
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      out[c] = Lookup(this->Cookie, this->CookieWidth, this->CookieHeight, 3, c, u, v, false);
+    }
+  }
+  if (!this->Noise.empty())
+  {
+    const double s1 = this->NoiseScale;
+    const double s2 = 1.37 * this->NoiseScale;
+    const double n1 = Lookup(this->Noise,
+      this->NoiseWidth,
+      this->NoiseHeight,
+      1,
+      0,
+      u * s1 + this->NoiseShift[0],
+      v * s1 + this->NoiseShift[1],
+      true);
+    const double n2 = Lookup(this->Noise,
+      this->NoiseWidth,
+      this->NoiseHeight,
+      1,
+      0,
+      u * s2 + this->NoiseShift[2],
+      v * s2 + this->NoiseShift[3],
+      true);
+    const double density = 1.0 + this->NoiseAmplitude * (n1 * n2 - 1.0);
+    for (double& channel : out)
+    {
+      channel *= density;
+    }
+  }
+  return out;
+}
+
+double Model::PhaseValue(double cosTheta) const
+{
+  switch (this->Phase)
+  {
+    case vtkLightShaftPass::HENYEY_GREENSTEIN:
+    {
+      const double g = this->Anisotropy;
+      const double denominator = 1.0 + g * g - 2.0 * g * cosTheta;
+      return (1.0 - g * g) / (4.0 * Pi * denominator * std::sqrt(denominator));
+    }
+    case vtkLightShaftPass::RAYLEIGH:
+      return 3.0 / (16.0 * Pi) * (1.0 + cosTheta * cosTheta);
+    default:
+      return 1.0 / (4.0 * Pi);
+  }
+}
+
+bool Model::FallingAttenuation() const
+{
+  return this->Attenuation[1] != 0.0 || this->Attenuation[2] != 0.0;
+}
+
+bool Model::ClosedFormsHold() const
+{
+  return this->Cookie.empty() && this->Noise.empty() && this->Attenuation[0] == 0.0 &&
+         this->Attenuation[1] == 0.0 && this->Attenuation[2] > 0.0 && this->Exponent == 0.0 &&
+         this->Phase == vtkLightShaftPass::ISOTROPIC;
+}
+
+RGB Model::Integrand(const Vec& origin, const Vec& dir, double t) const
+{
+  const Vec x = origin + t * dir;
+  const Vec toPoint = x - this->Light;
+  const double r = Norm(toPoint);
+  RGB out{};
+  if (r <= 0.0)
+  {
+    return out;
+  }
+  const Vec lightDir = (1.0 / r) * toPoint;
+  const double cosAxis = Dot(lightDir, this->Axis);
+  if (cosAxis < this->CosCone)
+  {
+    return out;
+  }
+  const double spot = this->Exponent == 0.0 ? 1.0 : std::pow(cosAxis, this->Exponent);
+  const double a =
+    1.0 / (this->Attenuation[0] + r * (this->Attenuation[1] + this->Attenuation[2] * r));
+  const double scalar = this->PhaseValue(-Dot(dir, lightDir)) * spot * a;
+  const RGB modulation = this->Modulation(x);
+  for (int c = 0; c < 3; ++c)
+  {
+    out[c] = this->SigmaS[c] * this->Intensity[c] * scalar * modulation[c] *
+             std::exp(-this->SigmaT[c] * (r + t));
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+Model MakeModel(vtkLight* light, vtkLightShaftPass* pass)
+{
+  const vtkLightShaftModel::Light described = vtkLightShaftModel::DescribeLight(light);
+  const vtkLightShaftModel::Medium medium =
+    vtkLightShaftModel::DescribeMedium(pass->GetScatteringCoefficient(),
+      pass->GetAbsorptionCoefficient(),
+      pass->GetPhaseFunction(),
+      pass->GetAnisotropy());
+  Model model;
+  model.Light = ToVec(described.Position);
+  model.Axis = ToVec(described.Axis);
+  model.CosCone = std::cos(described.ConeHalfAngle);
+  model.Exponent = described.Exponent;
+  std::copy(described.Attenuation, described.Attenuation + 3, model.Attenuation);
+  for (int c = 0; c < 3; ++c)
+  {
+    model.Intensity[c] = described.RadiantIntensity[c];
+    model.SigmaS[c] = medium.SigmaS[c];
+    model.SigmaT[c] = medium.SigmaT[c];
+  }
+  model.Phase = medium.Phase;
+  model.Anisotropy = medium.Anisotropy;
+  model.Right = ToVec(described.Right);
+  model.Up = ToVec(described.Up);
+  model.SquareTangent = described.SquareTangent;
+
+  if (pass->GetCookie() &&
+      !vtkLightShaftImageToRGB(
+        pass->GetCookie(), model.Cookie, model.CookieWidth, model.CookieHeight))
+  {
+    model.Cookie.clear(); // the pass ignores a cookie without an image too
+  }
+  if (pass->GetNoiseAmplitude() > 0.0)
+  {
+    std::vector<float> rgb;
+    if (pass->GetNoiseTexture() &&
+        vtkLightShaftImageToRGB(pass->GetNoiseTexture(), rgb, model.NoiseWidth, model.NoiseHeight))
+    {
+      model.Noise.resize(static_cast<size_t>(model.NoiseWidth) * model.NoiseHeight);
+      for (size_t i = 0; i < model.Noise.size(); ++i)
+      {
+        model.Noise[i] = rgb[3 * i];
+      }
+      vtkLightShaftNormalizeNoise(model.Noise);
+    }
+    else
+    {
+      model.NoiseWidth = model.NoiseHeight = 256; // the pass's generated noise
+      model.Noise = vtkLightShaftTileableNoise(256, 5, 2004u);
+    }
+    model.NoiseAmplitude = pass->GetNoiseAmplitude();
+    model.NoiseScale = pass->GetNoiseScale();
+    vtkLightShaftModel::NoiseShifts(
+      pass->GetNoiseVelocity1(), pass->GetNoiseVelocity2(), pass->GetTime(), model.NoiseShift);
+  }
+  return model;
+}
+
+//------------------------------------------------------------------------------
+void ConeInterval(const Model& model, const Vec& origin, const Vec& dir, double& t0, double& t1)
+{
+  const Vec m = origin - model.Light;
+  const double b = Dot(m, dir);
+  const Vec foot = m - b * dir; // work from the foot of the perpendicular: x = t + b
+  const double c2 = model.CosCone * model.CosCone;
+  const double da = Dot(dir, model.Axis);
+  const double ma = Dot(foot, model.Axis);
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  if (da > 0.0)
+  {
+    lo = -ma / da;
+  }
+  else if (da < 0.0)
+  {
+    hi = -ma / da;
+  }
+  else if (ma < 0.0)
+  {
+    t0 = 1.0;
+    t1 = 0.0;
+    return;
+  }
+  const double qa = da * da - c2;
+  const double qb = 2.0 * (da * ma - c2 * Dot(dir, foot));
+  const double qc = ma * ma - c2 * Dot(foot, foot);
+  bool empty = false;
+  if (qa == 0.0)
+  {
+    if (qb > 0.0)
+    {
+      lo = std::max(lo, -qc / qb);
+    }
+    else if (qb < 0.0)
+    {
+      hi = std::min(hi, -qc / qb);
+    }
+    else if (qc < 0.0)
+    {
+      empty = true;
+    }
+  }
+  else
+  {
+    const double disc = qb * qb - 4.0 * qa * qc;
+    if (disc < 0.0)
+    {
+      empty = qa < 0.0;
+    }
+    else
+    {
+      const double q = -0.5 * (qb + (qb >= 0.0 ? 1.0 : -1.0) * std::sqrt(disc));
+      const double r1 = q / qa;
+      const double r2 = q != 0.0 ? qc / q : r1;
+      const double tin = std::min(r1, r2);
+      const double tout = std::max(r1, r2);
+      if (qa < 0.0)
+      {
+        lo = std::max(lo, tin);
+        hi = std::min(hi, tout);
+      }
+      else
+      {
+        const bool before = lo <= tin;
+        const bool after = hi >= tout;
+        if (before && !after)
+        {
+          hi = std::min(hi, tin);
+        }
+        else if (after && !before)
+        {
+          lo = std::max(lo, tout);
+        }
+        else if (!before && !after)
+        {
+          empty = true;
+        }
+      }
+    }
+  }
+  if (empty)
+  {
+    t0 = 1.0;
+    t1 = 0.0;
+    return;
+  }
+  t0 = lo - b;
+  t1 = hi - b;
+}
+
+//------------------------------------------------------------------------------
+Result IntegrateRay(const Model& model,
+  const Vec& origin,
+  const Vec& dir,
+  double t0,
+  double t1,
+  const std::function<bool(const Vec&)>& visible,
+  int samples,
+  double tolerance,
+  bool closedForms)
+{
+  // Integration variable: the equiangular angle when A falls off, else t.
+  const Vec m = origin - model.Light;
+  const double b = Dot(m, dir);
+  const double h = std::max(std::sqrt(std::max(Dot(m, m) - b * b, 0.0)), 1e-300);
+  const bool angle = model.FallingAttenuation();
+  auto toU = [&](double t) { return angle ? std::atan2(t + b, h) : t; };
+  auto toT = [&](double u) { return angle ? h * std::tan(u) - b : u; };
+  const double u0 = toU(t0);
+  const double u1 = toU(t1);
+
+  // Lit pieces: visibility sampled, transitions bisected.
+  std::vector<std::pair<double, double>> lit;
+  bool previous = visible(origin + t0 * dir);
+  double start = u0;
+  double uPrevious = u0;
+  for (int k = 1; k <= samples; ++k)
+  {
+    const double u = u0 + (u1 - u0) * k / samples;
+    const bool now = visible(origin + toT(u) * dir);
+    if (now != previous)
+    {
+      double lo = uPrevious;
+      double hi = u;
+      for (int iteration = 0; iteration < 60 && hi - lo > 1e-12 * (std::abs(u1 - u0) + 1e-300);
+           ++iteration)
+      {
+        const double mid = 0.5 * (lo + hi);
+        (visible(origin + toT(mid) * dir) == previous ? lo : hi) = mid;
+      }
+      const double transition = 0.5 * (lo + hi);
+      if (previous)
+      {
+        lit.emplace_back(start, transition);
+      }
+      start = transition;
+      previous = now;
+    }
+    uPrevious = u;
+  }
+  if (previous)
+  {
+    lit.emplace_back(start, u1);
+  }
+
+  RGB sum{};
+  RGB error{};
+  bool usedClosedForm = false;
+  for (const auto& piece : lit)
+  {
+    const double ta = toT(piece.first);
+    const double tb = toT(piece.second);
+    if (closedForms)
+    {
+      const Vec s = model.Light;
+      const Vec toLight = s - origin;
+      const double distance = Norm(toLight);
+      const double cosGamma = Dot(dir, toLight) / distance;
+      const double sinGamma = std::sqrt(std::max(1.0 - cosGamma * cosGamma, 0.0));
+      if (sinGamma > 1e-9)
+      {
+        usedClosedForm = true;
+        const double c2 = model.Attenuation[2];
+        const double x0 = ta + b;
+        const double x1 = tb + b;
+        for (int c = 0; c < 3; ++c)
+        {
+          const double scale = model.SigmaS[c] * model.Intensity[c] / (4.0 * Pi * c2);
+          if (model.SigmaT[c] == 0.0)
+          {
+            // (A): int dt / r^2 = atan2(h (x1 - x0), h^2 + x0 x1) / h.
+            sum[c] += scale * std::atan2(h * (x1 - x0), h * h + x0 * x1) / h;
+          }
+          else
+          {
+            // (B): Sun et al. 2005.
+            const double T = model.SigmaT[c] * distance;
+            const double a1 = T * sinGamma;
+            auto v = [&](double t)
+            { return Pi / 4.0 + 0.5 * std::atan((model.SigmaT[c] * t - T * cosGamma) / a1); };
+            const double a0 =
+              model.SigmaT[c] * std::exp(-T * cosGamma) / (2.0 * Pi * a1) * (4.0 * Pi * scale);
+            sum[c] += a0 * (SunF(a1, v(tb), tolerance) - SunF(a1, v(ta), tolerance));
+          }
+        }
+        continue;
+      }
+    }
+    Integrate(
+      [&](double u)
+      {
+        RGB value = model.Integrand(origin, dir, toT(u));
+        if (angle)
+        {
+          const double jacobian = h / (std::cos(u) * std::cos(u));
+          for (double& channel : value)
+          {
+            channel *= jacobian;
+          }
+        }
+        return value;
+      },
+      piece.first,
+      piece.second,
+      tolerance,
+      0,
+      sum,
+      error);
+  }
+  Result result;
+  result.Radiance = sum;
+  result.Error = error;
+  result.ClosedForm = usedClosedForm;
+  return result;
+}
+}

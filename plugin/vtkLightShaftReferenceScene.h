@@ -1,0 +1,92 @@
+/**
+ * @file   vtkLightShaftReferenceScene.h
+ * @brief  vtkLightShaftReference's scene: surfaces and visibility, exact or from the pass's
+ *         shadow map (private, not installed).
+ */
+
+#ifndef vtkLightShaftReferenceScene_h
+#define vtkLightShaftReferenceScene_h
+
+#include "vtkLightShaftRayIntegrator.h" // For Vec
+#include "vtkNew.h"                     // For the shadow map's copies
+#include "vtkSmartPointer.h"            // For the meshes and locators
+
+#include <vector> // For the occluders and locators
+
+class vtkGenericCell;
+class vtkImageData;
+class vtkLightShaftPass;
+class vtkMatrix4x4;
+class vtkModifiedBSPTree;
+class vtkPolyData;
+class vtkRenderer;
+
+/**
+ * @class   vtkLightShaftReferenceScene
+ * @brief   The opaque polygonal props of a renderer in world coordinates (one triangle mesh and
+ *          bounding box per actor), for the reference's surfaces and exact shadows; or the
+ *          pass's last shadow map, looked up as the pass looks it up.
+ *
+ * Queries go through a Tracer, one per thread: VTK 9.1's vtkModifiedBSPTree keeps a scratch
+ * cell per tree (shared trees gave non-deterministic results across threads).
+ */
+class vtkLightShaftReferenceScene
+{
+public:
+  using Vec = vtkLightShaftRayIntegrator::Vec;
+
+  vtkLightShaftReferenceScene();
+  ~vtkLightShaftReferenceScene();
+
+  /// Capture `renderer`'s visible, opaque actors with polygonal input.
+  void Capture(vtkRenderer* renderer);
+
+  /// Decide visibility with `pass`'s last shadow map (nearest texel, its bias) instead of the
+  /// exact rays; false when the pass rendered no shadow map in its last frame.
+  bool UseShadowMap(vtkLightShaftPass* pass);
+
+  /**
+   * The scene's queries for one thread.
+   */
+  class Tracer
+  {
+  public:
+    explicit Tracer(const vtkLightShaftReferenceScene& scene);
+    ~Tracer();
+
+    /// The nearest hit of the segment from -> to, as a fraction of it; false when none.
+    bool FirstHit(const Vec& from, const Vec& to, double& nearest);
+    /// Whether x sees `light`.
+    bool Visible(const Vec& x, const Vec& light);
+
+  private:
+    const vtkLightShaftReferenceScene& Scene;
+    std::vector<vtkSmartPointer<vtkModifiedBSPTree>> Locators;
+    vtkSmartPointer<vtkGenericCell> Cell;
+  };
+
+private:
+  vtkLightShaftReferenceScene(const vtkLightShaftReferenceScene&) = delete;
+  void operator=(const vtkLightShaftReferenceScene&) = delete;
+
+  bool ShadowMapVisible(const Vec& x) const;
+
+  struct Occluder
+  {
+    vtkSmartPointer<vtkPolyData> Mesh;
+    double Bounds[6];
+  };
+  std::vector<Occluder> Occluders;
+
+  // The shadow map, when visibility comes from it.
+  bool ShadowMap = false;
+  vtkNew<vtkImageData> ShadowDepths;
+  vtkNew<vtkMatrix4x4> WorldToLightClip;
+  int ShadowSize = 0;
+  const float* ShadowTexels = nullptr;
+  double LightNear = 0.0;
+  double LightFar = 0.0;
+  double ShadowBias = 0.0;
+};
+
+#endif
