@@ -48,12 +48,8 @@ vtkTextureObject* vtkLightShaftAnalyticMethod::RenderUnshadowed(vtkLightShaftFra
   program->SetUniformf("maximumSigmaT", static_cast<float>(frame.Medium.MaximumSigmaT()));
 
   target.Bind();
-  vtkLightShaftSlabDrawer::Slabs slabs;
-  slabs.Footprints = &this->Footprints;
-  slabs.Start = lit.Nearest;
-  slabs.End = lit.Deepest;
-  slabs.Thickness = lit.Deepest - lit.Nearest;
-  slabs.Depth = target.GetDepth();
+  vtkLightShaftSlabDrawer::Slabs slabs =
+    vtkLightShaftSlabDrawer::Slabs::Over(lit, this->Footprints, target.GetDepth());
   this->Drawer.Draw(frame, program, slabs);
   frame.Statistics.SlicesDrawn = static_cast<int>(this->Footprints.size());
   return target.GetAccumulation(0);

@@ -27,33 +27,35 @@ class vtkRenderState;
 class vtkTextureObject;
 
 /**
- * The pass's parameters for one frame (the presets and setters already applied, clamped).
+ * The pass's parameters for one frame (the presets and setters already applied, clamped),
+ * copied from the pass when the frame starts: the pass's header holds their defaults and
+ * ranges, nothing here does.
  */
 struct vtkLightShaftParameters
 {
-  int Method = 0;
-  double Exposure = 1.0;
-  bool AttenuateScene = true;
-  int NumberOfSlices = 64;
-  bool AutomaticSliceCount = false;
-  int MaximumNumberOfSlices = 512;
-  bool Jitter = true;
-  int LatticeResolution = 0;
-  int ShadowMapSize = 1024;
-  int BlurRadius = 2;
-  int DownsampleFactor = 1;
-  int AccumulationPrecision = 0;
-  double NoiseAmplitude = 0.0;
-  double NoiseScale = 3.0;
-  double NoiseShift[4] = { 0.0, 0.0, 0.0, 0.0 }; ///< vtkLightShaftModel::NoiseShifts at Time
-  int NumberOfSteps = 16;
-  int InterleaveSize = 2;
-  int RadialSamples = 64;
-  double Decay = 1.0;
-  double Density = 1.0;
-  double Weight = 1.0;
-  bool RadialJitter = true;
-  double RadialGuardBand = 1.0;
+  int Method{};
+  double Exposure{};
+  bool AttenuateScene{};
+  int NumberOfSlices{};
+  bool AutomaticSliceCount{};
+  int MaximumNumberOfSlices{};
+  bool Jitter{};
+  int LatticeResolution{};
+  int ShadowMapSize{};
+  int BlurRadius{};
+  int DownsampleFactor{};
+  int AccumulationPrecision{};
+  double NoiseAmplitude{};
+  double NoiseScale{};
+  double NoiseShift[4]{}; ///< vtkLightShaftModel::NoiseShifts at Time
+  int NumberOfSteps{};
+  int InterleaveSize{};
+  int RadialSamples{};
+  double Decay{};
+  double Density{};
+  double Weight{};
+  bool RadialJitter{};
+  double RadialGuardBand{};
   const double* ShadowCasterBounds = nullptr; ///< set for distributed rendering, else nullptr
 };
 

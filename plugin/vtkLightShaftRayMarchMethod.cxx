@@ -49,12 +49,8 @@ vtkTextureObject* vtkLightShaftRayMarchMethod::Render(vtkLightShaftFrame& frame,
   program->SetUniformi("interleaveSize", p.InterleaveSize);
 
   target.Bind();
-  vtkLightShaftSlabDrawer::Slabs slabs;
-  slabs.Footprints = &this->Footprints;
-  slabs.Start = lit.Nearest;
-  slabs.End = lit.Deepest;
-  slabs.Thickness = lit.Deepest - lit.Nearest;
-  slabs.Depth = target.GetDepth();
+  vtkLightShaftSlabDrawer::Slabs slabs =
+    vtkLightShaftSlabDrawer::Slabs::Over(lit, this->Footprints, target.GetDepth());
   slabs.ShadowMap = shadows ? this->ShadowMap.GetTexture() : nullptr;
   slabs.ShadowBias = shadows ? frame.Statistics.ShadowBias : 0.0;
   this->Drawer.Draw(frame, program, slabs);

@@ -16,6 +16,23 @@ vtkLightShaftSlabDrawer::vtkLightShaftSlabDrawer() = default;
 vtkLightShaftSlabDrawer::~vtkLightShaftSlabDrawer() = default;
 
 //------------------------------------------------------------------------------
+vtkLightShaftSlabDrawer::Slabs vtkLightShaftSlabDrawer::Slabs::Over(
+  const vtkLightShaftGeometry::LitVolume& lit,
+  const std::vector<vtkLightShaftGeometry::SlabFootprint>& footprints,
+  vtkTextureObject* depth,
+  int count)
+{
+  Slabs slabs;
+  slabs.Footprints = &footprints;
+  slabs.Start = lit.Nearest;
+  slabs.End = lit.Deepest;
+  slabs.Thickness = (lit.Deepest - lit.Nearest) / count;
+  slabs.LastSlab = count - 1;
+  slabs.Depth = depth;
+  return slabs;
+}
+
+//------------------------------------------------------------------------------
 void vtkLightShaftSlabDrawer::SetUniforms(vtkLightShaftFrame& frame,
   vtkShaderProgram* program,
   const Slabs& slabs)

@@ -51,6 +51,13 @@ public:
     vtkTextureObject* Depth = nullptr;     ///< the depth the shafts read
     vtkTextureObject* ShadowMap = nullptr; ///< nullptr: no shadow lookup
     double ShadowBias = 0.0;
+
+    /// `count` slabs of equal thickness over the lit volume's depth range, drawn as
+    /// `footprints`, reading the depth `depth`.
+    static Slabs Over(const vtkLightShaftGeometry::LitVolume& lit,
+      const std::vector<vtkLightShaftGeometry::SlabFootprint>& footprints,
+      vtkTextureObject* depth,
+      int count = 1);
   };
 
   vtkLightShaftSlabDrawer();

@@ -123,15 +123,11 @@ vtkTextureObject* vtkLightShaftSlicesMethod::Render(vtkLightShaftFrame& frame,
   }
 
   target.Bind();
-  vtkLightShaftSlabDrawer::Slabs slabs;
-  slabs.Footprints = &this->Footprints;
+  vtkLightShaftSlabDrawer::Slabs slabs =
+    vtkLightShaftSlabDrawer::Slabs::Over(lit, this->Footprints, target.GetDepth(), slices);
   slabs.Lattice = lattice;
-  slabs.Start = lit.Nearest;
-  slabs.End = lit.Deepest;
-  slabs.Thickness = (lit.Deepest - lit.Nearest) / slices;
-  slabs.LastSlab = jitter ? slices : slices - 1;
+  slabs.LastSlab = jitter ? slices : slices - 1; // with jitter, one more slab
   slabs.LatticeShift = jitter ? -0.5 : 0.0;
-  slabs.Depth = target.GetDepth();
   slabs.ShadowMap = shadows ? this->ShadowMap.GetTexture() : nullptr;
   slabs.ShadowBias = shadows ? frame.Statistics.ShadowBias : 0.0;
   this->Drawer.Draw(frame, program, slabs);
