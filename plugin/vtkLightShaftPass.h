@@ -439,23 +439,46 @@ public:
 
   ///@{
   /**
-   * RADIAL_BLUR controls, after GPU Gems 3 ch. 13: RadialSamples taken from each pixel
-   * towards the light's screen position, in [1, 1024] (default 64); Decay, the factor by which
-   * each farther sample's influence falls, in [0, 1] (default 1: all equal); Density, the
-   * fraction of the way to the light the samples cover, in [0, 1] (default 1); Weight, how
-   * strongly the blurred occlusion darkens the shafts, in [0, 1] (default 1; 0 gives the
-   * unshadowed ANALYTIC image). The chapter's Exposure is the shared Exposure. Non-finite
-   * values are refused. RadialJitter offsets each pixel's samples by its own fraction of a
-   * step (stochastic sampling: banding becomes noise); default is on.
+   * RADIAL_BLUR (after GPU Gems 3 ch. 13): samples taken from each pixel towards the light's
+   * screen position, in [1, 1024]. Default is 64.
    */
   vtkSetClampMacro(RadialSamples, int, 1, 1024);
   vtkGetMacro(RadialSamples, int);
+  ///@}
+
+  ///@{
+  /**
+   * RADIAL_BLUR: the factor by which each farther sample's influence falls, in [0, 1] (1: all
+   * equal). Non-finite values are refused. Default is 1.
+   */
   void SetDecay(double decay);
   vtkGetMacro(Decay, double);
+  ///@}
+
+  ///@{
+  /**
+   * RADIAL_BLUR: the fraction of the way to the light the samples cover, in [0, 1]. Non-finite
+   * values are refused. Default is 1.
+   */
   void SetDensity(double density);
   vtkGetMacro(Density, double);
+  ///@}
+
+  ///@{
+  /**
+   * RADIAL_BLUR: how strongly the blurred occlusion darkens the shafts, in [0, 1] (0 gives the
+   * unshadowed ANALYTIC image). The chapter's Exposure is the shared Exposure. Non-finite
+   * values are refused. Default is 1.
+   */
   void SetWeight(double weight);
   vtkGetMacro(Weight, double);
+  ///@}
+
+  ///@{
+  /**
+   * RADIAL_BLUR: offset each pixel's samples by its own fraction of a step (stochastic
+   * sampling: banding becomes noise). Default is on.
+   */
   vtkSetMacro(RadialJitter, bool);
   vtkGetMacro(RadialJitter, bool);
   vtkBooleanMacro(RadialJitter, bool);
@@ -475,8 +498,6 @@ public:
    */
   void SetRadialGuardBand(double extent);
   vtkGetMacro(RadialGuardBand, double);
-  /// The guard band the last RADIAL_BLUR frame used (0 when none ran).
-  vtkGetMacro(LastRadialGuardBand, double);
   ///@}
 
   ///@{
@@ -520,56 +541,61 @@ public:
 
   ///@{
   /**
-   * What the last frame did, for tests and tuning: slabs drawn (0 when the shafts were skipped),
-   * whether a shadow map was rendered, the clipped view-depth range the slabs spanned, and the
-   * viewport size.
+   * What the last frame did, for tests and tuning.
    */
-  vtkGetMacro(LastNumberOfSlicesDrawn, int);
-  vtkGetMacro(LastShadowMapRendered, bool);
-  /// The method the last frame used (AUTOMATIC resolved; -1 when no shafts were computed).
+  /// The method it used (AUTOMATIC resolved; -1 when no shafts were computed).
   vtkGetMacro(LastMethod, int);
-  /// Full-screen-sized passes the last frame ran after the slabs/march (gather, blur, etc.).
-  vtkGetMacro(LastNumberOfPostPasses, int);
-  /// The lattice resolution the last frame's slabs used: LatticeResolution, or less when that
-  /// would exceed the per-frame budget of 2^21 lattice cells (0: no lattice).
-  vtkGetMacro(LastLatticeResolution, int);
-  /// Draw calls the last frame's slabs took (they are drawn in batches of bounded size).
-  vtkGetMacro(LastNumberOfSlabBatches, int);
-  /// Samples per pixel the last frame rendered the scene with: those of the target the pass
-  /// draws into (the window's MultiSamples), 0 when it is not multisampled.
-  vtkGetMacro(LastMultiSamples, int);
-  /// True when the last render drew only the plain scene, exactly as without the pass: the
-  /// renderer was rendering for a hardware selector (picking, selection), for an enclosing
-  /// pass that renders the props with its own shaders (a shadow-map baker, a value pass) or by
-  /// their keys, or into a target without colour; the shafts come back on the next frame.
-  vtkGetMacro(LastPlainScene, bool);
+  /// Slabs drawn (0 when the shafts were skipped), and the clipped view-depth range they span.
+  vtkGetMacro(LastNumberOfSlicesDrawn, int);
   vtkGetVector2Macro(LastSliceDepthRange, double);
+  /// Draw calls the slabs took (they are drawn in batches of bounded size).
+  vtkGetMacro(LastNumberOfSlabBatches, int);
+  /// The lattice resolution the slabs used: LatticeResolution, or less when that would exceed
+  /// the per-frame budget of 2^21 lattice cells (0: no lattice).
+  vtkGetMacro(LastLatticeResolution, int);
+  /// Full-screen-sized passes run after the slabs/march (gather, blur, guard band, ...).
+  vtkGetMacro(LastNumberOfPostPasses, int);
+  /// The guard band RADIAL_BLUR used (0 when it did not run).
+  vtkGetMacro(LastRadialGuardBand, double);
+  /// How many times the scene was rendered (2 with a cookie: with and without the spotlight).
+  vtkGetMacro(LastNumberOfSceneRenders, int);
+  /// Samples per pixel the scene was rendered with: those of the target the pass draws into
+  /// (the window's MultiSamples), 0 when it is not multisampled.
+  vtkGetMacro(LastMultiSamples, int);
+  /// True when the render drew only the plain scene, exactly as without the pass: the renderer
+  /// was rendering for a hardware selector (picking, selection), for an enclosing pass that
+  /// renders the props with its own shaders (a shadow-map baker, a value pass) or by their
+  /// keys, or into a target without colour; the shafts come back on the next frame.
+  vtkGetMacro(LastPlainScene, bool);
+  /// The viewport's size in pixels.
   vtkGetVector2Macro(LastViewportSize, int);
-  ///@}
-
-  /**
-   * Number of OpenGL errors raised while the last frame rendered (the pass, its delegate and
-   * its internal passes); 0 when all is well. Errors pending before the frame are not counted.
-   */
+  /// OpenGL errors raised while the frame rendered (the pass, its delegate and its internal
+  /// passes); 0 when all is well. Errors pending before the frame are not counted.
   vtkGetMacro(LastGLErrorCount, int);
+  /// The features compiled into the slab shader (e.g. "method=slices phase=isotropic shadow
+  /// cookie noise jitter accumulate=float32"), and that shader's fragment source.
+  const char* GetLastShaderVariant();
+  const char* GetLastSliceShaderSource();
+  ///@}
 
   ///@{
   /**
-   * More of what the last frame did: the props rendered into the shadow map (those whose bounds
-   * reach into the light's volume), how many times the scene was rendered (2 with a cookie:
-   * with and without the spotlight), the features compiled into the slab shader (e.g.
-   * "phase=isotropic shadow cookie noise jitter accumulate=float32"), and that shader's
-   * fragment source.
+   * The last frame's shadow map: whether one was rendered, from how many casters (the props
+   * whose bounds reach into the light's volume), the light camera's near and far distances,
+   * and the relative depth tolerance of its lookup (lit when w <= stored depth * (1 + bias),
+   * nearest texel). The depth range and bias are those of the last map rendered.
    */
+  vtkGetMacro(LastShadowMapRendered, bool);
   vtkGetMacro(LastNumberOfShadowCasters, int);
+  vtkGetVector2Macro(LastLightDepthRange, double);
+  vtkGetMacro(LastShadowBias, double);
+  ///@}
 
   /**
    * The last frame's shadow map, for a reference that uses the same visibility
    * (vtkLightShaftReference::SetVisibilityModeToShadowMap): `depths` gets the depth-buffer
    * values (float, N x N, 1 = nothing), `worldToLightClip` the light camera's world-to-clip
-   * matrix; GetLastLightDepthRange() and GetLastShadowBias() give its near/far and the relative
-   * depth tolerance of the lookup (lit when w <= stored depth * (1 + bias), nearest texel).
-   * Returns false when the last frame rendered no shadow map.
+   * matrix. Returns false when the last frame rendered no shadow map.
    */
   bool GetLastShadowMap(vtkImageData* depths, vtkMatrix4x4* worldToLightClip);
 
@@ -578,12 +604,6 @@ public:
    * ShadowMapRenderedEvent is being handled; nullptr at any other time.
    */
   vtkTextureObject* GetShadowMapTexture();
-  vtkGetVector2Macro(LastLightDepthRange, double);
-  vtkGetMacro(LastShadowBias, double);
-  vtkGetMacro(LastNumberOfSceneRenders, int);
-  const char* GetLastShaderVariant();
-  const char* GetLastSliceShaderSource();
-  ///@}
 
 protected:
   vtkLightShaftPass();

@@ -34,15 +34,16 @@ public:
   // The additional lights, in the order the Light Inspector added them.
   std::vector<vtkWeakPointer<vtkLight>> Lights;
 
-  // Sampling as set (the preset, when one is chosen, overrides these in the pass).
-  int NumberOfSlices = 64;
-  int ShadowMapSize = 1024;
-  bool AutomaticSliceCount = false;
-  int MaximumNumberOfSlices = 512;
-  bool Jitter = true;
-  int BlurRadius = 2;
-  int DownsampleFactor = 1;
-  int AccumulationPrecision = vtkLightShaftPass::ACCUMULATE_FLOAT32;
+  // Sampling as set (the preset, when one is chosen, overrides these in the pass); they start
+  // at the pass's own defaults.
+  int NumberOfSlices = this->Shafts->GetNumberOfSlices();
+  int ShadowMapSize = this->Shafts->GetShadowMapSize();
+  bool AutomaticSliceCount = this->Shafts->GetAutomaticSliceCount();
+  int MaximumNumberOfSlices = this->Shafts->GetMaximumNumberOfSlices();
+  bool Jitter = this->Shafts->GetJitter();
+  int BlurRadius = this->Shafts->GetBlurRadius();
+  int DownsampleFactor = this->Shafts->GetDownsampleFactor();
+  int AccumulationPrecision = this->Shafts->GetAccumulationPrecision();
 
   std::string CookieFileName;
   double ViewTime = 0.0;

@@ -1,0 +1,193 @@
+"""One source for the parameters' defaults and ranges: vtkLightShaftPass itself.
+
+The pass's header declares each parameter's default and clamp; the ParaView XML, the header's
+own documentation and the README's parameter table are checked against what the pass does (a
+fresh pass's values, and the range read by setting values far outside it), so that none of
+them can drift.
+"""
+
+import math
+import os
+import re
+import xml.etree.ElementTree as ElementTree
+
+import pytest
+
+from lightshafts import vtkLightShaftPass
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+INTEGER_PROBE = 2 ** 31 - 1
+FLOAT_PROBE = 1e300
+
+# ParaView property name -> the pass's parameter, where they differ.
+PARAVIEW_NAMES = {"ShaftExposure": "Exposure", "ShaftMethod": "Method", "ShaftJitter": "Jitter",
+                  "ShaftBlurRadius": "BlurRadius", "ShaftDownsampleFactor": "DownsampleFactor",
+                  "ShaftTime": "Time"}
+
+
+def default(name):
+    value = getattr(vtkLightShaftPass(), "Get" + name)()
+    return tuple(value) if isinstance(value, tuple) else (value,)
+
+
+def clamp_range(name, integer):
+    """(low, high) of the first component, from setting values far outside the range."""
+    shafts = vtkLightShaftPass()
+    setter, getter = getattr(shafts, "Set" + name), getattr(shafts, "Get" + name)
+    n = len(default(name))
+    probe = INTEGER_PROBE if integer else FLOAT_PROBE
+    setter(*([-probe] * n))
+    low = getter()
+    setter(*([probe] * n))
+    high = getter()
+    first = (lambda v: v[0] if isinstance(v, tuple) else v)
+    return first(low), first(high)
+
+
+def close(a, b):
+    return math.isclose(float(a), float(b), rel_tol=1e-12, abs_tol=1e-12)
+
+
+def paraview_properties():
+    """(pass parameter, kind, defaults, domain min, domain max, enumeration values) of every
+    property of LightShaftsRenderView that is one of the pass's parameters."""
+    tree = ElementTree.parse(os.path.join(ROOT, "paraview", "plugin", "LightShafts.xml"))
+    view = tree.getroot().find(".//RenderViewProxy[@name='LightShaftsRenderView']")
+    shafts = vtkLightShaftPass()
+    rows = []
+    for prop in view:
+        if prop.tag not in ("IntVectorProperty", "DoubleVectorProperty"):
+            continue
+        name = PARAVIEW_NAMES.get(prop.get("name"), prop.get("name"))
+        if not hasattr(shafts, "Get" + name) or not hasattr(shafts, "Set" + name):
+            continue
+        defaults = tuple(float(v) for v in prop.get("default_values").split())
+        domain = prop.find("IntRangeDomain")
+        if domain is None:
+            domain = prop.find("DoubleRangeDomain")
+        low = high = None
+        if domain is not None:
+            low = float(domain.get("min").split()[0])
+            high = float(domain.get("max").split()[0])
+        entries = [int(e.get("value")) for e in prop.findall("EnumerationDomain/Entry")]
+        rows.append((name, prop.tag, defaults, low, high, entries))
+    return rows
+
+
+PARAVIEW = paraview_properties()
+
+
+def test_the_paraview_view_exposes_the_pass_parameters():
+    assert len(PARAVIEW) >= 29
+
+
+@pytest.mark.parametrize("name,kind,defaults,low,high,entries", PARAVIEW,
+                         ids=[row[0] for row in PARAVIEW])
+def test_paraview_defaults_and_ranges_are_the_pass(name, kind, defaults, low, high, entries):
+    expected = default(name)
+    assert len(defaults) == len(expected)
+    assert all(close(a, float(b)) for a, b in zip(defaults, expected)), (defaults, expected)
+    integer = kind == "IntVectorProperty"
+    if low is not None:
+        assert (low, high) == pytest.approx(clamp_range(name, integer))
+    if entries and name != "DownsampleFactor":
+        assert (min(entries), max(entries)) == clamp_range(name, integer)
+    if name == "DownsampleFactor":
+        assert entries == [1, 2, 4]
+
+
+def header_groups():
+    """The documented groups (///@{ ... ///@}) of the pass's header: (comment, code)."""
+    with open(os.path.join(ROOT, "plugin", "vtkLightShaftPass.h")) as f:
+        text = f.read()
+    return re.findall(r"///@\{\s*/\*\*(.*?)\*/(.*?)///@\}", text, re.S)
+
+
+def header_defaults():
+    """{parameter: the number the header's documentation gives as its default}."""
+    found = {}
+    for comment, code in header_groups():
+        match = re.search(r"Defaults? (?:is|are) \(?(-?[0-9.e+-]+|on|off|[A-Z_0-9]+\b)",
+                          comment.replace("\n", " "))
+        setters = re.findall(r"vtkSet(?:Clamp)?Macro\((\w+),|void Set(\w+)\(", code)
+        names = [a or b for a, b in setters]
+        if match and names:
+            word = match.group(1).rstrip(".")
+            if word in ("on", "off"):
+                found[names[0]] = float(word == "on")
+            elif re.fullmatch(r"[A-Z_0-9]+", word) and hasattr(vtkLightShaftPass, word):
+                found[names[0]] = float(getattr(vtkLightShaftPass, word))
+            elif re.fullmatch(r"-?[0-9.e+-]+", word):
+                found[names[0]] = float(word)
+    return found
+
+
+HEADER = header_defaults()
+
+
+def test_the_header_documents_the_defaults():
+    assert len(HEADER) >= 25
+
+
+@pytest.mark.parametrize("name", sorted(HEADER))
+def test_header_documented_default_is_the_pass(name):
+    assert close(HEADER[name], default(name)[0])
+
+
+def header_clamps():
+    with open(os.path.join(ROOT, "plugin", "vtkLightShaftPass.h")) as f:
+        text = f.read()
+    return re.findall(r"vtkSetClampMacro\((\w+), (\w+), (\w+), (\w+)\);", text)
+
+
+@pytest.mark.parametrize("name,kind,low,high", header_clamps(), ids=lambda v: str(v))
+def test_header_clamps_are_the_documented_ranges(name, kind, low, high):
+    value = (lambda v: getattr(vtkLightShaftPass, v) if v.isidentifier() else float(v))
+    assert clamp_range(name, kind == "int") == (value(low), value(high))
+    # The group's comment states that range.
+    for comment, code in header_groups():
+        if f"vtkSetClampMacro({name}," in code and re.search(r"in \[", comment):
+            stated = re.search(r"in \[(-?[0-9.e+-]+), (-?[0-9.e+-]+)\]", comment)
+            assert stated, name
+            assert (float(stated.group(1)), float(stated.group(2))) == \
+                (float(value(low)), float(value(high)))
+
+
+def readme_rows():
+    """(setters, range text, default text) of the README's parameter table."""
+    with open(os.path.join(ROOT, "README.md")) as f:
+        text = f.read()
+    table = text[text.index("| parameter | unit / range | default | meaning |"):]
+    table = table[:table.index("\n\n")]
+    rows = []
+    for line in table.splitlines()[2:]:
+        cells = [c.strip() for c in line.strip("|").split("|")]
+        setters = re.findall(r"`Set(\w+)\(", cells[0])
+        rows.append((setters, cells[1], cells[2]))
+    return rows
+
+
+def test_readme_ranges_and_defaults_are_the_pass():
+    checked = 0
+    for setters, range_text, default_text in readme_rows():
+        range_text = range_text.replace("\u2212", "-")
+        interval = re.search(r"\[(-?[0-9.e+-]+), (-?[0-9.e+-]+)\]", range_text)
+        defaults = [d.strip() for d in default_text.split("(")[0].split(",")]
+        for i, name in enumerate(setters):
+            if not hasattr(vtkLightShaftPass(), "Get" + name):
+                continue
+            integer = isinstance(default(name)[0], (int, bool)) and not isinstance(
+                default(name)[0], float)
+            if interval:
+                low, high = clamp_range(name, integer)
+                assert (float(interval.group(1)), float(interval.group(2))) == \
+                    (float(low), float(high)), name
+                checked += 1
+            text = defaults[min(i, len(defaults) - 1)].replace("\u2212", "-")
+            if re.fullmatch(r"-?[0-9.e+-]+", text):
+                assert close(float(text), default(name)[0]), (name, text)
+                checked += 1
+            elif text in ("on", "off"):
+                assert bool(default(name)[0]) == (text == "on"), name
+                checked += 1
+    assert checked >= 30
