@@ -18,20 +18,12 @@ uniform int interleaveSize; // M: the pixels of an M x M block march with M^2 of
 
 void main()
 {
-  vec3 originVC;
-  vec3 dirVC;
-  float b;
-  float h2;
-  float x0;
-  float x1;
-  if (!lightShaftLitInterval(slabStart, slabEnd, originVC, dirVC, b, h2, x0, x1))
+  LightShaftRay ray;
+  if (!lightShaftLitInterval(slabStart, slabEnd, ray))
   {
     discard;
   }
-  bool constantA = attenuationCoefficients.y == 0.0 && attenuationCoefficients.z == 0.0;
-  float h = max(sqrt(h2), 1e-6 * max(abs(x0), abs(x1)) + 1e-30);
-  float u0 = constantA ? x0 : atan(x0, h);
-  float u1 = constantA ? x1 : atan(x1, h);
+  LightShaftVariable u = lightShaftVariable(ray);
   vec3 radiance = vec3(0.0);
 
   // Interleaved sampling: the M^2 pixels of a block shift the step boundaries by different
@@ -49,14 +41,14 @@ void main()
     offset = (float(scrambled) + 0.5) / float(cells);
   }
   float steps = float(numberOfSteps);
-  float xa = x0;
+  float xa = ray.x0;
   for (int j = 0; j <= numberOfSteps; ++j)
   {
-    float xb = lightShaftPieceBoundary(u0, u1, (float(j) + offset) / steps, h, constantA);
-    xb = (j == numberOfSteps) ? x1 : min(xb, x1);
+    float xb = lightShaftPieceBoundary(u.u0, u.u1, (float(j) + offset) / steps, u.h, u.constantA);
+    xb = (j == numberOfSteps) ? ray.x1 : min(xb, ray.x1);
     if (xb > xa)
     {
-      radiance += lightShaftSegment(originVC, dirVC, b, h2, xa, xb);
+      radiance += lightShaftSegment(ray.originVC, ray.dirVC, ray.b, ray.h2, xa, xb);
     }
     xa = max(xa, xb);
   }

@@ -151,33 +151,63 @@ float lightShaftPieceBoundary(float u0, float u1, float fraction, float h, bool 
   return constantA ? u : h * tan(u);
 }
 
-// The pixel's view ray (origin, unit direction) and the part of it between the view depths
-// [nearDepth, farDepth] that lies inside the cone and in front of the scene surface, as
-// x in [x0, x1] measured from the foot of the perpendicular from the light (b: that foot's ray
-// parameter, h2: its squared distance to the light). False when the part is empty. Working
-// relative to the foot keeps the cone quadratic's coefficients of the size of h, not of the
-// eye-light distance: rays passing next to the apex stay accurate in float.
-bool lightShaftLitInterval(float nearDepth, float farDepth, out vec3 originVC, out vec3 dirVC,
-  out float b, out float h2, out float x0, out float x1)
+// A pixel's view ray (origin, unit direction) and its lit part: x in [x0, x1], measured from
+// the foot of the perpendicular from the light (b: that foot's ray parameter, h2: its squared
+// distance to the light). Working relative to the foot keeps the cone quadratic's
+// coefficients of the size of h, not of the eye-light distance: rays passing next to the apex
+// stay accurate in float.
+struct LightShaftRay
+{
+  vec3 originVC;
+  vec3 dirVC;
+  float b;
+  float h2;
+  float x0;
+  float x1;
+};
+
+// The pixel's ray and the part of it between the view depths [nearDepth, farDepth] that lies
+// inside the cone and in front of the scene surface; false when that part is empty.
+bool lightShaftLitInterval(float nearDepth, float farDepth, out LightShaftRay ray)
 {
   vec2 ndc;
-  lightShaftViewRay(gl_FragCoord.xy, originVC, dirVC, ndc);
-  float tPerDepth = -1.0 / dirVC.z;
+  lightShaftViewRay(gl_FragCoord.xy, ray.originVC, ray.dirVC, ndc);
+  float tPerDepth = -1.0 / ray.dirVC.z;
   float ta = nearDepth * tPerDepth;
   float tb = farDepth * tPerDepth;
   float depth = texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r;
-  tb = min(tb, lightShaftSurfaceDistance(ndc, depth, dirVC));
-  vec3 m = originVC - lightPositionVC;
-  b = dot(m, dirVC);
-  vec3 foot = m - b * dirVC;
-  h2 = dot(foot, foot);
+  tb = min(tb, lightShaftSurfaceDistance(ndc, depth, ray.dirVC));
+  vec3 m = ray.originVC - lightPositionVC;
+  ray.b = dot(m, ray.dirVC);
+  vec3 foot = m - ray.b * ray.dirVC;
+  ray.h2 = dot(foot, foot);
   float coneIn;
   float coneOut;
-  if (!lightShaftConeInterval(foot, dirVC, coneIn, coneOut))
+  if (!lightShaftConeInterval(foot, ray.dirVC, coneIn, coneOut))
   {
     return false;
   }
-  x0 = max(ta + b, coneIn);
-  x1 = min(tb + b, coneOut);
-  return x1 > x0;
+  ray.x0 = max(ta + ray.b, coneIn);
+  ray.x1 = min(tb + ray.b, coneOut);
+  return ray.x1 > ray.x0;
+}
+
+// The integration variable over a lit part [x0, x1]: u = x when A is constant, else the
+// equiangular angle u = atan(x / h) (h kept away from 0), from u0 to u1.
+struct LightShaftVariable
+{
+  bool constantA;
+  float h;
+  float u0;
+  float u1;
+};
+
+LightShaftVariable lightShaftVariable(LightShaftRay ray)
+{
+  LightShaftVariable v;
+  v.constantA = attenuationCoefficients.y == 0.0 && attenuationCoefficients.z == 0.0;
+  v.h = max(sqrt(ray.h2), 1e-6 * max(abs(ray.x0), abs(ray.x1)) + 1e-30);
+  v.u0 = v.constantA ? ray.x0 : atan(ray.x0, v.h);
+  v.u1 = v.constantA ? ray.x1 : atan(ray.x1, v.h);
+  return v;
 }

@@ -39,17 +39,12 @@ void main()
     clamp(slabStart + (slabIndex + slabOffset) * slabThickness, slabStart, slabEnd);
   float farDepth = (slabIndex == lastSlab) ? slabEnd :
     clamp(slabStart + (slabIndex + 1.0 + slabOffset) * slabThickness, slabStart, slabEnd);
-  vec3 originVC;
-  vec3 dirVC;
-  float b;
-  float h2;
-  float x0;
-  float x1;
-  if (!lightShaftLitInterval(nearDepth, farDepth, originVC, dirVC, b, h2, x0, x1))
+  LightShaftRay ray;
+  if (!lightShaftLitInterval(nearDepth, farDepth, ray))
   {
     discard;
   }
-  vec3 radiance = lightShaftSegment(originVC, dirVC, b, h2, x0, x1);
+  vec3 radiance = lightShaftSegment(ray.originVC, ray.dirVC, ray.b, ray.h2, ray.x0, ray.x1);
 
 #ifdef LIGHTSHAFT_ACCUMULATE_8BIT
   // The talk's trick: slab k adds into channel k mod 4 (one RGBA8 buffer per colour).
