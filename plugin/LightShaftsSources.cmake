@@ -4,8 +4,10 @@ set(lightshafts_private_classes
   vtkLightShaftAnalyticMethod
   vtkLightShaftComposite
   vtkLightShaftGeometry
+  vtkLightShaftInScatter
   vtkLightShaftInScatterTarget
   vtkLightShaftLightTextures
+  vtkLightShaftLights
   vtkLightShaftMethod
   vtkLightShaftModel
   vtkLightShaftNoise
@@ -18,7 +20,8 @@ set(lightshafts_private_classes
   vtkLightShaftShaders
   vtkLightShaftShadowMap
   vtkLightShaftSlabDrawer
-  vtkLightShaftSlicesMethod)
+  vtkLightShaftSlicesMethod
+  vtkLightShaftSurfaceLight)
 set(lightshafts_private_sources)
 set(lightshafts_private_headers "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftFrame.h")
 foreach (class IN LISTS lightshafts_private_classes)

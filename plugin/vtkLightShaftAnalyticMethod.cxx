@@ -35,8 +35,8 @@ vtkTextureObject* vtkLightShaftAnalyticMethod::RenderUnshadowed(vtkLightShaftFra
   {
     return nullptr;
   }
-  vtkLightShaftShaders::Variant variant = vtkLightShaftShaders::IntegrandVariant(
-    methodName, "LIGHTSHAFT_ANALYTIC", frame.Medium.Phase, false, frame.Cookie, frame.Noise);
+  vtkLightShaftShaders::Variant variant =
+    vtkLightShaftShaders::IntegrandVariant(methodName, "LIGHTSHAFT_ANALYTIC", frame, false);
   variant.Description += FloatAccumulation(frame.Parameters);
   vtkShaderProgram* program = this->ReadySlabProgram(frame, vtkLightShaftAnalyticFS, variant);
   if (!program)
@@ -51,7 +51,7 @@ vtkTextureObject* vtkLightShaftAnalyticMethod::RenderUnshadowed(vtkLightShaftFra
   vtkLightShaftSlabDrawer::Slabs slabs =
     vtkLightShaftSlabDrawer::Slabs::Over(lit, this->Footprints, target.GetDepth());
   this->Drawer.Draw(frame, program, slabs);
-  frame.Statistics.SlicesDrawn = static_cast<int>(this->Footprints.size());
+  frame.LightStatistics->SlicesDrawn = static_cast<int>(this->Footprints.size());
   return target.GetAccumulation(0);
 }
 

@@ -29,7 +29,7 @@ void vtkLightShaftComposite::Render(vtkLightShaftFrame& frame, vtkTextureObject*
   const int w = frame.Size[0];
   const int h = frame.Size[1];
   const bool attenuate = frame.Parameters.AttenuateScene && frame.Medium.Extinguishes();
-  const bool cookieSurfaces = frame.Cookie != nullptr;
+  vtkTextureObject* correction = scene.SurfaceCorrection;
   const bool multisample = scene.Samples > 0;
   // The scene's depth goes to the target unchanged, so that later passes, overlays and depth
   // queries (vtkRenderer::GetZ) see the surfaces as without the pass: copied when the target's
@@ -40,9 +40,9 @@ void vtkLightShaftComposite::Render(vtkLightShaftFrame& frame, vtkTextureObject*
   {
     defines.emplace_back("LIGHTSHAFT_ATTENUATE");
   }
-  if (cookieSurfaces)
+  if (correction)
   {
-    defines.emplace_back("LIGHTSHAFT_COOKIE_SURFACES");
+    defines.emplace_back("LIGHTSHAFT_SURFACE_CORRECTION");
   }
   if (multisample)
   {
@@ -70,7 +70,7 @@ void vtkLightShaftComposite::Render(vtkLightShaftFrame& frame, vtkTextureObject*
   program->SetUniformi(("sceneDepth" + suffix).c_str(), scene.Depth->GetTextureUnit());
   program->SetUniformi("inScatter", inScatter->GetTextureUnit());
   program->SetUniformf("exposure", static_cast<float>(frame.Parameters.Exposure));
-  if (attenuate || cookieSurfaces)
+  if (attenuate)
   {
     vtkLightShaftShaders::SetViewUniforms(program, frame.Camera, w, h);
   }
@@ -78,16 +78,11 @@ void vtkLightShaftComposite::Render(vtkLightShaftFrame& frame, vtkTextureObject*
   {
     program->SetUniform3f("sigmaT", frame.Medium.SigmaT);
   }
-  if (cookieSurfaces)
+  if (correction)
   {
-    scene.ColorUnlit->Activate();
-    active.push_back(scene.ColorUnlit);
-    active.push_back(frame.Cookie);
-    program->SetUniformi(("sceneColorUnlit" + suffix).c_str(), scene.ColorUnlit->GetTextureUnit());
-    vtkLightShaftShaders::SetCookieUniforms(program, frame.Cookie);
-    vtkLightShaftShaders::SetLightSpaceUniforms(program, frame, w);
-    program->SetUniform3f(
-      "lightPositionVC", vtkLightShaftGeometry::ToFloat3(frame.Light.PositionVC).data());
+    correction->Activate();
+    active.push_back(correction);
+    program->SetUniformi(("surfaceCorrection" + suffix).c_str(), correction->GetTextureUnit());
   }
 
   // Write colour (and depth), per sample when the scene is multisampled (the shader reads

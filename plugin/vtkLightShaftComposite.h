@@ -15,11 +15,11 @@ struct vtkLightShaftFrame;
 /**
  * @class   vtkLightShaftComposite
  * @brief   Writes the picture into the target the pass draws into:
- *          scene * exp(-sigma_t t_surface) + Exposure * L_in, per sample when the scene is
- *          multisampled, with the cookie on the spotlight's surfaces (unlit + cookie * (lit -
- *          unlit)), an alpha that makes the shafts part of the picture for passes that blend by
- *          it, and the scene's depth unchanged (copied bit for bit when the target's depth has
- *          the scene's format, else written by the shader).
+ *          (scene - correction) * exp(-sigma_t t_surface) + Exposure * L_in, per sample when
+ *          the scene is multisampled (the correction: the surface light the lights' shadow maps
+ *          and cookie take away, vtkLightShaftSurfaceLight), an alpha that makes the shafts
+ *          part of the picture for passes that blend by it, and the scene's depth unchanged (copied
+ * bit for bit when the target's depth has the scene's format, else written by the shader).
  */
 class vtkLightShaftComposite
 {

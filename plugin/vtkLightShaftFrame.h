@@ -14,11 +14,14 @@
 #define vtkLightShaftFrame_h
 
 #include "vtkLightShaftGeometry.h" // For the camera and light frames
+#include "vtkLightShaftLights.h"   // For the per-light statistics
 #include "vtkLightShaftModel.h"    // For the medium
 
 #include <string> // For the shader variant
+#include <vector> // For the per-light statistics
 
 class vtkLightShaftMethod;
+class vtkLightShaftShadowMap;
 class vtkObject;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
@@ -60,12 +63,11 @@ struct vtkLightShaftParameters
 };
 
 /**
- * What a frame did; published as the pass's GetLast* read-outs when the frame ends.
+ * What a frame did; published as the pass's GetLast* read-outs when the frame ends (the
+ * per-light ones, and the totals and first light's values the pass's older read-outs report).
  */
 struct vtkLightShaftStatistics
 {
-  int Method = -1;
-  int SlicesDrawn = 0;
   int SlabBatches = 0;
   int LatticeResolution = 0;
   int PostPasses = 0;
@@ -73,26 +75,25 @@ struct vtkLightShaftStatistics
   int RenderedProps = 0;
   int MultiSamples = 0;
   bool PlainScene = false;
-  bool ShadowMapRendered = false;
-  int ShadowCasters = 0;
-  double SliceDepthRange[2] = { 0.0, 0.0 };
+  double SliceDepthRange[2] = { 0.0, 0.0 }; ///< of the first light whose shafts were computed
   double RadialGuardBand = 0.0;
-  double LightDepthRange[2] = { 0.0, 0.0 }; ///< of the shadow map, when one was rendered
-  double ShadowBias = 0.0;                  ///< of the shadow map, when one was rendered
+  std::vector<vtkLightShaftLightStatistics> Lights; ///< one per used light, in order
 };
 
 /**
- * The delegate's render of the scene: colour (and, for a cookie on surfaces, the colour without
- * the spotlight) and depth, multisampled like the target the pass draws into, and the
- * single-sample depth the shafts read (the nearest of each pixel's samples).
+ * The delegate's render of the scene: colour and depth, multisampled like the target the pass
+ * draws into, the single-sample depth the shafts read (the nearest of each pixel's samples),
+ * and what the surface lighting takes away where the lights' shadows and cookie fall.
  */
 struct vtkLightShaftSceneImage
 {
   vtkOpenGLFramebufferObject* Framebuffer = nullptr; ///< holds Color and Depth attached
   vtkTextureObject* Color = nullptr;
-  vtkTextureObject* ColorUnlit = nullptr;
   vtkTextureObject* Depth = nullptr;
   vtkTextureObject* ShaftDepth = nullptr;
+  /// Float RGB to subtract from Color (multisampled like it): each shadowed or cookie-shaped
+  /// light's surface contribution times (1 - its visibility * cookie); nullptr: nothing.
+  vtkTextureObject* SurfaceCorrection = nullptr;
   int Samples = 0;
 };
 
@@ -110,13 +111,20 @@ struct vtkLightShaftFrame
   int Size[2] = { 0, 0 };    ///< viewport size, pixels
   int Reduced[2] = { 0, 0 }; ///< in-scatter size (Size / DownsampleFactor, rounded up)
 
+  int Number = 0; ///< counts the pass's frames (what was readied this frame is kept)
   vtkLightShaftParameters Parameters;
   vtkLightShaftModel::Medium Medium;
   vtkLightShaftGeometry::CameraFrame Camera;
-  vtkLightShaftGeometry::LightFrame Light;
   vtkLightShaftSceneImage Scene;
 
-  /// Decided once per frame: the cookie and noise textures in use (nullptr: off).
+  /// The light being worked on (the components handle one light at a time), its shadow map and
+  /// what the frame records of it.
+  vtkLightShaftGeometry::LightFrame Light;
+  vtkLightShaftShadowMap* ShadowMap = nullptr;
+  vtkLightShaftLightStatistics* LightStatistics = nullptr;
+
+  /// Decided once per frame: the cookie and noise textures in use (nullptr: off); the cookie
+  /// shapes spot and directional lights.
   vtkTextureObject* Cookie = nullptr;
   vtkTextureObject* Noise = nullptr;
 

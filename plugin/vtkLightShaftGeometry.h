@@ -69,40 +69,73 @@ struct Pyramid
 };
 
 /**
- * The light in the scene camera's view coordinates, its casters and the light camera that
- * renders their depth (the shadow map): everything the shafts need of the light this frame.
+ * One camera of a light's shadow map: where it looks from, along what, and its projection
+ * (perspective for spot and point lights, orthographic for a directional one), with the
+ * casters it sees.
+ */
+struct LightView
+{
+  glm::dvec3 Position{ 0.0 };
+  glm::dvec3 FocalPoint{ 0.0, 0.0, -1.0 };
+  glm::dvec3 ViewUp{ 0.0, 1.0, 0.0 };
+  glm::dmat4 Projection{ 1.0 };
+  glm::dmat4 WorldToClip{ 1.0 };
+  glm::dmat4 ViewToClip{ 1.0 };  ///< from the scene camera's view coordinates
+  std::vector<vtkProp*> Casters; ///< the casters whose bounds reach into this camera's view
+};
+
+/**
+ * The light in the scene camera's view coordinates, its casters and the cameras that render
+ * their depth (the shadow map): everything the shafts need of one light this frame.
  */
 struct LightFrame
 {
   vtkLightShaftModel::Light Model; ///< the light in world coordinates
-  glm::dvec3 PositionVC{ 0.0 };
+  glm::dvec3 PositionVC{ 0.0 };    ///< a directional light: a point of its plane
   glm::dvec3 AxisVC{ 0.0, 0.0, -1.0 };
-  Pyramid BoundsVC; ///< the bounding pyramid in view coordinates
+  Pyramid BoundsVC; ///< a spot's bounding pyramid in view coordinates
   Pyramid BoundsWC; ///< the same pyramid in world coordinates
+  /// The rotation from the scene camera's view coordinates to world coordinates.
+  glm::dmat3 ViewToWorld{ 1.0 };
 
-  std::vector<vtkProp*> Casters; ///< visible props whose bounds reach into the pyramid
+  std::vector<vtkProp*> Casters; ///< visible props that can shadow the lit part of the view
   bool ShadowsPossible = false;  ///< casters reach into the light's volume (here or elsewhere)
 
-  /// The light camera: perspective over the light's square, depth range of the casters (else
-  /// of the view volume).
+  /**
+   * The shadow map's cameras: one (spot: perspective over the light's square; directional:
+   * orthographic over the part of the light's plane whose light reaches the view volume and
+   * meets a caster) or six (point: the cube's faces +X, -X, +Y, -Y, +Z, -Z, 90 degrees each,
+   * laid out in a 3 x 2 atlas, face f in column f % 3, row f / 3). Their depth range: the
+   * casters' (else of the view volume), distances from the light (spot, point) or from its
+   * plane (directional).
+   */
+  std::vector<LightView> Views;
   double Near = 0.0;
   double Far = 1.0;
+  /// The map's extent across one of its cameras: at unit distance for spot (2 tan) and point
+  /// (2), in world units for directional (the larger side of its rectangle).
+  double MapExtent = 1.0;
+  /// Views[0]'s matrices (the one camera of spot and directional lights).
   glm::dmat4 Projection{ 1.0 };
   glm::dmat4 WorldToLightClip{ 1.0 };
   glm::dmat4 ViewToLightClip{ 1.0 };
+  /// View coordinates to the light's square (cookie, noise) as clip coordinates: u = 0.5 x / w
+  /// + 0.5, v likewise (spot: the shadow map's projection; directional: the square of side
+  /// SquareSide centred on the axis through Position; point: unused).
+  glm::dmat4 ViewToLightSquare{ 1.0 };
 };
 
 /**
- * The light frame of `light` for `camera`: casters among `props` (their bounds reach into the
- * bounding pyramid), and the light camera `lightCamera` set up to render their depth. With
- * `casterBounds` (distributed rendering: every process's casters) the light camera's depth
- * range, and whether shadows are possible, come from those bounds instead.
+ * The light frame of `light` for `camera`: casters among `props` (visible props whose bounds
+ * reach into the light's volume, and for a directional light whose shadow can fall in the
+ * lit part of the view volume), and the cameras that render their depth. With `casterBounds`
+ * (distributed rendering: every process's casters) the cameras' extent and depth range, and
+ * whether shadows are possible, come from those bounds instead.
  */
 LightFrame ComputeLightFrame(const vtkLightShaftModel::Light& light,
   const CameraFrame& camera,
   vtkPropCollection* props,
-  const double* casterBounds,
-  vtkCamera* lightCamera);
+  const double* casterBounds);
 
 /**
  * A convex polytope as a list of convex faces, clipped by half-spaces.
@@ -124,8 +157,9 @@ std::vector<glm::dvec2> ClipToConvex(std::vector<glm::dvec2> polygon,
 std::vector<glm::dvec2> ConvexHull(std::vector<glm::dvec2> points);
 
 /**
- * The part of the view volume inside the light's bounding pyramid (view coordinates), and the
- * view-depth range it spans.
+ * The part of the view volume the light reaches (view coordinates): inside a spot's bounding
+ * pyramid, beyond a directional light's plane, all of it for a point light; and the view-depth
+ * range it spans.
  */
 struct LitVolume
 {

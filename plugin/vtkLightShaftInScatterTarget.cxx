@@ -9,6 +9,7 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include "vtkLightShaftAddFS.h"
 #include "vtkLightShaftDepthDownsampleFS.h"
 
 using vtkLightShaftResources::TextureKind;
@@ -28,9 +29,7 @@ vtkTextureObject* vtkLightShaftInScatterTarget::GetAccumulation(int index)
 }
 
 //------------------------------------------------------------------------------
-void vtkLightShaftInScatterTarget::Prepare(vtkLightShaftFrame& frame,
-  int buffers,
-  vtkLightShaftResources::TextureKind kind)
+void vtkLightShaftInScatterTarget::PrepareDepth(vtkLightShaftFrame& frame)
 {
   vtkOpenGLRenderWindow* window = frame.Window;
   vtkOpenGLState* ostate = window->GetState();
@@ -39,9 +38,7 @@ void vtkLightShaftInScatterTarget::Prepare(vtkLightShaftFrame& frame,
   const int lh = frame.Reduced[1];
   this->Size[0] = lw;
   this->Size[1] = lh;
-  this->Buffers = buffers;
-  vtkOpenGLFramebufferObject* depthTarget =
-    vtkLightShaftResources::EnsureFramebuffer(this->DepthFramebuffer, window);
+  this->Summed = false;
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglDisable(GL_CULL_FACE);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -51,7 +48,12 @@ void vtkLightShaftInScatterTarget::Prepare(vtkLightShaftFrame& frame,
   if (factor > 1)
   {
     this->Depth = this->ReducedDepth.Ensure(window, TextureKind::Depth, lw, lh);
-    vtkLightShaftResources::BindTargets(depthTarget, {}, this->Depth, lw, lh);
+    vtkLightShaftResources::BindTargets(
+      vtkLightShaftResources::EnsureFramebuffer(this->DepthFramebuffer, window),
+      {},
+      this->Depth,
+      lw,
+      lh);
     if (vtkShaderProgram* program =
           this->DepthDownsample.Ready(window, vtkLightShaftDepthDownsampleFS))
     {
@@ -67,13 +69,28 @@ void vtkLightShaftInScatterTarget::Prepare(vtkLightShaftFrame& frame,
       frame.Scene.ShaftDepth->Deactivate();
     }
   }
+}
 
+//------------------------------------------------------------------------------
+void vtkLightShaftInScatterTarget::Clear(vtkLightShaftFrame& frame,
+  int buffers,
+  vtkLightShaftResources::TextureKind kind)
+{
+  vtkOpenGLRenderWindow* window = frame.Window;
+  vtkOpenGLState* ostate = window->GetState();
+  const int lw = this->Size[0];
+  const int lh = this->Size[1];
+  this->Buffers = buffers;
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   // The accumulation buffer(s), and the copy of the depth for the depth test.
   this->DepthTest.Ensure(window, TextureKind::Depth, lw, lh);
   for (int i = 0; i < buffers; ++i)
   {
     this->Accumulation[i].Ensure(window, kind, lw, lh);
   }
+  vtkOpenGLFramebufferObject* depthTarget =
+    vtkLightShaftResources::EnsureFramebuffer(this->DepthFramebuffer, window);
   vtkLightShaftResources::BindTargets(depthTarget, {}, this->Depth, lw, lh);
   this->Bind();
   depthTarget->Bind(GL_READ_FRAMEBUFFER);
@@ -81,6 +98,46 @@ void vtkLightShaftInScatterTarget::Prepare(vtkLightShaftFrame& frame,
   this->AccumulationFramebuffer->Bind();
   ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftInScatterTarget::AddToSum(vtkLightShaftFrame& frame, vtkTextureObject* inScatter)
+{
+  vtkOpenGLRenderWindow* window = frame.Window;
+  vtkOpenGLState* ostate = window->GetState();
+  const int lw = this->Size[0];
+  const int lh = this->Size[1];
+  vtkTextureObject* sum = this->Sum.Ensure(window, TextureKind::RGBA32F, lw, lh);
+  vtkLightShaftResources::BindTargets(
+    vtkLightShaftResources::EnsureFramebuffer(this->SumFramebuffer, window),
+    { sum },
+    nullptr,
+    lw,
+    lh);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  if (!this->Summed)
+  {
+    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+    this->Summed = true;
+  }
+  if (vtkShaderProgram* program = this->Add.Ready(window, vtkLightShaftAddFS))
+  {
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+    inScatter->Activate();
+    program->SetUniformi("source", inScatter->GetTextureUnit());
+    this->Add.Render();
+    inScatter->Deactivate();
+    ostate->vtkglDisable(GL_BLEND);
+  }
+  ++frame.Statistics.PostPasses;
+}
+
+vtkTextureObject* vtkLightShaftInScatterTarget::GetSum()
+{
+  return this->Summed ? this->Sum.Object.Get() : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -113,6 +170,7 @@ void vtkLightShaftInScatterTarget::Bind()
 void vtkLightShaftInScatterTarget::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (auto* texture : { &this->ReducedDepth,
+         &this->Sum,
          &this->DepthTest,
          &this->Accumulation[0],
          &this->Accumulation[1],
@@ -122,6 +180,9 @@ void vtkLightShaftInScatterTarget::ReleaseGraphicsResources(vtkWindow* window)
   }
   vtkLightShaftResources::ReleaseFramebuffer(this->AccumulationFramebuffer, window);
   vtkLightShaftResources::ReleaseFramebuffer(this->DepthFramebuffer, window);
+  vtkLightShaftResources::ReleaseFramebuffer(this->SumFramebuffer, window);
   this->DepthDownsample.Release(window);
+  this->Add.Release(window);
+  this->Summed = false;
   this->Depth = nullptr;
 }

@@ -28,11 +28,20 @@ public:
   vtkLightShaftInScatterTarget();
   ~vtkLightShaftInScatterTarget();
 
+  /// Make the depth the shafts read (the scene's, or the nearest of each reduced block).
+  void PrepareDepth(vtkLightShaftFrame& frame);
+
   /**
-   * Make the depth the shafts read, and `buffers` accumulation buffers (1, or 3 for the 8-bit
-   * mode) of `kind`, cleared to zero, with the depth-test copy; leaves them bound (Bind).
+   * Make `buffers` accumulation buffers (1, or 3 for the 8-bit mode) of `kind`, cleared to
+   * zero, with the depth-test copy; leaves them bound (Bind).
    */
-  void Prepare(vtkLightShaftFrame& frame, int buffers, vtkLightShaftResources::TextureKind kind);
+  void Clear(vtkLightShaftFrame& frame, int buffers, vtkLightShaftResources::TextureKind kind);
+
+  /// Add `inScatter` (reduced size, RGB) into the sum of several lights' in-scatter (cleared
+  /// by the first addition of a frame: Clear(frame, ...) starts a new sum).
+  void AddToSum(vtkLightShaftFrame& frame, vtkTextureObject* inScatter);
+  /// The sum, nullptr when nothing was added since PrepareDepth.
+  vtkTextureObject* GetSum();
 
   /// Bind the accumulation buffers and the depth-test copy for drawing.
   void Bind();
@@ -53,6 +62,10 @@ private:
   vtkSmartPointer<vtkOpenGLFramebufferObject> AccumulationFramebuffer;
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
   vtkLightShaftResources::FullScreenPass DepthDownsample;
+  vtkLightShaftResources::OwnedTexture Sum;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> SumFramebuffer;
+  vtkLightShaftResources::FullScreenPass Add;
+  bool Summed = false;
   vtkTextureObject* Depth = nullptr;
   int Buffers = 1;
   int Size[2] = { 0, 0 };

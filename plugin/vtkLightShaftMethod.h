@@ -48,6 +48,13 @@ public:
     int& buffers) const;
 
   /**
+   * Whether Render's result is the target's first accumulation buffer, added into without
+   * clearing it: then several lights add up there directly; otherwise each light's result is
+   * added into a sum. By default true.
+   */
+  virtual bool AddsIntoTarget(const vtkLightShaftParameters&) const { return true; }
+
+  /**
    * Compute L_in over the lit volume `lit` into `target` (prepared: cleared and bound). Returns
    * the texture holding it (reduced resolution, RGB radiance; alpha as the method uses it) for
    * the post chain, or nullptr when nothing was drawn (the target then holds zeros).

@@ -10,43 +10,93 @@
 namespace vtkLightShaftModel
 {
 //------------------------------------------------------------------------------
+LightKind KindOf(vtkLight* light)
+{
+  if (!light->GetPositional())
+  {
+    return LightKind::Directional;
+  }
+  return light->GetConeAngle() < 90.0 ? LightKind::Spot : LightKind::Point;
+}
+
 bool IsSpotLight(vtkLight* light)
 {
-  return light->GetPositional() && light->GetConeAngle() < 90.0;
+  return KindOf(light) == LightKind::Spot;
 }
 
 //------------------------------------------------------------------------------
-vtkLight* FindLight(vtkLight* requested, vtkRenderer* renderer)
+std::vector<vtkLight*> FindLights(const std::vector<vtkLight*>& requested, vtkRenderer* renderer)
 {
-  if (requested)
+  std::vector<vtkLight*> lights;
+  if (!requested.empty())
   {
-    return IsSpotLight(requested) ? requested : nullptr;
-  }
-  vtkLightCollection* lights = renderer->GetLights();
-  vtkCollectionSimpleIterator it;
-  lights->InitTraversal(it);
-  while (vtkLight* candidate = lights->GetNextLight(it))
-  {
-    if (candidate->GetSwitch() && IsSpotLight(candidate))
+    for (vtkLight* light : requested)
     {
-      return candidate;
+      if (light && light->GetSwitch())
+      {
+        lights.push_back(light);
+      }
+    }
+    return lights;
+  }
+  vtkLightCollection* candidates = renderer->GetLights();
+  vtkCollectionSimpleIterator it;
+  candidates->InitTraversal(it);
+  while (vtkLight* candidate = candidates->GetNextLight(it))
+  {
+    if (candidate->GetSwitch() && KindOf(candidate) != LightKind::Directional)
+    {
+      lights.push_back(candidate);
     }
   }
-  return nullptr;
+  return lights;
+}
+
+//------------------------------------------------------------------------------
+glm::dvec2 Light::SquareWidth() const
+{
+  switch (this->Kind)
+  {
+    case LightKind::Directional:
+      return glm::dvec2(0.0, this->SquareSide);
+    case LightKind::Point:
+      return glm::dvec2(2.0, 0.0);
+    default:
+      return glm::dvec2(2.0 * this->SquareTangent, 0.0);
+  }
+}
+
+double Light::Distance(const glm::dvec3& point) const
+{
+  return this->Kind == LightKind::Directional ? glm::dot(point - this->Position, this->Axis)
+                                              : glm::length(point - this->Position);
 }
 
 //------------------------------------------------------------------------------
 Light DescribeLight(vtkLight* light)
 {
   Light model;
+  model.Kind = KindOf(light);
   const double* position = light->GetTransformedPosition();
   const double* focal = light->GetTransformedFocalPoint();
   model.Position = glm::dvec3(position[0], position[1], position[2]);
   const glm::dvec3 axis = glm::dvec3(focal[0], focal[1], focal[2]) - model.Position;
   model.Axis = glm::length(axis) > 0.0 ? glm::normalize(axis) : glm::dvec3(0.0, 0.0, -1.0);
-  model.ConeHalfAngle = vtkMath::RadiansFromDegrees(light->GetConeAngle());
-  model.Exponent = light->GetExponent();
-  light->GetAttenuationValues(model.Attenuation);
+  model.SquareSide = glm::length(axis) > 0.0 ? glm::length(axis) : 1.0;
+  if (model.Kind == LightKind::Spot)
+  {
+    model.ConeHalfAngle = vtkMath::RadiansFromDegrees(light->GetConeAngle());
+    model.Exponent = light->GetExponent();
+  }
+  else
+  {
+    model.ConeHalfAngle = vtkMath::Pi(); // no cone
+    model.Exponent = 0.0;
+  }
+  if (model.Kind != LightKind::Directional)
+  {
+    light->GetAttenuationValues(model.Attenuation);
+  }
   if (model.Attenuation[0] <= 0.0 && model.Attenuation[1] <= 0.0 && model.Attenuation[2] <= 0.0)
   {
     model.Attenuation[0] = 1.0;
@@ -105,5 +155,14 @@ void NoiseShifts(const double velocity1[2],
   shifts[1] = wrap(velocity1[1] * time);
   shifts[2] = wrap(velocity2[0] * time + 0.37);
   shifts[3] = wrap(velocity2[1] * time + 0.61);
+}
+
+//------------------------------------------------------------------------------
+glm::dvec3 TriplanarWeights(const glm::dvec3& d)
+{
+  const glm::dvec3 d2 = d * d;
+  const glm::dvec3 d4 = d2 * d2;
+  const double sum = d4.x + d4.y + d4.z;
+  return sum > 0.0 ? d4 / sum : glm::dvec3(1.0 / 3.0);
 }
 }

@@ -1,8 +1,8 @@
 /**
  * @file   vtkLightShaftModel.h
  * @brief  The physical model's rules, in one place for vtkLightShaftPass and
- *         vtkLightShaftReference (private, not installed): which light scatters, what it emits,
- *         the light's square (cookie, noise and shadow-map coordinates), the medium.
+ *         vtkLightShaftReference (private, not installed): which lights scatter, what kind each
+ *         is, what it emits, the light's square (cookie, noise coordinates), the medium.
  *
  * Everything here is in world coordinates and double precision, and touches no GL.
  */
@@ -14,6 +14,8 @@
 
 #include <glm/glm.hpp> // For glm::dvec3
 
+#include <vector> // For the lights chosen
+
 class vtkLight;
 class vtkRenderer;
 
@@ -23,45 +25,94 @@ namespace vtkLightShaftModel
 /// bounded by the view volume instead (the integrand still clips to the true cone).
 constexpr double MaximumSquareHalfAngle = vtkMath::Pi() * 89.9 / 180.0;
 
+/**
+ * The kinds of light VTK has, as the model treats them (the values are
+ * vtkLightShaftPass::LightKindType's):
+ * - Spot: positional, cone half-angle below 90 degrees: I S(x) A(r) from the position, inside
+ *   the cone.
+ * - Point: positional, cone angle of 90 degrees or more (VTK then applies no cone): I A(r) from
+ *   the position, in every direction.
+ * - Directional: not positional: parallel light travelling from Position towards FocalPoint,
+ *   lighting the half-space beyond the plane through Position perpendicular to that direction,
+ *   with no falloff; its r (the extinction leg) is the distance from that plane.
+ */
+enum class LightKind
+{
+  Spot = 0,
+  Point = 1,
+  Directional = 2
+};
+
+/// The kind of `light` (see LightKind).
+LightKind KindOf(vtkLight* light);
+
 /// A spotlight: positional with a cone half-angle below 90 degrees.
 bool IsSpotLight(vtkLight* light);
 
 /**
- * The light that scatters: `requested` when it is a spotlight (nullptr when it is not), or with
- * no light requested the renderer's first switched-on spotlight (nullptr when there is none).
+ * The lights that scatter: the switched-on lights of `requested` (any kind; switched-off ones
+ * contribute nothing and are left out), or with none requested every switched-on spot and point
+ * light of `renderer`, in the renderer's order (directional lights only when requested: VTK's
+ * default headlight and light kits are directional).
  */
-vtkLight* FindLight(vtkLight* requested, vtkRenderer* renderer);
+std::vector<vtkLight*> FindLights(const std::vector<vtkLight*>& requested, vtkRenderer* renderer);
 
 /**
- * A spotlight as the model sees it, in world coordinates.
+ * A light as the model sees it, in world coordinates.
  */
 struct Light
 {
+  LightKind Kind = LightKind::Spot;
+  /// Spot and point: the light's position. Directional: a point of the plane where the light
+  /// starts (the light's Position).
   glm::dvec3 Position{ 0.0 };
-  glm::dvec3 Axis{ 0.0, 0.0, -1.0 }; ///< unit, from the position towards the focal point
-  double ConeHalfAngle = 0.0;        ///< radians
-  double Exponent = 0.0;             ///< spot exponent: S = cos(angle to the axis)^Exponent
+  /// Unit, from the position towards the focal point: the spot's axis, the direction a
+  /// directional light travels (a point light's is unused but defined).
+  glm::dvec3 Axis{ 0.0, 0.0, -1.0 };
+  double ConeHalfAngle = 0.0; ///< radians; spot only (pi for the others: no cone)
+  double Exponent = 0.0;      ///< spot exponent: S = cos(angle to the axis)^Exponent (0: none)
   /// A(r) = 1 / (c0 + c1 r + c2 r^2); all zero is taken as no falloff (1, 0, 0), since VTK's
-  /// lighting would divide by zero.
+  /// lighting would divide by zero. Directional lights have none (1, 0, 0), as in VTK.
   double Attenuation[3] = { 1.0, 0.0, 0.0 };
   double RadiantIntensity[3] = { 0.0, 0.0, 0.0 }; ///< intensity * diffuse colour; 0 when off
-  /// The light's square (cookie, noise, shadow map): rows along Up (world +Y projected on the
-  /// light's plane, or +X for a light within ~8 degrees of +-Y), columns along Right.
+  /// The light's square (cookie, noise, the spot's shadow map): rows along Up (world +Y
+  /// projected on the light's plane, or +X for a light within ~8 degrees of +-Y), columns
+  /// along Right.
   glm::dvec3 Right{ 1.0, 0.0, 0.0 };
   glm::dvec3 Up{ 0.0, 1.0, 0.0 };
   /// The world direction the light camera's view-up is set to (+Y, or +X near +-Y).
   glm::dvec3 ViewUp{ 0.0, 1.0, 0.0 };
-  /// tan of the square's half-angle (the cone's, clamped to MaximumSquareHalfAngle).
+  /// Spot: tan of the square's half-angle (the cone's, clamped to MaximumSquareHalfAngle).
   double SquareTangent = 1.0;
+  /// Directional: the side of the light's square, |FocalPoint - Position| (cookie and noise
+  /// tile the light's plane with this period), centred on the axis through Position.
+  double SquareSide = 1.0;
 
   /// Whether A(r) falls off with distance.
   bool FallingAttenuation() const
   {
     return this->Attenuation[1] != 0.0 || this->Attenuation[2] != 0.0;
   }
+
+  /// Whether it emits at all (switched on, some intensity).
+  bool Radiates() const
+  {
+    return this->RadiantIntensity[0] > 0.0 || this->RadiantIntensity[1] > 0.0 ||
+           this->RadiantIntensity[2] > 0.0;
+  }
+
+  /**
+   * The width of the light's square (the span of cookie and noise coordinates 0..1) at
+   * distance r from the light, as (a, b) in a r + b: spot (2 tan, 0); directional (0, side);
+   * point (2, 0) (its noise is projected on the planes across the unit sphere of directions).
+   */
+  glm::dvec2 SquareWidth() const;
+
+  /// r of a world point: the distance from the light, or from a directional light's plane.
+  double Distance(const glm::dvec3& point) const;
 };
 
-/// `light` (a spotlight) as the model sees it.
+/// `light` as the model sees it.
 Light DescribeLight(vtkLight* light);
 
 /**
@@ -90,6 +141,13 @@ void NoiseShifts(const double velocity1[2],
   const double velocity2[2],
   double time,
   double shifts[4]);
+
+/**
+ * A point light's noise weights over the three planes across the unit sphere of directions
+ * (x = 0, y = 0, z = 0), for a unit direction `d` from the light: w_i = d_i^4 / sum d_j^4
+ * (triplanar: seamless over the sphere, one plane dominating near each axis).
+ */
+glm::dvec3 TriplanarWeights(const glm::dvec3& d);
 }
 
 #endif

@@ -1,20 +1,16 @@
 #include "vtkLightShaftPass.h"
 
-#include "vtkLightShaftAnalyticMethod.h"
 #include "vtkLightShaftComposite.h"
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftGeometry.h"
-#include "vtkLightShaftInScatterTarget.h"
+#include "vtkLightShaftInScatter.h"
 #include "vtkLightShaftLightTextures.h"
+#include "vtkLightShaftLights.h"
 #include "vtkLightShaftModel.h"
-#include "vtkLightShaftPostProcess.h"
-#include "vtkLightShaftRadialBlurMethod.h"
-#include "vtkLightShaftRayMarchMethod.h"
 #include "vtkLightShaftResources.h"
 #include "vtkLightShaftSceneRenderer.h"
 #include "vtkLightShaftShadowMap.h"
-#include "vtkLightShaftSlabDrawer.h"
-#include "vtkLightShaftSlicesMethod.h"
+#include "vtkLightShaftSurfaceLight.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkFloatArray.h"
@@ -27,6 +23,7 @@
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkPointData.h"
@@ -44,6 +41,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -54,59 +52,50 @@ constexpr double MaximumAnisotropy = 0.99;
 
 /**
  * Everything the pass holds besides its parameters: its components (each owning its GL
- * objects, freed by ReleaseGraphicsResources), the light choice, and what the last frame left
- * for the read-outs.
+ * objects, freed by ReleaseGraphicsResources), the lights, and what the last frame left for
+ * the read-outs.
  */
 class vtkLightShaftPass::Internals
 {
 public:
-  vtkSmartPointer<vtkLight> Light;
-  vtkWeakPointer<vtkLight> LastUsedLight;
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   vtkNew<vtkCallbackCommand> WindowDeleted;
   unsigned long WindowDeletedTag = 0;
-  bool WarnedNoLight = false;
-  bool WarnedAnalyticShadows = false;
+  bool WarnedPointCookie = false;
+  int FrameCounter = 0;
 
   // The components, in the order a frame uses them.
+  vtkLightShaftLights Lights;
   vtkLightShaftSceneRenderer Scene;
   vtkLightShaftLightTextures Textures;
-  vtkLightShaftShadowMap ShadowMap;
-  vtkLightShaftInScatterTarget Target;
-  vtkLightShaftSlabDrawer Slabs;
-  vtkLightShaftSlicesMethod Slices{ this->ShadowMap, this->Slabs, ShadowMapRenderedEvent };
-  vtkLightShaftRayMarchMethod RayMarch{ this->ShadowMap, this->Slabs, ShadowMapRenderedEvent };
-  vtkLightShaftAnalyticMethod Analytic{ this->Slabs };
-  vtkLightShaftRadialBlurMethod RadialBlur{ this->ShadowMap, this->Analytic };
-  vtkLightShaftPostProcess Post;
+  vtkLightShaftInScatter InScatter;
+  vtkLightShaftSurfaceLight SurfaceLight;
   vtkLightShaftComposite Composite;
 
-  // The last frame's L_in (full resolution) when InScatterValid, and the slab program's method.
+  // The last frame's L_in (full resolution) when InScatterValid, and what it did per light.
   vtkTextureObject* FinalInScatter = nullptr;
   bool InScatterValid = false;
-  const vtkLightShaftMethod* ShaderMethod = nullptr;
+  std::vector<vtkLightShaftLightStatistics> LastLights;
+  std::string Variants; ///< GetLastShaderVariant's string
   vtkSmartPointer<vtkOpenGLFramebufferObject> ReadFramebuffer;
-
-  /// The methods, indexed by MethodType (AUTOMATIC resolves to one of them).
-  vtkLightShaftMethod* GetMethod(int method)
-  {
-    vtkLightShaftMethod* methods[] = {
-      &this->Slices, &this->RayMarch, &this->RadialBlur, &this->Analytic
-    };
-    return methods[method];
-  }
 
   void Track(vtkOpenGLRenderWindow* window);
   void Untrack();
   void ReleaseOwnResources(vtkWindow* w);
 
-  vtkLight* ChooseLight(vtkLightShaftPass& self, vtkRenderer* ren);
-  int ChooseMethod(const vtkLightShaftFrame& frame);
   static vtkLightShaftParameters Snapshot(vtkLightShaftPass& self);
   bool BeginFrame(vtkLightShaftPass& self, const vtkRenderState* s, vtkLightShaftFrame& frame);
-  void RenderShafts(vtkLightShaftFrame& frame, vtkRenderPass* delegate, vtkLight* light);
-  vtkTextureObject* RenderInScatter(vtkLightShaftFrame& frame);
+  void RenderShafts(vtkLightShaftFrame& frame,
+    vtkRenderPass* delegate,
+    const std::vector<vtkLight*>& lights,
+    bool shadowSurfaces);
+  void RenderLight(vtkLightShaftFrame& frame,
+    vtkRenderPass* delegate,
+    vtkLight* light,
+    vtkTextureObject* cookie,
+    bool shadowSurfaces);
   static void Publish(vtkLightShaftPass& self, const vtkLightShaftFrame& frame);
+  const vtkLightShaftLightStatistics* LastLight(int index) const;
 };
 
 vtkStandardNewMacro(vtkLightShaftPass);
@@ -181,16 +170,11 @@ void vtkLightShaftPass::Internals::Untrack()
 
 void vtkLightShaftPass::Internals::ReleaseOwnResources(vtkWindow* w)
 {
+  this->Lights.ReleaseGraphicsResources(w);
   this->Scene.ReleaseGraphicsResources(w);
   this->Textures.ReleaseGraphicsResources(w);
-  this->ShadowMap.ReleaseGraphicsResources(w);
-  this->Target.ReleaseGraphicsResources(w);
-  this->Slabs.ReleaseGraphicsResources(w);
-  for (int method = SLICES; method < AUTOMATIC; ++method)
-  {
-    this->GetMethod(method)->ReleaseGraphicsResources(w);
-  }
-  this->Post.ReleaseGraphicsResources(w);
+  this->InScatter.ReleaseGraphicsResources(w);
+  this->SurfaceLight.ReleaseGraphicsResources(w);
   this->Composite.ReleaseGraphicsResources(w);
   vtkLightShaftResources::ReleaseFramebuffer(this->ReadFramebuffer, w);
   this->FinalInScatter = nullptr;
@@ -405,22 +389,110 @@ void vtkLightShaftPass::SetDownsampleFactor(int factor)
 
 void vtkLightShaftPass::SetLight(vtkLight* light)
 {
-  if (this->Impl->Light != light)
+  if (this->Impl->Lights.Set(light))
   {
-    this->Impl->Light = light;
-    this->Impl->WarnedNoLight = false;
     this->Modified();
   }
 }
 
-vtkLight* vtkLightShaftPass::GetLight()
+void vtkLightShaftPass::AddLight(vtkLight* light)
 {
-  return this->Impl->Light;
+  if (this->Impl->Lights.Add(light))
+  {
+    this->Modified();
+  }
 }
 
-vtkLight* vtkLightShaftPass::GetLastUsedLight()
+void vtkLightShaftPass::RemoveLight(vtkLight* light)
 {
-  return this->Impl->LastUsedLight;
+  if (this->Impl->Lights.Remove(light))
+  {
+    this->Modified();
+  }
+}
+
+void vtkLightShaftPass::RemoveAllLights()
+{
+  if (this->Impl->Lights.RemoveAll())
+  {
+    this->Modified();
+  }
+}
+
+int vtkLightShaftPass::GetNumberOfLights()
+{
+  return this->Impl->Lights.GetNumberOfGiven();
+}
+
+vtkLight* vtkLightShaftPass::GetLight()
+{
+  return this->Impl->Lights.GetGiven(0);
+}
+
+vtkLight* vtkLightShaftPass::GetLight(int index)
+{
+  return this->Impl->Lights.GetGiven(index);
+}
+
+//------------------------------------------------------------------------------
+// The last frame's lights.
+const vtkLightShaftLightStatistics* vtkLightShaftPass::Internals::LastLight(int index) const
+{
+  return index >= 0 && index < static_cast<int>(this->LastLights.size()) ? &this->LastLights[index]
+                                                                         : nullptr;
+}
+
+int vtkLightShaftPass::GetLastNumberOfUsedLights()
+{
+  return static_cast<int>(this->Impl->LastLights.size());
+}
+
+vtkLight* vtkLightShaftPass::GetLastUsedLight(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
+  return light ? light->Light.Get() : nullptr;
+}
+
+int vtkLightShaftPass::GetLastLightKind(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
+  return light ? light->Kind : -1;
+}
+
+int vtkLightShaftPass::GetLastLightMethod(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
+  return light ? light->Method : -1;
+}
+
+int vtkLightShaftPass::GetLastLightSlicesDrawn(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
+  return light ? light->SlicesDrawn : 0;
+}
+
+bool vtkLightShaftPass::GetLastLightShadowMapRendered(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
+  return light && light->ShadowMapRendered;
+}
+
+bool vtkLightShaftPass::GetLastLightShadowMapReused(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
+  return light && light->ShadowMapReused;
+}
+
+int vtkLightShaftPass::GetLastLightShadowCasters(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
+  return light ? light->ShadowCasters : 0;
+}
+
+double vtkLightShaftPass::GetLastLightTime(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
+  return light ? light->Time : -1.0;
 }
 
 void vtkLightShaftPass::SetCookie(vtkTexture* cookie)
@@ -453,7 +525,8 @@ vtkTexture* vtkLightShaftPass::GetNoiseTexture()
 
 vtkTextureObject* vtkLightShaftPass::GetShadowMapTexture()
 {
-  return this->Impl->ShadowMap.GetEventTexture();
+  vtkLightShaftLightState* state = this->Impl->Lights.GetEventState();
+  return state ? state->ShadowMap.GetEventTexture() : nullptr;
 }
 
 void vtkLightShaftPass::SetShadowCasterBounds(const double bounds[6])
@@ -489,13 +562,27 @@ bool vtkLightShaftPass::GetShadowCasterBounds(double bounds[6])
 
 const char* vtkLightShaftPass::GetLastShaderVariant()
 {
-  const vtkLightShaftMethod* method = this->Impl->ShaderMethod;
-  return method ? method->GetShaderVariant().c_str() : "";
+  // Each light's variant, joined by "; " (the last computed one's while no light computed any).
+  std::string& variants = this->Impl->Variants;
+  variants.clear();
+  for (const vtkLightShaftLightStatistics& light : this->Impl->LastLights)
+  {
+    if (!light.ShaderVariant.empty())
+    {
+      variants += (variants.empty() ? "" : "; ") + light.ShaderVariant;
+    }
+  }
+  const vtkLightShaftMethod* method = this->Impl->InScatter.GetShaderMethod();
+  if (variants.empty() && method)
+  {
+    variants = method->GetShaderVariant();
+  }
+  return variants.c_str();
 }
 
 const char* vtkLightShaftPass::GetLastSliceShaderSource()
 {
-  const vtkLightShaftMethod* method = this->Impl->ShaderMethod;
+  const vtkLightShaftMethod* method = this->Impl->InScatter.GetShaderMethod();
   return method ? method->GetShaderSource().c_str() : "";
 }
 
@@ -523,13 +610,15 @@ void vtkLightShaftPass::Render(const vtkRenderState* s)
 
 //------------------------------------------------------------------------------
 // The frame's recipe: the plain scene where one is needed, the scene unchanged when nothing
-// scatters, else the scene, the shafts and their composite.
+// scatters and no surface is shadowed, else the scene, each light's shafts and surface light,
+// and their composite.
 void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
 {
   Internals& impl = *this->Impl;
   impl.InScatterValid = false;
   impl.FinalInScatter = nullptr;
   vtkLightShaftFrame frame;
+  frame.Number = ++impl.FrameCounter;
   if (!impl.BeginFrame(*this, s, frame))
   {
     Internals::Publish(*this, frame);
@@ -544,17 +633,17 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
     return;
   }
   impl.Track(frame.Window);
-  vtkRenderPass* delegate = impl.Scene.ChooseDelegate(
-    this->DelegatePass, this->ShadowSurfaces, this->ShadowMapSize, frame.Window);
-  vtkLight* light = impl.ChooseLight(*this, frame.Renderer);
+  vtkRenderPass* delegate = impl.Scene.ChooseDelegate(this->DelegatePass);
+  const std::vector<vtkLight*> lights = impl.Lights.Choose(this, frame.Renderer);
+  impl.Lights.KeepOnly(lights, frame.Window);
   const bool medium = frame.Medium.Scatters() || frame.Medium.Extinguishes();
-  if (!light || !medium || frame.Size[0] < 1 || frame.Size[1] < 1)
+  if (lights.empty() || !(medium || this->ShadowSurfaces) || frame.Size[0] < 1 || frame.Size[1] < 1)
   {
     impl.Scene.RenderUnchanged(frame, delegate); // nothing to add: the delegate's image
   }
   else
   {
-    impl.RenderShafts(frame, delegate, light);
+    impl.RenderShafts(frame, delegate, lights, this->ShadowSurfaces);
   }
   Internals::Publish(*this, frame);
 }
@@ -635,64 +724,12 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
 }
 
 //------------------------------------------------------------------------------
-// The scattering light (see vtkLightShaftModel::FindLight), with one warning while there is
-// none.
-vtkLight* vtkLightShaftPass::Internals::ChooseLight(vtkLightShaftPass& self, vtkRenderer* ren)
-{
-  vtkLight* light = vtkLightShaftModel::FindLight(this->Light, ren);
-  if (!light && !this->WarnedNoLight)
-  {
-    if (this->Light)
-    {
-      vtkWarningWithObjectMacro(&self,
-        "The light given to SetLight is not a spotlight (positional, cone angle "
-        "< 90 degrees): rendering the scene without shafts.");
-    }
-    else
-    {
-      vtkWarningWithObjectMacro(&self,
-        "No spotlight in the renderer (a switched-on positional light with cone "
-        "angle < 90 degrees): rendering the scene without shafts.");
-    }
-    this->WarnedNoLight = true;
-  }
-  if (light)
-  {
-    this->WarnedNoLight = false;
-  }
-  this->LastUsedLight = light;
-  return light;
-}
-
-//------------------------------------------------------------------------------
-// The method of this frame: AUTOMATIC takes the exact unshadowed integral when nothing can
-// shadow the light's volume and the medium is homogeneous, else the slabs. ANALYTIC says once
-// that it ignores the shadows props could cast.
-int vtkLightShaftPass::Internals::ChooseMethod(const vtkLightShaftFrame& frame)
-{
-  int method = frame.Parameters.Method;
-  if (method == AUTOMATIC)
-  {
-    const bool noise = frame.Parameters.NoiseAmplitude > 0.0;
-    method = (!frame.Light.ShadowsPossible && !noise) ? ANALYTIC : SLICES;
-  }
-  if (method == ANALYTIC && !frame.Light.Casters.empty() && !this->WarnedAnalyticShadows)
-  {
-    vtkWarningWithObjectMacro(frame.Owner,
-      "Method ANALYTIC ignores shadows, but "
-        << frame.Light.Casters.size()
-        << " prop(s) reach into the light's volume: use SLICES or AUTOMATIC for shadowed shafts.");
-    this->WarnedAnalyticShadows = true;
-  }
-  return method;
-}
-
-//------------------------------------------------------------------------------
-// The scene, the light's frame, the in-scatter and the composite, in the target the pass draws
-// into, with the GL state it changes restored.
+// The scene, each light's shafts and surface light, and the composite, in the target the pass
+// draws into, with the GL state it changes restored.
 void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   vtkRenderPass* delegate,
-  vtkLight* light)
+  const std::vector<vtkLight*>& lights,
+  bool shadowSurfaces)
 {
   vtkOpenGLState* ostate = frame.Window->GetState();
   vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
@@ -708,25 +745,35 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
   vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
 
-  // The scene, with the samples of the target it is composited into; a second render without
-  // the spotlight when a cookie shapes its light on surfaces (the one decision whether this
-  // frame has a cookie).
+  // The scene, with the samples of the target it is composited into (the overlay step held
+  // back until the end: on top, unfogged); the cookie and noise decided once.
   frame.Scene.Samples = vtkLightShaftResources::TargetSamples();
   frame.Statistics.MultiSamples = frame.Scene.Samples;
-  frame.Cookie = this->Textures.ReadyCookie(frame.Window, frame.Owner);
+  vtkTextureObject* cookie = this->Textures.ReadyCookie(frame.Window, frame.Owner);
+  if (frame.Parameters.NoiseAmplitude > 0.0 && frame.Medium.Scatters())
+  {
+    frame.Noise = this->Textures.ReadyNoise(frame.Window, frame.Owner);
+  }
   vtkSmartPointer<vtkRenderPass> overlay = this->Scene.HoldOverlay(delegate);
   ostate->PushFramebufferBindings();
-  this->Scene.Render(frame, delegate, light, frame.Cookie != nullptr);
-  this->Scene.RestoreOverlay();
+  this->Scene.Render(frame, delegate);
 
-  frame.Light = vtkLightShaftGeometry::ComputeLightFrame(vtkLightShaftModel::DescribeLight(light),
-    frame.Camera,
-    frame.Renderer->GetViewProps(),
-    frame.Parameters.ShadowCasterBounds,
-    this->ShadowMap.GetLightCamera());
-  frame.Statistics.ShadowCasters = static_cast<int>(frame.Light.Casters.size());
-  vtkTextureObject* inScatter = this->RenderInScatter(frame);
+  // Each light: its in-scatter added to the others', its surface light corrected.
+  this->InScatter.Begin(frame);
+  this->SurfaceLight.Begin();
+  frame.Statistics.Lights.resize(lights.size());
+  for (size_t i = 0; i < lights.size(); ++i)
+  {
+    frame.LightStatistics = &frame.Statistics.Lights[i];
+    this->RenderLight(frame, delegate, lights[i], cookie, shadowSurfaces);
+  }
+  frame.LightStatistics = nullptr;
+  this->Scene.RestoreOverlay();
+  bool computed = false;
+  vtkTextureObject* inScatter = this->InScatter.Finish(frame, computed);
   this->FinalInScatter = inScatter;
+  this->InScatterValid = computed;
+  frame.Scene.SurfaceCorrection = this->SurfaceLight.GetCorrection();
   ostate->PopFramebufferBindings();
 
   const int* origin = frame.Origin;
@@ -744,76 +791,97 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
 }
 
 //------------------------------------------------------------------------------
-// L_in at full resolution: the method's, post-processed; zeros when nothing scatters into
-// the view.
-vtkTextureObject* vtkLightShaftPass::Internals::RenderInScatter(vtkLightShaftFrame& frame)
+// One light: its frame (geometry, casters, shadow cameras), its in-scatter and its surface
+// light, timed.
+void vtkLightShaftPass::Internals::RenderLight(vtkLightShaftFrame& frame,
+  vtkRenderPass* delegate,
+  vtkLight* light,
+  vtkTextureObject* cookie,
+  bool shadowSurfaces)
 {
-  const int resolved = this->ChooseMethod(frame);
-  vtkLightShaftMethod* method = this->GetMethod(resolved);
-  int buffers = 1;
-  const vtkLightShaftResources::TextureKind kind =
-    method->AccumulationKind(frame.Parameters, buffers);
-  this->Target.Prepare(frame, buffers, kind);
-  vtkTextureObject* zero = this->Target.GetAccumulation(0);
-  const double* intensity = frame.Light.Model.RadiantIntensity;
-  const bool radiates = intensity[0] > 0.0 || intensity[1] > 0.0 || intensity[2] > 0.0;
-  if (!frame.Medium.Scatters() || !radiates)
+  vtkLightShaftLightState& state = this->Lights.StateOf(light);
+  vtkLightShaftLightStatistics& stats = *frame.LightStatistics;
+  frame.Light = vtkLightShaftGeometry::ComputeLightFrame(vtkLightShaftModel::DescribeLight(light),
+    frame.Camera,
+    frame.Renderer->GetViewProps(),
+    frame.Parameters.ShadowCasterBounds);
+  frame.ShadowMap = &state.ShadowMap;
+  stats.Light = light;
+  stats.Kind = static_cast<int>(frame.Light.Model.Kind);
+  stats.ShadowCasters = static_cast<int>(frame.Light.Casters.size());
+  // The cookie shapes spot and directional lights (a point light would need a cube of them).
+  const bool point = frame.Light.Model.Kind == vtkLightShaftModel::LightKind::Point;
+  frame.Cookie = point ? nullptr : cookie;
+  if (point && cookie && !this->WarnedPointCookie)
   {
-    return zero;
+    vtkWarningWithObjectMacro(frame.Owner,
+      "The cookie shapes spot and directional lights only: point light " << light << " gets none.");
+    this->WarnedPointCookie = true;
   }
-  const vtkLightShaftGeometry::LitVolume lit =
-    vtkLightShaftGeometry::ComputeLitVolume(frame.Light, frame.Camera);
-  if (lit.Empty())
+
+  const bool timed = vtkOpenGLRenderTimer::IsSupported();
+  if (timed)
   {
-    return zero; // the light volume is outside the view: nothing to do
+    state.Timer.ReusableStart();
   }
-  frame.Statistics.SliceDepthRange[0] = lit.Nearest;
-  frame.Statistics.SliceDepthRange[1] = lit.Deepest;
-  frame.Statistics.Method = resolved;
-  if (frame.Parameters.NoiseAmplitude > 0.0)
+  if (frame.Medium.Scatters())
   {
-    frame.Noise = this->Textures.ReadyNoise(frame.Window, frame.Owner);
+    this->InScatter.Add(frame, this->InScatter.ChooseMethod(frame));
   }
-  vtkTextureObject* computed = method->Render(frame, lit, this->Target);
-  if (frame.ShaderMethod)
+  if (shadowSurfaces || frame.Cookie)
   {
-    this->ShaderMethod = frame.ShaderMethod;
+    vtkTextureObject* map = shadowSurfaces ? frame.ShadowMap->Ready(frame) : nullptr;
+    this->SurfaceLight.Add(frame, this->Scene, delegate, light, map);
   }
-  if (!computed)
+  if (timed)
   {
-    return zero;
+    state.Timer.ReusableStop();
+    const double seconds = state.Timer.GetReusableElapsedSeconds();
+    stats.Time = seconds > 0.0 ? 1e3 * seconds : -1.0;
   }
-  this->InScatterValid = true;
-  return this->Post.Render(frame, computed, this->Target.GetDepth(), frame.Scene.ShaftDepth);
+  frame.ShadowMap = nullptr;
 }
 
 //------------------------------------------------------------------------------
-// What the frame did, as the pass's read-outs.
+// What the frame did, as the pass's read-outs: per light, and the totals and first light's
+// values the older read-outs report.
 void vtkLightShaftPass::Internals::Publish(vtkLightShaftPass& self, const vtkLightShaftFrame& frame)
 {
   const vtkLightShaftStatistics& stats = frame.Statistics;
   self.NumberOfRenderedProps = stats.RenderedProps;
   self.LastViewportSize[0] = std::max(frame.Size[0], 0);
   self.LastViewportSize[1] = std::max(frame.Size[1], 0);
-  self.LastMethod = stats.Method;
-  self.LastNumberOfSlicesDrawn = stats.SlicesDrawn;
   self.LastNumberOfSlabBatches = stats.SlabBatches;
   self.LastLatticeResolution = stats.LatticeResolution;
   self.LastNumberOfPostPasses = stats.PostPasses;
   self.LastNumberOfSceneRenders = stats.SceneRenders;
   self.LastMultiSamples = stats.MultiSamples;
   self.LastPlainScene = stats.PlainScene;
-  self.LastShadowMapRendered = stats.ShadowMapRendered;
-  self.LastNumberOfShadowCasters = stats.ShadowCasters;
   self.LastSliceDepthRange[0] = stats.SliceDepthRange[0];
   self.LastSliceDepthRange[1] = stats.SliceDepthRange[1];
   self.LastRadialGuardBand = stats.RadialGuardBand;
-  if (stats.ShadowMapRendered)
+  self.LastMethod = -1;
+  self.LastNumberOfSlicesDrawn = 0;
+  self.LastShadowMapRendered = false;
+  self.LastNumberOfShadowCasters = 0;
+  for (const vtkLightShaftLightStatistics& light : stats.Lights)
   {
-    self.LastLightDepthRange[0] = stats.LightDepthRange[0];
-    self.LastLightDepthRange[1] = stats.LightDepthRange[1];
-    self.LastShadowBias = stats.ShadowBias;
+    if (self.LastMethod < 0)
+    {
+      self.LastMethod = light.Method;
+    }
+    self.LastNumberOfSlicesDrawn += light.SlicesDrawn;
+    self.LastNumberOfShadowCasters += light.ShadowCasters;
+    const bool mapped = light.ShadowMapRendered || light.ShadowMapReused;
+    if (mapped && !self.LastShadowMapRendered)
+    {
+      self.LastLightDepthRange[0] = light.LightDepthRange[0];
+      self.LastLightDepthRange[1] = light.LightDepthRange[1];
+      self.LastShadowBias = light.ShadowBias;
+    }
+    self.LastShadowMapRendered = self.LastShadowMapRendered || mapped;
   }
+  self.Impl->LastLights = stats.Lights;
 }
 
 //------------------------------------------------------------------------------
@@ -862,10 +930,18 @@ bool vtkLightShaftPass::GetInScatteredRadiance(vtkImageData* out)
 }
 
 //------------------------------------------------------------------------------
-bool vtkLightShaftPass::GetLastShadowMap(vtkImageData* depths, vtkMatrix4x4* worldToLightClip)
+bool vtkLightShaftPass::GetLastShadowMap(vtkImageData* depths,
+  vtkMatrix4x4* worldToLightClip,
+  int index)
 {
-  return depths && worldToLightClip && this->LastShadowMapRendered &&
-         this->Impl->ShadowMap.ReadBack(this->Impl->Window, depths, worldToLightClip);
+  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
+  if (!depths || !worldToLightClip || !light || !light->Light ||
+      !(light->ShadowMapRendered || light->ShadowMapReused))
+  {
+    return false;
+  }
+  return this->Impl->Lights.StateOf(light->Light)
+    .ShadowMap.ReadBack(this->Impl->Window, depths, worldToLightClip);
 }
 
 //------------------------------------------------------------------------------
@@ -881,7 +957,7 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
     }
     os << ")\n";
   };
-  os << indent << "Light: " << this->Impl->Light.Get() << "\n";
+  os << indent << "Lights: " << this->GetNumberOfLights() << " given\n";
   print("ScatteringCoefficient", this->ScatteringCoefficient, 3);
   print("AbsorptionCoefficient", this->AbsorptionCoefficient, 3);
   os << indent << "PhaseFunction: " << this->PhaseFunction << "\n";

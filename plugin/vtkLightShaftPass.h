@@ -1,7 +1,8 @@
 /**
  * @class   vtkLightShaftPass
- * @brief   Adds physically based volumetric light shafts (single scattering of a spotlight in a
- *          homogeneous participating medium, shadowed by the scene) to any VTK scene.
+ * @brief   Adds physically based volumetric light shafts (single scattering of the scene's
+ *          lights in a homogeneous participating medium, shadowed by the scene) to any VTK
+ *          scene.
  *
  * Use it as the renderer's pass:
  * @code{.cpp}
@@ -14,46 +15,58 @@
  *  1. renders the scene through its delegate pass into an off-screen colour + depth target
  *     (with no delegate set it renders as VTK's default vtkRenderStepsPass would, and keeps the
  *     2D overlay step for the end so text and scalar bars stay on top and unfogged);
- *  2. renders a depth map of the scene's opaque geometry from the spotlight (shadow map);
- *  3. draws view-aligned slabs covering only the part of the view volume inside the light's
- *     cone, each fragment integrating the in-scattered radiance over its slab of the pixel's
- *     view ray, and accumulates them additively in a 32-bit float target;
- *  4. composites: out = scene * exp(-sigma_t * t_surface) + Exposure * L_in.
+ *  2. for each light that scatters (every switched-on spot and point light of the renderer, or
+ *     the lights given with SetLight / AddLight, directional ones included): renders a depth
+ *     map of the opaque geometry that can shadow its light (a perspective map for a spot, a
+ *     cube of six for a point light, an orthographic one for a directional light), kept from
+ *     frame to frame while nothing that decides it changes; draws view-aligned slabs covering
+ *     only the part of the view volume the light reaches, each fragment integrating the
+ *     in-scattered radiance over its slab of the pixel's view ray, added in a 32-bit float
+ *     target; and with ShadowSurfaces (or a cookie) takes the shadowed light off the surfaces;
+ *  3. composites: out = scene * exp(-sigma_t * t_surface) + Exposure * L_in.
  *
  * The in-scattered radiance along the pixel-centre view ray x = eye + t d, up to the first
- * surface (or the far clipping plane) at distance t_s, is
+ * surface (or the far clipping plane) at distance t_s, is the sum over the lights of
  *
  *   L_in = int_0^{t_s} sigma_s p(cos theta) I S(x) A(r) V(x) exp(-sigma_t r) exp(-sigma_t t) dt
  *
- * with r = |x - light|, I = intensity * diffuse colour, S the VTK spot term (0 outside the cone
- * half-angle GetConeAngle(), else cos(angle to the axis)^GetExponent()), A = 1 / (c0 + c1 r +
- * c2 r^2) from GetAttenuationValues(), V the shadow-map visibility, sigma_t = sigma_s + sigma_a
+ * with I = intensity * diffuse colour, V the shadow-map visibility, sigma_t = sigma_s + sigma_a
  * per colour channel, and p the phase function normalised over the sphere. theta is the
- * scattering angle between the light's propagation direction (x - light) / r and the direction
- * towards the eye, -d: cos theta = -d . (x - light) / r, so Henyey-Greenstein with g > 0 is
- * forward scattering (brightest looking into the light).
+ * scattering angle between the light's propagation direction l and the direction towards the
+ * eye, -d: cos theta = -d . l, so Henyey-Greenstein with g > 0 is forward scattering (brightest
+ * looking into the light). Per kind of light (LightKindType):
+ *  - spot (positional, cone angle below 90 degrees): r = |x - light|, l = (x - light) / r, S the
+ *    VTK spot term (0 outside the cone half-angle GetConeAngle(), else cos(angle to the
+ *    axis)^GetExponent()), A = 1 / (c0 + c1 r + c2 r^2) from GetAttenuationValues();
+ *  - point (positional, cone angle of 90 degrees or more): as a spot without the cone: S = 1;
+ *  - directional (not positional): parallel light travelling from Position towards FocalPoint
+ *    (unit direction a) that lights the half-space beyond the plane through Position
+ *    perpendicular to a: r = (x - Position) . a is the distance from that plane (so a sun placed
+ *    above the scene crosses an explicit depth of medium), l = a, S = A = 1.
  *
- * Within each slab the pass clips the ray exactly to the cone and the surface, integrates A(r)
- * in closed form (exact when c1 = 0), weights the phase, spot and extinction factors with
- * 3-point Gauss-Legendre in the equiangular angle, and looks up the shadow map once, at the
- * segment's midpoint; the error shrinks as the number of slices grows (docs/accuracy.md).
- * Slab fragments that start behind the scene surface are culled by the depth test.
+ * Within each slab the pass clips the ray exactly to where the light shines and to the
+ * surface, integrates A(r) in closed form (exact when c1 = 0), weights the phase, spot and
+ * extinction factors with 3-point Gauss-Legendre in the equiangular angle, and looks up the
+ * shadow map once, at the segment's midpoint; the error shrinks as the number of slices grows
+ * (docs/accuracy.md). Slab fragments that start behind the scene surface are culled by the
+ * depth test.
  *
  * That is the default method, SLICES. SetMethod() selects another way to compute the same
  * L_in: RAY_MARCH (per-pixel march with interleaved sampling), RADIAL_BLUR (screen-space
  * radial blur of an occlusion buffer over the unshadowed integral), ANALYTIC (the unshadowed
  * integral, exact when nothing occludes) or AUTOMATIC; SetLatticeResolution() evaluates the
- * slabs' smooth factors on a lattice. README "Methods" has their measured cost and error.
+ * slabs' smooth factors on a lattice. Every method supports every kind of light. README
+ * "Methods" has their measured cost and error.
  *
  * With both coefficients zero, or with no usable light, the pass renders the delegate's image
  * unchanged (pixel-identical; one warning for a missing light).
  *
  * The lit pool on surfaces comes from VTK's own lighting, which has no shadows. With
- * ShadowSurfaces on (and no delegate set) the scene is rendered with VTK's vtkShadowMapPass in
- * the opaque step, so the floor shows the same occluder shadows as the shafts; with your own
- * delegate, put a vtkShadowMapPass in it (see README "Shadows on surfaces").
+ * ShadowSurfaces on, the pass takes each light's shadowed light off the surfaces with the same
+ * shadow maps the shafts use (with any delegate), so floors show the same occluders as the
+ * shafts; the cookie shapes the surfaces' light the same way.
  *
- * @sa vtkImageProcessingPass vtkShadowMapPass
+ * @sa vtkImageProcessingPass vtkLightShaftReference
  */
 
 #ifndef vtkLightShaftPass_h
@@ -123,21 +136,42 @@ public:
    */
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  /// The kinds of VTK light (README "Light kinds" has each one's conventions and formulas).
+  enum LightKindType
+  {
+    SPOT_LIGHT = 0,       ///< positional, cone angle below 90 degrees
+    POINT_LIGHT = 1,      ///< positional, cone angle of 90 degrees or more (no cone)
+    DIRECTIONAL_LIGHT = 2 ///< not positional: parallel light from Position towards FocalPoint
+  };
+
   ///@{
   /**
-   * The spotlight that scatters. With none set (nullptr), the pass uses the first light of the
-   * renderer that is switched on, positional, and has a cone angle below 90 degrees.
-   * Default is nullptr (automatic choice).
+   * The lights that scatter. With none given, every switched-on spot and point light of the
+   * renderer scatters (directional lights only when given: VTK's default headlight and light
+   * kits are directional). Given lights may be of any kind; a given light that is switched
+   * off contributes nothing. SetLight(l) means "only l" (SetLight(nullptr): automatic);
+   * AddLight adds one more (ignored when already given), RemoveLight takes one out,
+   * RemoveAllLights goes back to the automatic choice. GetLight() is the first given light
+   * (nullptr: automatic), GetLight(i) the i-th. Default is none given (automatic choice).
    */
   void SetLight(vtkLight* light);
+  void AddLight(vtkLight* light);
+  void RemoveLight(vtkLight* light);
+  void RemoveAllLights();
+  int GetNumberOfLights();
   vtkLight* GetLight();
+  vtkLight* GetLight(int index);
   ///@}
 
+  ///@{
   /**
-   * The light used by the last frame (the one set, or the automatic choice); nullptr when the
-   * last frame found no usable light.
+   * The lights the last frame used (the given ones that were switched on, or the automatic
+   * choice), in the order their in-scatter was added: how many, and the i-th (nullptr out of
+   * range). GetLastUsedLight() is the first; nullptr when the last frame found no usable light.
    */
-  vtkLight* GetLastUsedLight();
+  int GetLastNumberOfUsedLights();
+  vtkLight* GetLastUsedLight(int index = 0);
+  ///@}
 
   ///@{
   /**
@@ -207,10 +241,12 @@ public:
 
   ///@{
   /**
-   * Shadow the surfaces too: when no delegate is set, render the scene's opaque step through
-   * VTK's vtkShadowMapPass (shadow maps of ShadowMapSize texels for every shadow-casting light),
-   * so the pool of light on the floor shows the same shadows as the shafts. Ignored when a
-   * delegate is set. Default is off (the scene renders exactly as vtkRenderStepsPass would).
+   * Shadow the surfaces too: take off the surfaces the light of each scattering light that its
+   * shadow map (the shafts' own) shadows, so the pool of light on the floor shows the same
+   * shadows as the shafts, for every kind of light and with any delegate. Costs one more render
+   * of the scene and one full-screen pass per light that has casters (README "Shadows on
+   * surfaces"); applies also when the medium is empty. Default is off (the scene renders
+   * exactly as the delegate renders it).
    */
   vtkSetMacro(ShadowSurfaces, bool);
   vtkGetMacro(ShadowSurfaces, bool);
@@ -229,8 +265,9 @@ public:
 
   ///@{
   /**
-   * Side of the square shadow map in texels, in [16, 16384] (further limited at render time to
-   * the GL implementation's maximum texture size). Default is 1024.
+   * Side of each light's square shadow map in texels, in [16, 16384] (further limited at render
+   * time to the GL implementation's maximum texture size; a point light's six cube faces each
+   * have this side, at most a third of that maximum). Default is 1024.
    */
   vtkSetClampMacro(ShadowMapSize, int, 16, 16384);
   vtkGetMacro(ShadowMapSize, int);
@@ -238,12 +275,15 @@ public:
 
   ///@{
   /**
-   * Spotlight cookie (gobo): an RGB image projected from the light through its cone. It
-   * multiplies the light's intensity per direction, in the shafts and on the surfaces the
-   * spotlight lights (the scene is then rendered twice, with and without the spotlight). The
-   * image fills the square that circumscribes the cone's cross-section, centred on the axis;
-   * its rows run along the light camera's view-up (world +Y projected, or +X for lights aiming
-   * along Y). 8-bit images map 255 to 1, float images are used as they are (clamped to >= 0).
+   * Cookie (gobo): an RGB image projected from each spot and directional light. It multiplies
+   * the light's intensity per direction (a directional light's per position across its beam),
+   * in the shafts and on the surfaces the light lights (the scene is then rendered once more
+   * per such light, without it). For a spotlight the image fills the square that circumscribes
+   * the cone's cross-section, centred on the axis (clamped beyond it); for a directional light
+   * it covers a square of side |FocalPoint - Position| centred on the axis through Position and
+   * repeats across the light's plane (clouds, a canopy). Its rows run along the light camera's
+   * view-up (world +Y projected, or +X for lights aiming along Y). Point lights get no cookie
+   * (one warning). 8-bit images map 255 to 1, float images are used as they are (clamped to >= 0).
    * Mipmapped; the level follows each sample's footprint, so small cookie details near the
    * light are smoothed rather than aliased. nullptr turns it off. Default is nullptr.
    */
@@ -255,11 +295,13 @@ public:
   /**
    * Scrolling-noise density (the GDC 2004 talk's two scrolling layers): the scattering
    * coefficient at x is sigma_s * (1 + NoiseAmplitude * (N1 * N2 - 1)), N1 and N2 two tileable
-   * noise layers in the light's projective space, each of mean 1 over its tile, scaled by
-   * NoiseScale (tiles across the light's square) and moved by NoiseVelocity1/2 (tiles per unit
-   * of Time). The mean density is therefore sigma_s (exactly, when the layers are uncorrelated):
-   * the amplitude changes the texture, not the average brightness. Extinction keeps the mean
-   * coefficient. NoiseAmplitude in [0, 1], 0 = homogeneous (no noise code runs). Default is 0.
+   * noise layers projected from each light (a spot's and a directional light's square, as the
+   * cookie; a point light's unit sphere of directions, triplanar), each of mean 1 over its tile,
+   * scaled by NoiseScale (tiles across the light's square) and moved by NoiseVelocity1/2 (tiles
+   * per unit of Time). The mean density is therefore sigma_s (exactly, when the layers are
+   * uncorrelated): the amplitude changes the texture, not the average brightness. Extinction keeps
+   * the mean coefficient. NoiseAmplitude in [0, 1], 0 = homogeneous (no noise code runs). Default
+   * is 0.
    */
   void SetNoiseAmplitude(double amplitude);
   vtkGetMacro(NoiseAmplitude, double);
@@ -580,10 +622,12 @@ public:
 
   ///@{
   /**
-   * The last frame's shadow map: whether one was rendered, from how many casters (the props
-   * whose bounds reach into the light's volume), the light camera's near and far distances,
-   * and the relative depth tolerance of its lookup (lit when w <= stored depth * (1 + bias),
-   * nearest texel). The depth range and bias are those of the last map rendered.
+   * The last frame's shadow maps: whether any light's shafts were shadowed by one (rendered
+   * this frame or reused), and how many casters they had (summed over the lights: the props
+   * whose bounds reach into each light's volume). The light camera's near and far distances
+   * and the depth tolerance of the lookup are the first shadowed light's: for spot and point
+   * lights relative (lit when w <= stored depth * (1 + bias), nearest texel), for a directional
+   * light absolute, in world units (lit when depth <= stored depth + bias).
    */
   vtkGetMacro(LastShadowMapRendered, bool);
   vtkGetMacro(LastNumberOfShadowCasters, int);
@@ -591,13 +635,35 @@ public:
   vtkGetMacro(LastShadowBias, double);
   ///@}
 
+  ///@{
   /**
-   * The last frame's shadow map, for a reference that uses the same visibility
-   * (vtkLightShaftReference::SetVisibilityModeToShadowMap): `depths` gets the depth-buffer
-   * values (float, N x N, 1 = nothing), `worldToLightClip` the light camera's world-to-clip
-   * matrix. Returns false when the last frame rendered no shadow map.
+   * What the last frame did for its i-th used light (0 <= i < GetLastNumberOfUsedLights();
+   * out of range: -1, 0 or false): its kind (LightKindType); the method that computed its
+   * in-scatter (-1: none, e.g. its light is outside the view); the slabs drawn for it; whether
+   * its shadow map was rendered this frame, or reused from an earlier frame because nothing
+   * that decides it changed (the light, its casters and their data, the map's size and
+   * extent); its casters; and the GPU time its in-scatter took (its shadow map, slabs or march
+   * and own passes), in milliseconds, measured with OpenGL timer queries of the most recent
+   * frame whose queries completed (-1 where timer queries are not available).
    */
-  bool GetLastShadowMap(vtkImageData* depths, vtkMatrix4x4* worldToLightClip);
+  int GetLastLightKind(int index);
+  int GetLastLightMethod(int index);
+  int GetLastLightSlicesDrawn(int index);
+  bool GetLastLightShadowMapRendered(int index);
+  bool GetLastLightShadowMapReused(int index);
+  int GetLastLightShadowCasters(int index);
+  double GetLastLightTime(int index);
+  ///@}
+
+  /**
+   * The last frame's shadow map of its i-th used light (default the first), for a reference
+   * that uses the same visibility (vtkLightShaftReference::SetVisibilityModeToShadowMap):
+   * `depths` gets the depth-buffer values (float, N x N, 1 = nothing), `worldToLightClip` the
+   * light camera's world-to-clip matrix (perspective for a spot, orthographic for a
+   * directional light). Returns false when that light had no shadow map, and for a point
+   * light (its map is a cube: six cameras).
+   */
+  bool GetLastShadowMap(vtkImageData* depths, vtkMatrix4x4* worldToLightClip, int index = 0);
 
   /**
    * The shadow map's depth texture (32-bit float depth, N x N, 1 = nothing) while

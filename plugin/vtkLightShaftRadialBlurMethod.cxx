@@ -27,10 +27,9 @@
 using vtkLightShaftResources::TextureKind;
 
 //------------------------------------------------------------------------------
-vtkLightShaftRadialBlurMethod::vtkLightShaftRadialBlurMethod(vtkLightShaftShadowMap& shadowMap,
+vtkLightShaftRadialBlurMethod::vtkLightShaftRadialBlurMethod(
   vtkLightShaftAnalyticMethod& unshadowed)
-  : ShadowMap(shadowMap)
-  , Unshadowed(unshadowed)
+  : Unshadowed(unshadowed)
 {
 }
 
@@ -49,26 +48,11 @@ vtkTextureObject* vtkLightShaftRadialBlurMethod::Render(vtkLightShaftFrame& fram
     return unshadowed;
   }
 
-  // Where the light projects, and how much to trust it: the blur fades out as the light nears
-  // the camera plane (its projection runs off to infinity, then mirrors behind the camera).
-  const glm::dvec3& lightVC = frame.Light.PositionVC;
-  const glm::dvec4 lightClip = frame.Camera.ViewToClip * glm::dvec4(lightVC, 1.0);
+  float lightUV[2];
   double fade = 1.0;
-  if (frame.Camera.Perspective)
-  {
-    const double inFront = -lightVC.z / std::max(glm::length(lightVC), 1e-30);
-    fade = vtkMath::ClampValue(inFront / 0.1, 0.0, 1.0);
-  }
-  if (fade <= 0.0 || !(std::abs(lightClip.w) > 0.0))
+  if (!LightOnScreen(frame, lightUV, fade))
   {
     return unshadowed;
-  }
-  float lightUV[2];
-  for (int i = 0; i < 2; ++i)
-  {
-    // Clamped far outside the screen: the walk is cut at the screen's edge anyway.
-    lightUV[i] =
-      static_cast<float>(vtkMath::ClampValue(0.5 * lightClip[i] / lightClip.w + 0.5, -1e6, 1e6));
   }
   const double guard = this->GuardBand(frame);
   vtkTextureObject* occlusion = this->RenderOcclusion(frame, target.GetDepth(), guard);
@@ -77,6 +61,50 @@ vtkTextureObject* vtkLightShaftRadialBlurMethod::Render(vtkLightShaftFrame& fram
     return unshadowed;
   }
   return this->Blur(frame, unshadowed, occlusion, lightUV, fade, guard);
+}
+
+//------------------------------------------------------------------------------
+// Where the light projects (texture coordinates, clamped far outside the screen: the walk is
+// cut at the screen's edge anyway), and how much to trust it: the blur fades out as the light
+// nears the camera plane (its projection runs off to infinity, then mirrors behind the camera).
+// A directional light projects where its direction's vanishing point is (perspective), or far
+// along its direction across the screen (parallel). False when there is no blur to do.
+bool vtkLightShaftRadialBlurMethod::LightOnScreen(const vtkLightShaftFrame& frame,
+  float lightUV[2],
+  double& fade)
+{
+  const vtkLightShaftGeometry::LightFrame& light = frame.Light;
+  const bool directional = light.Model.Kind == vtkLightShaftModel::LightKind::Directional;
+  const glm::dvec3& lightVC = light.PositionVC;
+  glm::dvec4 lightClip = frame.Camera.ViewToClip *
+                         (directional ? glm::dvec4(-light.AxisVC, 0.0) : glm::dvec4(lightVC, 1.0));
+  fade = 1.0;
+  if (frame.Camera.Perspective)
+  {
+    const double inFront =
+      directional ? light.AxisVC.z : -lightVC.z / std::max(glm::length(lightVC), 1e-30);
+    fade = vtkMath::ClampValue(inFront / 0.1, 0.0, 1.0);
+  }
+  else if (directional)
+  {
+    // Parallel rays on the screen: the light lies at infinity along its screen direction.
+    const glm::dvec2 across = glm::dvec2(lightClip);
+    if (glm::length(across) < 1e-9)
+    {
+      return false;
+    }
+    lightClip = glm::dvec4(1e6 * glm::normalize(across), 0.0, 1.0);
+  }
+  if (fade <= 0.0 || !(std::abs(lightClip.w) > 0.0))
+  {
+    return false;
+  }
+  for (int i = 0; i < 2; ++i)
+  {
+    lightUV[i] =
+      static_cast<float>(vtkMath::ClampValue(0.5 * lightClip[i] / lightClip.w + 0.5, -1e6, 1e6));
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -131,7 +159,8 @@ vtkTextureObject* vtkLightShaftRadialBlurMethod::RenderOcclusion(vtkLightShaftFr
         vtkMath::DegreesFromRadians(2.0 * std::atan(std::tan(halfAngle) * guard)));
     }
     occluderDepth = this->GuardDepth.Ensure(window, TextureKind::Depth, mw, mh);
-    this->ShadowMap.RenderCasters(frame, guardCamera, this->GuardFramebuffer, occluderDepth);
+    frame.ShadowMap->RenderCasters(
+      frame, frame.Light.Casters, guardCamera, this->GuardFramebuffer, occluderDepth);
     window->GetState()->vtkglDisable(GL_DEPTH_TEST);
     // The same view; x and y of the projection scaled by 1 / g.
     const glm::dmat4 scale = glm::scale(glm::dmat4(1.0), glm::dvec3(1.0 / guard, 1.0 / guard, 1.0));
@@ -146,7 +175,9 @@ vtkTextureObject* vtkLightShaftRadialBlurMethod::RenderOcclusion(vtkLightShaftFr
     nullptr,
     mw,
     mh);
-  vtkShaderProgram* program = this->Occlusion.Ready(window, vtkLightShaftOcclusionFS);
+  vtkLightShaftShaders::Variant kind;
+  vtkLightShaftShaders::AddLightKind(kind, frame.Light.Model);
+  vtkShaderProgram* program = this->Occlusion.Ready(window, vtkLightShaftOcclusionFS, kind.Defines);
   if (!program)
   {
     return nullptr;
@@ -154,11 +185,7 @@ vtkTextureObject* vtkLightShaftRadialBlurMethod::RenderOcclusion(vtkLightShaftFr
   occluderDepth->Activate();
   program->SetUniformi("sceneDepth", occluderDepth->GetTextureUnit());
   vtkLightShaftShaders::SetViewUniforms(program, occluderCamera, mw, mh);
-  const vtkLightShaftGeometry::LightFrame& light = frame.Light;
-  program->SetUniform3f(
-    "lightPositionVC", vtkLightShaftGeometry::ToFloat3(light.PositionVC).data());
-  program->SetUniform3f("lightAxisVC", vtkLightShaftGeometry::ToFloat3(light.AxisVC).data());
-  program->SetUniformf("cosConeAngle", static_cast<float>(std::cos(light.Model.ConeHalfAngle)));
+  vtkLightShaftShaders::SetLightUniforms(program, frame.Light);
   this->Occlusion.Render();
   occluderDepth->Deactivate();
   return mask;

@@ -14,7 +14,6 @@
 
 class vtkCamera;
 class vtkLightShaftAnalyticMethod;
-class vtkLightShaftShadowMap;
 class vtkOpenGLFramebufferObject;
 
 /**
@@ -31,17 +30,18 @@ class vtkOpenGLFramebufferObject;
 class vtkLightShaftRadialBlurMethod : public vtkLightShaftMethod
 {
 public:
-  vtkLightShaftRadialBlurMethod(vtkLightShaftShadowMap& shadowMap,
-    vtkLightShaftAnalyticMethod& unshadowed);
+  explicit vtkLightShaftRadialBlurMethod(vtkLightShaftAnalyticMethod& unshadowed);
   ~vtkLightShaftRadialBlurMethod() override;
 
   const char* GetName() const override { return "radial-blur"; }
+  bool AddsIntoTarget(const vtkLightShaftParameters&) const override { return false; }
   vtkTextureObject* Render(vtkLightShaftFrame& frame,
     const vtkLightShaftGeometry::LitVolume& lit,
     vtkLightShaftInScatterTarget& target) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
 private:
+  static bool LightOnScreen(const vtkLightShaftFrame& frame, float lightUV[2], double& fade);
   double GuardBand(const vtkLightShaftFrame& frame);
   vtkTextureObject* RenderOcclusion(vtkLightShaftFrame& frame,
     vtkTextureObject* depth,
@@ -53,7 +53,6 @@ private:
     double fade,
     double guard);
 
-  vtkLightShaftShadowMap& ShadowMap;
   vtkLightShaftAnalyticMethod& Unshadowed;
   vtkNew<vtkCamera> GuardCamera;
   vtkLightShaftResources::OwnedTexture GuardDepth;

@@ -2,6 +2,7 @@
 
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftInScatterTarget.h"
+#include "vtkLightShaftPass.h"
 #include "vtkLightShaftShadowMap.h"
 #include "vtkLightShaftSlabDrawer.h"
 
@@ -10,16 +11,17 @@
 #include "vtkLightShaftRayMarchFS.h"
 
 //------------------------------------------------------------------------------
-vtkLightShaftRayMarchMethod::vtkLightShaftRayMarchMethod(vtkLightShaftShadowMap& shadowMap,
-  vtkLightShaftSlabDrawer& drawer,
-  unsigned long shadowMapEvent)
-  : ShadowMap(shadowMap)
-  , Drawer(drawer)
-  , ShadowMapEvent(shadowMapEvent)
+vtkLightShaftRayMarchMethod::vtkLightShaftRayMarchMethod(vtkLightShaftSlabDrawer& drawer)
+  : Drawer(drawer)
 {
 }
 
 vtkLightShaftRayMarchMethod::~vtkLightShaftRayMarchMethod() = default;
+
+bool vtkLightShaftRayMarchMethod::AddsIntoTarget(const vtkLightShaftParameters& parameters) const
+{
+  return parameters.InterleaveSize <= 1; // else the gather writes another texture
+}
 
 //------------------------------------------------------------------------------
 vtkTextureObject* vtkLightShaftRayMarchMethod::Render(vtkLightShaftFrame& frame,
@@ -32,13 +34,10 @@ vtkTextureObject* vtkLightShaftRayMarchMethod::Render(vtkLightShaftFrame& frame,
   {
     return nullptr;
   }
-  const bool shadows = this->ShadowMap.Render(frame, this->ShadowMapEvent);
-  vtkLightShaftShaders::Variant variant = vtkLightShaftShaders::IntegrandVariant(this->GetName(),
-    "LIGHTSHAFT_RAY_MARCH",
-    frame.Medium.Phase,
-    shadows,
-    frame.Cookie,
-    frame.Noise);
+  vtkTextureObject* shadowMap = frame.ShadowMap->Ready(frame);
+  const bool shadows = shadowMap != nullptr;
+  vtkLightShaftShaders::Variant variant =
+    vtkLightShaftShaders::IntegrandVariant(this->GetName(), "LIGHTSHAFT_RAY_MARCH", frame, shadows);
   variant.Description += FloatAccumulation(p);
   vtkShaderProgram* program = this->ReadySlabProgram(frame, vtkLightShaftRayMarchFS, variant);
   if (!program)
@@ -51,10 +50,10 @@ vtkTextureObject* vtkLightShaftRayMarchMethod::Render(vtkLightShaftFrame& frame,
   target.Bind();
   vtkLightShaftSlabDrawer::Slabs slabs =
     vtkLightShaftSlabDrawer::Slabs::Over(lit, this->Footprints, target.GetDepth());
-  slabs.ShadowMap = shadows ? this->ShadowMap.GetTexture() : nullptr;
-  slabs.ShadowBias = shadows ? frame.Statistics.ShadowBias : 0.0;
+  slabs.ShadowMap = shadowMap;
+  slabs.ShadowBias = shadows ? frame.LightStatistics->ShadowBias : 0.0;
   this->Drawer.Draw(frame, program, slabs);
-  frame.Statistics.SlicesDrawn = static_cast<int>(this->Footprints.size());
+  frame.LightStatistics->SlicesDrawn = static_cast<int>(this->Footprints.size());
 
   vtkTextureObject* marched = target.GetAccumulation(0);
   if (p.InterleaveSize > 1)

@@ -12,7 +12,6 @@
 
 #include <vector> // For the footprint
 
-class vtkLightShaftShadowMap;
 class vtkLightShaftSlabDrawer;
 
 /**
@@ -27,21 +26,18 @@ class vtkLightShaftSlabDrawer;
 class vtkLightShaftRayMarchMethod : public vtkLightShaftMethod
 {
 public:
-  vtkLightShaftRayMarchMethod(vtkLightShaftShadowMap& shadowMap,
-    vtkLightShaftSlabDrawer& drawer,
-    unsigned long shadowMapEvent);
+  explicit vtkLightShaftRayMarchMethod(vtkLightShaftSlabDrawer& drawer);
   ~vtkLightShaftRayMarchMethod() override;
 
   const char* GetName() const override { return "ray-march"; }
+  bool AddsIntoTarget(const vtkLightShaftParameters& parameters) const override;
   vtkTextureObject* Render(vtkLightShaftFrame& frame,
     const vtkLightShaftGeometry::LitVolume& lit,
     vtkLightShaftInScatterTarget& target) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
 private:
-  vtkLightShaftShadowMap& ShadowMap;
   vtkLightShaftSlabDrawer& Drawer;
-  unsigned long ShadowMapEvent;
   std::vector<vtkLightShaftGeometry::SlabFootprint> Footprints;
   vtkLightShaftSeparableFilter Gather;
 };

@@ -226,7 +226,13 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
   output->GetPointData()->AddArray(errors);
 
   // The light, chosen as the pass chooses it, and the model of light and medium.
-  vtkLight* light = vtkLightShaftModel::FindLight(pass->GetLight(), ren);
+  std::vector<vtkLight*> given;
+  for (int i = 0; i < pass->GetNumberOfLights(); ++i)
+  {
+    given.push_back(pass->GetLight(i));
+  }
+  const std::vector<vtkLight*> lights = vtkLightShaftModel::FindLights(given, ren);
+  vtkLight* light = lights.empty() ? nullptr : lights[0];
   if (!light || !light->GetSwitch())
   {
     return 1; // no usable light: no in-scatter

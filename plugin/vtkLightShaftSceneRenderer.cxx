@@ -2,46 +2,29 @@
 
 #include "vtkLightShaftFrame.h"
 
-#include "vtkCamera.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
-#include "vtkLightCollection.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkProp.h"
-#include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
-#include "vtkSequencePass.h"
 #include "vtkShaderProgram.h"
-#include "vtkShadowMapBakerPass.h"
-#include "vtkShadowMapPass.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
 #include "vtkLightShaftDepthResolveFS.h"
 
 #include <algorithm>
-#include <functional>
 #include <vector>
 
 using vtkLightShaftResources::TextureKind;
 
 //------------------------------------------------------------------------------
-vtkLightShaftSceneRenderer::vtkLightShaftSceneRenderer()
-{
-  // Shadowed opaque step: bake the lights' shadow maps, then render the opaque props with them.
-  vtkNew<vtkRenderPassCollection> shadowedOpaque;
-  shadowedOpaque->AddItem(this->SurfaceShadows->GetShadowMapBakerPass());
-  shadowedOpaque->AddItem(this->SurfaceShadows);
-  vtkNew<vtkSequencePass> shadowedSequence;
-  shadowedSequence->SetPasses(shadowedOpaque);
-  this->ShadowedDelegate->SetOpaquePass(shadowedSequence);
-}
-
+vtkLightShaftSceneRenderer::vtkLightShaftSceneRenderer() = default;
 vtkLightShaftSceneRenderer::~vtkLightShaftSceneRenderer() = default;
 
 //------------------------------------------------------------------------------
@@ -86,77 +69,16 @@ int vtkLightShaftSceneRenderer::RenderPlain(vtkRenderPass* pass,
 }
 
 //------------------------------------------------------------------------------
-vtkRenderPass* vtkLightShaftSceneRenderer::ChooseDelegate(vtkRenderPass* userDelegate,
-  bool shadowSurfaces,
-  int shadowMapSize,
-  vtkOpenGLRenderWindow* window)
+vtkRenderPass* vtkLightShaftSceneRenderer::ChooseDelegate(vtkRenderPass* userDelegate)
 {
-  if (userDelegate)
-  {
-    return userDelegate;
-  }
-  if (shadowSurfaces)
-  {
-    // VTK's baker does not check the size against the GL's limit: the pass does.
-    this->SurfaceShadows->GetShadowMapBakerPass()->SetResolution(
-      std::min(shadowMapSize, vtkTextureObject::GetMaximumTextureSize(window)));
-    return this->ShadowedDelegate;
-  }
-  return this->DefaultDelegate;
-}
-
-//------------------------------------------------------------------------------
-// VTK 9.1's shadow-map baker gives its light cameras the renderer's aspect ratio, so on a
-// non-square viewport the surface shadows come out squeezed. Its cameras persist between
-// frames: pin their aspect to the square shadow map's. Returns true when a camera had to be
-// fixed (its shadow map, baked this frame, was wrong).
-bool vtkLightShaftSceneRenderer::FixSurfaceShadowCameras()
-{
-  bool fixed = false;
-  if (auto* cameras = this->SurfaceShadows->GetShadowMapBakerPass()->GetLightCameras())
-  {
-    for (auto& camera : *cameras)
-    {
-      if (camera &&
-          (!camera->GetUseExplicitAspectRatio() || camera->GetExplicitAspectRatio() != 1.0))
-      {
-        camera->SetExplicitAspectRatio(1.0);
-        camera->SetUseExplicitAspectRatio(true);
-        fixed = true;
-      }
-    }
-  }
-  return fixed;
-}
-
-//------------------------------------------------------------------------------
-// Render `delegate` with state `s` (`prepare` before each render); with the shadowed delegate,
-// make sure its shadow maps were baked with square cameras (re-render once when they were not).
-void vtkLightShaftSceneRenderer::RenderDelegate(vtkLightShaftFrame& frame,
-  vtkRenderPass* delegate,
-  const vtkRenderState* s,
-  const std::function<void()>& prepare)
-{
-  const bool shadowed = delegate == this->ShadowedDelegate.Get();
-  if (shadowed)
-  {
-    this->FixSurfaceShadowCameras();
-  }
-  prepare();
-  delegate->Render(s);
-  if (shadowed && this->FixSurfaceShadowCameras())
-  {
-    frame.Renderer->GetLights()->Modified(); // make the baker bake again
-    prepare();
-    delegate->Render(s);
-  }
-  frame.Statistics.RenderedProps += delegate->GetNumberOfRenderedProps();
+  return userDelegate ? userDelegate : static_cast<vtkRenderPass*>(this->DefaultDelegate);
 }
 
 //------------------------------------------------------------------------------
 void vtkLightShaftSceneRenderer::RenderUnchanged(vtkLightShaftFrame& frame, vtkRenderPass* delegate)
 {
-  this->RenderDelegate(frame, delegate, frame.State, []() {});
+  delegate->Render(frame.State);
+  frame.Statistics.RenderedProps += delegate->GetNumberOfRenderedProps();
   frame.Statistics.SceneRenders = 1;
 }
 
@@ -182,57 +104,67 @@ void vtkLightShaftSceneRenderer::RestoreOverlay()
 }
 
 //------------------------------------------------------------------------------
-void vtkLightShaftSceneRenderer::Render(vtkLightShaftFrame& frame,
+// The delegate's render of the frame's props into `color` and `depth` (cleared).
+void vtkLightShaftSceneRenderer::RenderInto(vtkLightShaftFrame& frame,
   vtkRenderPass* delegate,
-  vtkLight* light,
-  bool twice)
+  vtkTextureObject* color,
+  vtkTextureObject* depth)
+{
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  vtkOpenGLFramebufferObject* fbo =
+    vtkLightShaftResources::EnsureFramebuffer(this->Framebuffer, frame.Window);
+  vtkLightShaftResources::BindTargets(fbo, { color }, depth, frame.Size[0], frame.Size[1]);
+  vtkRenderState sceneState(frame.Renderer);
+  sceneState.SetPropArrayAndCount(frame.State->GetPropArray(), frame.State->GetPropArrayCount());
+  sceneState.SetFrameBuffer(fbo);
+  // Renderers that do not erase (layers) would otherwise see the previous frame.
+  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglClearDepth(1.0);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  delegate->Render(&sceneState);
+  frame.Statistics.RenderedProps += delegate->GetNumberOfRenderedProps();
+  ++frame.Statistics.SceneRenders;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftSceneRenderer::Render(vtkLightShaftFrame& frame, vtkRenderPass* delegate)
 {
   vtkOpenGLRenderWindow* window = frame.Window;
-  vtkOpenGLState* ostate = window->GetState();
   const int w = frame.Size[0];
   const int h = frame.Size[1];
   const int samples = frame.Scene.Samples;
   vtkLightShaftSceneImage& scene = frame.Scene;
   scene.Color = this->Color.Ensure(window, TextureKind::RGBA8, w, h, samples);
   scene.Depth = this->Depth.Ensure(window, TextureKind::Depth, w, h, samples);
-  scene.ColorUnlit =
-    twice ? this->ColorUnlit.Ensure(window, TextureKind::RGBA8, w, h, samples) : nullptr;
-
-  vtkOpenGLFramebufferObject* fbo =
-    vtkLightShaftResources::EnsureFramebuffer(this->Framebuffer, window);
-  scene.Framebuffer = fbo;
-  vtkRenderState sceneState(frame.Renderer);
-  sceneState.SetPropArrayAndCount(frame.State->GetPropArray(), frame.State->GetPropArrayCount());
-  sceneState.SetFrameBuffer(fbo);
-  auto renderInto = [&](vtkTextureObject* target)
-  {
-    vtkLightShaftResources::BindTargets(fbo, { target }, scene.Depth, w, h);
-    // Renderers that do not erase (layers) would otherwise see the previous frame.
-    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-    ostate->vtkglDepthMask(GL_TRUE);
-    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    ostate->vtkglClearDepth(1.0);
-    this->RenderDelegate(frame,
-      delegate,
-      &sceneState,
-      [&]()
-      {
-        ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        ostate->vtkglEnable(GL_DEPTH_TEST);
-      });
-    ++frame.Statistics.SceneRenders;
-  };
-  if (twice)
-  {
-    // Without the spotlight: the composite puts its light back through the cookie. (Zero
-    // intensity rather than switching it off: with no light on, VTK would add a headlight.)
-    const double intensity = light->GetIntensity();
-    light->SetIntensity(0.0);
-    renderInto(scene.ColorUnlit);
-    light->SetIntensity(intensity);
-  }
-  renderInto(scene.Color);
+  this->RenderInto(frame, delegate, scene.Color, scene.Depth);
+  // The composite copies the depth from the framebuffer holding the scene.
+  vtkLightShaftResources::BindTargets(this->Framebuffer, { scene.Color }, scene.Depth, w, h);
+  scene.Framebuffer = this->Framebuffer;
   scene.ShaftDepth = samples > 0 ? this->ResolveDepth(frame, scene.Depth) : scene.Depth;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftSceneRenderer::RenderWithout(vtkLightShaftFrame& frame,
+  vtkRenderPass* delegate,
+  vtkLight* light)
+{
+  vtkOpenGLRenderWindow* window = frame.Window;
+  const int w = frame.Size[0];
+  const int h = frame.Size[1];
+  const int samples = frame.Scene.Samples;
+  vtkTextureObject* unlit = this->ColorUnlit.Ensure(window, TextureKind::RGBA8, w, h, samples);
+  vtkTextureObject* depth = this->DepthUnlit.Ensure(window, TextureKind::Depth, w, h, samples);
+  const double intensity = light->GetIntensity();
+  light->SetIntensity(0.0);
+  this->RenderInto(frame, delegate, unlit, depth);
+  light->SetIntensity(intensity);
+  // The scene's framebuffer holds the scene again (the composite copies its depth).
+  vtkLightShaftResources::BindTargets(
+    this->Framebuffer, { frame.Scene.Color }, frame.Scene.Depth, w, h);
+  return unlit;
 }
 
 //------------------------------------------------------------------------------
@@ -274,8 +206,8 @@ vtkTextureObject* vtkLightShaftSceneRenderer::ResolveDepth(vtkLightShaftFrame& f
 void vtkLightShaftSceneRenderer::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->DefaultDelegate->ReleaseGraphicsResources(window);
-  this->ShadowedDelegate->ReleaseGraphicsResources(window);
-  for (auto* texture : { &this->Color, &this->ColorUnlit, &this->Depth, &this->ResolvedDepth })
+  for (auto* texture :
+    { &this->Color, &this->ColorUnlit, &this->Depth, &this->DepthUnlit, &this->ResolvedDepth })
   {
     texture->Release(window);
   }

@@ -10,24 +10,22 @@
 #include "vtkNew.h"                 // For the delegates held
 #include "vtkSmartPointer.h"        // For the framebuffers held
 
-#include <functional> // For the step before each delegate render
-
 class vtkLight;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkRenderPass;
 class vtkRenderState;
 class vtkRenderStepsPass;
-class vtkShadowMapPass;
+class vtkTextureObject;
 class vtkWindow;
 struct vtkLightShaftFrame;
 
 /**
  * @class   vtkLightShaftSceneRenderer
  * @brief   Renders the scene the shafts go into: the delegate (or, with none, VTK's default
- *          steps, optionally with surface shadows), into targets multisampled like the pass's
- *          own target, once with and (for a cookie on surfaces) once without the spotlight; and
- *          the renders that must stay plain (selection, enclosing passes).
+ *          steps), into targets multisampled like the pass's own target, with all its lights
+ *          and, for the surface light of a shadowed or cookie-shaped light, without that light;
+ *          and the renders that must stay plain (selection, enclosing passes).
  *
  * The 2D overlay step of a vtkRenderStepsPass delegate is held back while the scene renders,
  * so that the pass can draw it after compositing (on top, unfogged).
@@ -54,12 +52,8 @@ public:
    */
   int RenderPlain(vtkRenderPass* pass, vtkRenderPass* userDelegate, const vtkRenderState* s);
 
-  /// The pass that renders the scene: `userDelegate`, else VTK's default steps, with the
-  /// opaque step shadowed by vtkShadowMapPass when `shadowSurfaces` (maps of `shadowMapSize`).
-  vtkRenderPass* ChooseDelegate(vtkRenderPass* userDelegate,
-    bool shadowSurfaces,
-    int shadowMapSize,
-    vtkOpenGLRenderWindow* window);
+  /// The pass that renders the scene: `userDelegate`, else VTK's default steps.
+  vtkRenderPass* ChooseDelegate(vtkRenderPass* userDelegate);
 
   /// `delegate` into the current target, unchanged (no shafts this frame).
   void RenderUnchanged(vtkLightShaftFrame& frame, vtkRenderPass* delegate);
@@ -72,11 +66,19 @@ public:
   void RestoreOverlay();
 
   /**
-   * Render the scene into the frame's scene image (frame.Scene), with the samples of the
-   * target the pass draws into; `twice`: also without `light` (its intensity at zero), for a
-   * cookie on surfaces.
+   * Render the scene into the frame's scene image (frame.Scene: colour, depth and the depth the
+   * shafts read), with the samples of the target the pass draws into.
    */
-  void Render(vtkLightShaftFrame& frame, vtkRenderPass* delegate, vtkLight* light, bool twice);
+  void Render(vtkLightShaftFrame& frame, vtkRenderPass* delegate);
+
+  /**
+   * Render the scene again without `light` (its intensity at zero: with no light on, VTK would
+   * add a headlight) into a colour texture like the scene's, returned (valid until the next
+   * call).
+   */
+  vtkTextureObject* RenderWithout(vtkLightShaftFrame& frame,
+    vtkRenderPass* delegate,
+    vtkLight* light);
 
   void ReleaseGraphicsResources(vtkWindow* window);
 
@@ -84,22 +86,20 @@ private:
   vtkLightShaftSceneRenderer(const vtkLightShaftSceneRenderer&) = delete;
   void operator=(const vtkLightShaftSceneRenderer&) = delete;
 
-  void RenderDelegate(vtkLightShaftFrame& frame,
+  void RenderInto(vtkLightShaftFrame& frame,
     vtkRenderPass* delegate,
-    const vtkRenderState* s,
-    const std::function<void()>& prepare);
-  bool FixSurfaceShadowCameras();
+    vtkTextureObject* color,
+    vtkTextureObject* depth);
   vtkTextureObject* ResolveDepth(vtkLightShaftFrame& frame, vtkTextureObject* depthSamples);
 
   vtkNew<vtkRenderStepsPass> DefaultDelegate;
-  vtkNew<vtkRenderStepsPass> ShadowedDelegate;
-  vtkNew<vtkShadowMapPass> SurfaceShadows;
   vtkRenderStepsPass* OverlayOwner = nullptr;
   vtkSmartPointer<vtkRenderPass> HeldOverlay;
 
   vtkLightShaftResources::OwnedTexture Color;
   vtkLightShaftResources::OwnedTexture ColorUnlit;
   vtkLightShaftResources::OwnedTexture Depth;
+  vtkLightShaftResources::OwnedTexture DepthUnlit;
   vtkLightShaftResources::OwnedTexture ResolvedDepth;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkSmartPointer<vtkOpenGLFramebufferObject> ResolveFramebuffer;

@@ -11,6 +11,8 @@
 
 #include "vtkLightShaftCommon.h"
 #include "vtkLightShaftIntegrand.h"
+#include "vtkLightShaftLightKind.h"
+#include "vtkLightShaftLightSpace.h"
 #include "vtkLightShaftSegment.h"
 
 #include <algorithm>
@@ -36,6 +38,9 @@ std::string WithFeatures(const char* source, const std::vector<std::string>& def
   vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Common", vtkLightShaftCommon);
   vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Integrand", vtkLightShaftIntegrand);
   vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Segment", vtkLightShaftSegment);
+  // Chunks the ones above use (each guarded against being included twice).
+  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::LightSpace", vtkLightShaftLightSpace);
+  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::LightKind", vtkLightShaftLightKind);
   return out;
 }
 
@@ -49,12 +54,28 @@ void Variant::Feature(bool on, const char* define, const char* name)
   }
 }
 
+void AddLightKind(Variant& variant, const vtkLightShaftModel::Light& light)
+{
+  switch (light.Kind)
+  {
+    case vtkLightShaftModel::LightKind::Point:
+      variant.Defines.emplace_back("LIGHTSHAFT_POINT");
+      variant.Description += " light=point";
+      break;
+    case vtkLightShaftModel::LightKind::Directional:
+      variant.Defines.emplace_back("LIGHTSHAFT_DIRECTIONAL");
+      variant.Description += " light=directional";
+      break;
+    default:
+      variant.Description += " light=spot";
+      break;
+  }
+}
+
 Variant IntegrandVariant(const char* methodName,
   const char* methodDefine,
-  int phase,
-  bool shadows,
-  bool cookie,
-  bool noise)
+  const vtkLightShaftFrame& frame,
+  bool shadows)
 {
   Variant variant;
   if (methodDefine)
@@ -62,7 +83,7 @@ Variant IntegrandVariant(const char* methodName,
     variant.Defines.emplace_back(methodDefine);
   }
   variant.Description = std::string("method=") + methodName + " ";
-  switch (phase)
+  switch (frame.Medium.Phase)
   {
     case vtkLightShaftPass::HENYEY_GREENSTEIN:
       variant.Defines.emplace_back("LIGHTSHAFT_PHASE_HG");
@@ -76,9 +97,10 @@ Variant IntegrandVariant(const char* methodName,
       variant.Description += "phase=isotropic";
       break;
   }
+  AddLightKind(variant, frame.Light.Model);
   variant.Feature(shadows, "LIGHTSHAFT_SHADOW", "shadow");
-  variant.Feature(cookie, "LIGHTSHAFT_COOKIE", "cookie");
-  variant.Feature(noise, "LIGHTSHAFT_NOISE", "noise");
+  variant.Feature(frame.Cookie != nullptr, "LIGHTSHAFT_COOKIE", "cookie");
+  variant.Feature(frame.Noise != nullptr, "LIGHTSHAFT_NOISE", "noise");
   return variant;
 }
 
@@ -125,14 +147,25 @@ void SetViewUniforms(vtkShaderProgram* program,
   program->SetUniform2f("targetSize", targetSize);
 }
 
-void SetIntegrandUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame)
+void SetLightUniforms(vtkShaderProgram* program, const vtkLightShaftGeometry::LightFrame& light)
 {
-  const vtkLightShaftGeometry::LightFrame& light = frame.Light;
   program->SetUniform3f(
     "lightPositionVC", vtkLightShaftGeometry::ToFloat3(light.PositionVC).data());
   program->SetUniform3f("lightAxisVC", vtkLightShaftGeometry::ToFloat3(light.AxisVC).data());
-  program->SetUniformf("cosConeAngle", static_cast<float>(std::cos(light.Model.ConeHalfAngle)));
-  program->SetUniformf("spotExponent", static_cast<float>(light.Model.Exponent));
+  if (light.Model.Kind == vtkLightShaftModel::LightKind::Spot)
+  {
+    program->SetUniformf("cosConeAngle", static_cast<float>(std::cos(light.Model.ConeHalfAngle)));
+  }
+}
+
+void SetIntegrandUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame)
+{
+  const vtkLightShaftGeometry::LightFrame& light = frame.Light;
+  SetLightUniforms(program, light);
+  if (light.Model.Kind == vtkLightShaftModel::LightKind::Spot)
+  {
+    program->SetUniformf("spotExponent", static_cast<float>(light.Model.Exponent));
+  }
   program->SetUniform3f("attenuationCoefficients", light.Model.Attenuation);
   program->SetUniform3f("lightRadiantIntensity", light.Model.RadiantIntensity);
   program->SetUniform3f("sigmaS", frame.Medium.SigmaS);
@@ -143,19 +176,80 @@ void SetIntegrandUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& f
   }
 }
 
-void SetLightSpaceUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame, int width)
+void SetLightSpaceUniforms(vtkShaderProgram* program,
+  const vtkLightShaftFrame& frame,
+  int width,
+  vtkTextureObject* shadowMap)
 {
-  auto lightMatrix = vtkLightShaftGeometry::ToFloatColumnMajor(frame.Light.ViewToLightClip);
-  program->SetUniformMatrix4x4("lightClipFromVC", lightMatrix.data());
+  const vtkLightShaftGeometry::LightFrame& light = frame.Light;
   const glm::dvec2 footprint = frame.Camera.PixelFootprint(width);
   const float pixelFootprint[2] = { static_cast<float>(footprint.x),
     static_cast<float>(footprint.y) };
   program->SetUniform2f("pixelFootprint", pixelFootprint);
-  program->SetUniformf("lightTexelAngle", static_cast<float>(2.0 * frame.Light.BoundsVC.Tangent));
+  const glm::dvec2 squareWidth = light.Model.SquareWidth();
+  const float lightSquareWidth[2] = { static_cast<float>(squareWidth.x),
+    static_cast<float>(squareWidth.y) };
+  program->SetUniform2f("lightSquareWidth", lightSquareWidth);
+  const bool point = light.Model.Kind == vtkLightShaftModel::LightKind::Point;
+  if (!point)
+  {
+    auto square = vtkLightShaftGeometry::ToFloatColumnMajor(light.ViewToLightSquare);
+    program->SetUniformMatrix4x4("lightSquareFromVC", square.data());
+  }
+  else
+  {
+    float worldFromVC[9];
+    for (int column = 0; column < 3; ++column)
+    {
+      for (int row = 0; row < 3; ++row)
+      {
+        worldFromVC[3 * column + row] = static_cast<float>(light.ViewToWorld[column][row]);
+      }
+    }
+    program->SetUniformMatrix3x3("worldFromVC", worldFromVC);
+  }
+  if (!shadowMap)
+  {
+    return;
+  }
+  shadowMap->Activate();
+  program->SetUniformi("shadowMap", shadowMap->GetTextureUnit());
+  const float depthRange[2] = { static_cast<float>(light.Near), static_cast<float>(light.Far) };
+  program->SetUniform2f("lightDepthRange", depthRange);
+  if (point)
+  {
+    std::vector<float> faces;
+    for (const vtkLightShaftGeometry::LightView& view : light.Views)
+    {
+      const auto face = vtkLightShaftGeometry::ToFloatColumnMajor(view.ViewToClip);
+      faces.insert(faces.end(), face.begin(), face.end());
+    }
+    program->SetUniformMatrix4x4v("faceClipFromVC", 6, faces.data());
+    program->SetUniformf("shadowFaceSize", static_cast<float>(shadowMap->GetHeight() / 2));
+  }
+  else
+  {
+    auto lightMatrix = vtkLightShaftGeometry::ToFloatColumnMajor(light.ViewToLightClip);
+    program->SetUniformMatrix4x4("lightClipFromVC", lightMatrix.data());
+  }
 }
 
-void SetCookieUniforms(vtkShaderProgram* program, vtkTextureObject* cookie)
+void SetCookieUniforms(vtkShaderProgram* program,
+  vtkTextureObject* cookie,
+  const vtkLightShaftModel::Light& light)
 {
+  // A spot's cookie covers its square (clamped beyond, where the cone ends anyway); a
+  // directional light's tiles its plane.
+  const int wrap = light.Kind == vtkLightShaftModel::LightKind::Directional
+                     ? vtkTextureObject::Repeat
+                     : vtkTextureObject::ClampToEdge;
+  if (cookie->GetWrapS() != wrap)
+  {
+    cookie->SetWrapS(wrap);
+    cookie->SetWrapT(wrap);
+    cookie->Activate();
+    cookie->SendParameters();
+  }
   cookie->Activate();
   program->SetUniformi("cookieTexture", cookie->GetTextureUnit());
   program->SetUniformf(

@@ -19,6 +19,11 @@ struct vtkLightShaftFrame;
 namespace vtkLightShaftGeometry
 {
 struct CameraFrame;
+struct LightFrame;
+}
+namespace vtkLightShaftModel
+{
+struct Light;
 }
 
 namespace vtkLightShaftShaders
@@ -28,8 +33,9 @@ std::string JoinDefines(const std::vector<std::string>& defines);
 
 /**
  * `source` with its features (//VTK::LightShaft::Features: the defines) and the shared chunks
- * substituted: //VTK::LightShaft::Common (the view ray), ::Integrand (light, medium, cone, smooth
- * factors), ::Segment (light-space lookups, one segment's integral, the lit interval).
+ * substituted: //VTK::LightShaft::Common (the view ray), ::Integrand (medium, smooth factors),
+ * ::Segment (one segment's integral, the lit interval), ::LightSpace (shadow map, cookie and
+ * noise lookups), ::LightKind (where a light of the variant's kind shines, its distance r).
  */
 std::string WithFeatures(const char* source, const std::vector<std::string>& defines);
 
@@ -46,16 +52,19 @@ struct Variant
   void Feature(bool on, const char* define, const char* name);
 };
 
+/// The light's kind: its define (LIGHTSHAFT_POINT, LIGHTSHAFT_DIRECTIONAL; none for a spot)
+/// and " light=spot|point|directional".
+void AddLightKind(Variant& variant, const vtkLightShaftModel::Light& light);
+
 /**
- * The variant of a method's slab shaders: the method's define (may be nullptr), the phase
- * function, and the light-space features in use this frame (shadow, cookie, noise).
+ * The variant of a method's slab shaders for the frame's current light: the method's define
+ * (may be nullptr), the phase function, the light's kind, and the light-space features in use
+ * (shadow, cookie, noise).
  */
 Variant IntegrandVariant(const char* methodName,
   const char* methodDefine,
-  int phase,
-  bool shadows,
-  bool cookie,
-  bool noise);
+  const vtkLightShaftFrame& frame,
+  bool shadows);
 
 /**
  * A vertex + fragment program from the window's shader cache, rebuilt only when its variant
@@ -86,15 +95,27 @@ void SetViewUniforms(vtkShaderProgram* program,
   int width,
   int height);
 
+/// Where the light is and points (the LightKind chunk's uniforms), in view coordinates.
+void SetLightUniforms(vtkShaderProgram* program, const vtkLightShaftGeometry::LightFrame& light);
+
 /// The light and the medium (the integrand's uniforms), in view coordinates.
 void SetIntegrandUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame);
 
-/// The light camera's clip coordinates and the footprints that pick cookie and noise levels,
-/// for a target `width` pixels wide.
-void SetLightSpaceUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame, int width);
+/**
+ * The LightSpace chunk's uniforms for the frame's current light and a target `width` pixels
+ * wide: the light's square and footprints (cookie and noise levels), and with `shadowMap`
+ * (activated here) the map's cameras and depth range.
+ */
+void SetLightSpaceUniforms(vtkShaderProgram* program,
+  const vtkLightShaftFrame& frame,
+  int width,
+  vtkTextureObject* shadowMap);
 
-/// The cookie texture (activated) and its size.
-void SetCookieUniforms(vtkShaderProgram* program, vtkTextureObject* cookie);
+/// The cookie texture (activated; clamped for a spot, repeating for a directional light) and
+/// its size.
+void SetCookieUniforms(vtkShaderProgram* program,
+  vtkTextureObject* cookie,
+  const vtkLightShaftModel::Light& light);
 }
 
 #endif

@@ -2,6 +2,7 @@
 
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftGeometry.h"
+#include "vtkLightShaftPass.h"
 
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
@@ -14,6 +15,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkPointData.h"
+#include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
@@ -21,7 +23,9 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
-#include <vector>
+
+using vtkLightShaftModel::LightKind;
+using vtkLightShaftResources::TextureKind;
 
 //------------------------------------------------------------------------------
 vtkLightShaftShadowMap::vtkLightShaftShadowMap()
@@ -30,11 +34,6 @@ vtkLightShaftShadowMap::vtkLightShaftShadowMap()
 }
 
 vtkLightShaftShadowMap::~vtkLightShaftShadowMap() = default;
-
-vtkCamera* vtkLightShaftShadowMap::GetLightCamera()
-{
-  return this->LightCamera;
-}
 
 vtkTextureObject* vtkLightShaftShadowMap::GetTexture()
 {
@@ -47,42 +46,148 @@ vtkTextureObject* vtkLightShaftShadowMap::GetEventTexture()
 }
 
 //------------------------------------------------------------------------------
-bool vtkLightShaftShadowMap::Render(vtkLightShaftFrame& frame, unsigned long eventId)
+bool vtkLightShaftShadowMap::Signature::operator==(const Signature& other) const
 {
+  return this->Cameras == other.Cameras && this->Casters == other.Casters &&
+         this->Range[0] == other.Range[0] && this->Range[1] == other.Range[1] &&
+         this->Size == other.Size;
+}
+
+vtkLightShaftShadowMap::Signature vtkLightShaftShadowMap::Sign(vtkLightShaftFrame& frame,
+  int size) const
+{
+  Signature signature;
+  for (const vtkLightShaftGeometry::LightView& view : frame.Light.Views)
+  {
+    signature.Cameras.push_back(view.WorldToClip);
+    for (vtkProp* caster : view.Casters)
+    {
+      signature.Casters.emplace_back(caster, caster->GetRedrawMTime());
+    }
+  }
+  signature.Range[0] = frame.Light.Near;
+  signature.Range[1] = frame.Light.Far;
+  signature.Size = size;
+  return signature;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftShadowMap::Ready(vtkLightShaftFrame& frame)
+{
+  vtkLightShaftLightStatistics& stats = *frame.LightStatistics;
   if (!frame.Light.ShadowsPossible)
   {
-    return false; // nothing can shadow the light's volume
+    return nullptr; // nothing can shadow the light's volume
+  }
+  if (this->Valid && this->RenderedFrame == frame.Number)
+  {
+    return this->Map.Object; // already readied this frame
   }
   vtkOpenGLRenderWindow* window = frame.Window;
-  const int size =
-    std::min(frame.Parameters.ShadowMapSize, vtkTextureObject::GetMaximumTextureSize(window));
-  vtkTextureObject* map =
-    this->Map.Ensure(window, vtkLightShaftResources::TextureKind::Depth32F, size, size);
-  this->RenderCasters(frame, this->LightCamera, this->Framebuffer, map);
+  const bool cube = frame.Light.Model.Kind == LightKind::Point;
+  const int maximum = vtkTextureObject::GetMaximumTextureSize(window) / (cube ? 3 : 1);
+  const int size = std::max(1, std::min(frame.Parameters.ShadowMapSize, maximum));
+  Signature signature = this->Sign(frame, size);
+  const bool observed = frame.Owner->HasObserver(vtkLightShaftPass::ShadowMapRenderedEvent);
+  if (this->Valid && !observed && this->Cube == cube && signature == this->Rendered)
+  {
+    stats.ShadowMapReused = true;
+  }
+  else
+  {
+    if (cube)
+    {
+      this->RenderCube(frame, size);
+    }
+    else
+    {
+      vtkTextureObject* map = this->Map.Ensure(window, TextureKind::Depth32F, size, size);
+      this->SetCamera(frame.Light.Views[0]);
+      this->RenderCasters(
+        frame, frame.Light.Views[0].Casters, this->LightCamera, this->Framebuffer, map);
+    }
+    // Observers may read and rewrite the map now (distributed processes combine theirs).
+    this->EventTexture = this->Map.Object;
+    frame.Owner->InvokeEvent(vtkLightShaftPass::ShadowMapRenderedEvent);
+    this->EventTexture = nullptr;
+    this->Rendered = std::move(signature);
+    this->Cube = cube;
+    this->Valid = true;
+    this->WorldToLightClip = frame.Light.WorldToLightClip;
+    stats.ShadowMapRendered = true;
+  }
+  this->RenderedFrame = frame.Number;
+  stats.LightDepthRange[0] = frame.Light.Near;
+  stats.LightDepthRange[1] = frame.Light.Far;
+  stats.ShadowBias = this->GetBias(frame);
+  return this->Map.Object;
+}
 
-  // Observers may read and rewrite the map now (distributed processes combine theirs).
-  this->EventTexture = map;
-  frame.Owner->InvokeEvent(eventId);
-  this->EventTexture = nullptr;
+//------------------------------------------------------------------------------
+// A point light's six faces, each rendered on its own and copied into its cell of the atlas
+// (faces without casters stay cleared).
+void vtkLightShaftShadowMap::RenderCube(vtkLightShaftFrame& frame, int size)
+{
+  vtkOpenGLRenderWindow* window = frame.Window;
+  vtkOpenGLState* ostate = window->GetState();
+  vtkTextureObject* atlas = this->Map.Ensure(window, TextureKind::Depth32F, 3 * size, 2 * size);
+  vtkOpenGLFramebufferObject* atlasTarget =
+    vtkLightShaftResources::EnsureFramebuffer(this->Framebuffer, window);
+  vtkLightShaftResources::BindTargets(atlasTarget, {}, atlas, 3 * size, 2 * size);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglClearDepth(1.0);
+  ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  vtkTextureObject* face = this->Face.Ensure(window, TextureKind::Depth32F, size, size);
+  for (int f = 0; f < 6; ++f)
+  {
+    vtkLightShaftGeometry::LightView& view = frame.Light.Views[f];
+    if (view.Casters.empty())
+    {
+      continue;
+    }
+    this->SetCamera(view);
+    this->RenderCasters(frame, view.Casters, this->LightCamera, this->FaceFramebuffer, face);
+    const int x = (f % 3) * size;
+    const int y = (f / 3) * size;
+    ostate->PushFramebufferBindings();
+    this->FaceFramebuffer->Bind(GL_READ_FRAMEBUFFER);
+    atlasTarget->Bind(GL_DRAW_FRAMEBUFFER);
+    ostate->vtkglDisable(GL_SCISSOR_TEST);
+    ostate->vtkglBlitFramebuffer(
+      0, 0, size, size, x, y, x + size, y + size, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    ostate->PopFramebufferBindings();
+  }
+}
 
-  this->Valid = true;
-  this->WorldToLightClip = frame.Light.WorldToLightClip;
-  frame.Statistics.ShadowMapRendered = true;
-  frame.Statistics.LightDepthRange[0] = frame.Light.Near;
-  frame.Statistics.LightDepthRange[1] = frame.Light.Far;
-  frame.Statistics.ShadowBias = this->GetBias(frame);
-  return true;
+//------------------------------------------------------------------------------
+void vtkLightShaftShadowMap::SetCamera(const vtkLightShaftGeometry::LightView& view)
+{
+  vtkCamera* camera = this->LightCamera;
+  camera->SetPosition(view.Position.x, view.Position.y, view.Position.z);
+  camera->SetFocalPoint(view.FocalPoint.x, view.FocalPoint.y, view.FocalPoint.z);
+  camera->SetViewUp(view.ViewUp.x, view.ViewUp.y, view.ViewUp.z);
+  vtkNew<vtkMatrix4x4> projection;
+  vtkLightShaftGeometry::ToVTKMatrix(view.Projection, projection);
+  camera->SetExplicitProjectionTransformMatrix(projection);
+  camera->SetUseExplicitProjectionTransformMatrix(true);
 }
 
 //------------------------------------------------------------------------------
 double vtkLightShaftShadowMap::GetBias(const vtkLightShaftFrame& frame)
 {
-  const double texelAngle = 2.0 * frame.Light.BoundsVC.Tangent / this->Map.Object->GetWidth();
-  return static_cast<float>(2.0 * texelAngle + 1e-4);
+  const vtkLightShaftGeometry::LightFrame& light = frame.Light;
+  const int texels = static_cast<int>(this->Map.Object->GetHeight()) / (this->Cube ? 2 : 1);
+  const double texel = light.MapExtent / std::max(texels, 1);
+  if (light.Model.Kind == LightKind::Directional)
+  {
+    return 2.0 * texel + 1e-4 * (light.Far - light.Near);
+  }
+  return static_cast<float>(2.0 * texel + 1e-4);
 }
 
 //------------------------------------------------------------------------------
 void vtkLightShaftShadowMap::RenderCasters(vtkLightShaftFrame& frame,
+  std::vector<vtkProp*>& casters,
   vtkCamera* camera,
   vtkSmartPointer<vtkOpenGLFramebufferObject>& target,
   vtkTextureObject* depth)
@@ -99,7 +204,6 @@ void vtkLightShaftShadowMap::RenderCasters(vtkLightShaftFrame& frame,
   ostate->vtkglDepthFunc(GL_LEQUAL);
 
   vtkRenderer* ren = frame.Renderer;
-  std::vector<vtkProp*>& casters = frame.Light.Casters;
   vtkRenderState casterState(ren);
   casterState.SetPropArrayAndCount(casters.data(), static_cast<int>(casters.size()));
   casterState.SetFrameBuffer(fbo);
@@ -128,7 +232,7 @@ bool vtkLightShaftShadowMap::ReadBack(vtkOpenGLRenderWindow* window,
   vtkMatrix4x4* worldToLightClip)
 {
   vtkTextureObject* map = this->Map.Object;
-  if (!this->Valid || !window || !map || !this->Framebuffer)
+  if (!this->Valid || this->Cube || !window || !map || !this->Framebuffer)
   {
     return false;
   }
@@ -141,7 +245,7 @@ bool vtkLightShaftShadowMap::ReadBack(vtkOpenGLRenderWindow* window,
   window->MakeCurrent();
   vtkOpenGLState* ostate = window->GetState();
   ostate->PushFramebufferBindings();
-  this->Framebuffer->Bind(GL_READ_FRAMEBUFFER);
+  this->Framebuffer->Bind(GL_READ_FRAMEBUFFER); // still holds the map (RenderCasters)
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, size, size, GL_DEPTH_COMPONENT, GL_FLOAT, values->GetPointer(0));
   ostate->PopFramebufferBindings();
@@ -155,6 +259,9 @@ void vtkLightShaftShadowMap::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->CameraPass->ReleaseGraphicsResources(window);
   this->Map.Release(window);
+  this->Face.Release(window);
   vtkLightShaftResources::ReleaseFramebuffer(this->Framebuffer, window);
+  vtkLightShaftResources::ReleaseFramebuffer(this->FaceFramebuffer, window);
   this->Valid = false;
+  this->RenderedFrame = -1;
 }

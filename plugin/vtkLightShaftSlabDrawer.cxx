@@ -60,20 +60,15 @@ void vtkLightShaftSlabDrawer::SetUniforms(vtkLightShaftFrame& frame,
   vtkLightShaftShaders::SetIntegrandUniforms(program, frame);
   if (slabs.ShadowMap || frame.Cookie || frame.Noise)
   {
-    vtkLightShaftShaders::SetLightSpaceUniforms(program, frame, lw);
+    vtkLightShaftShaders::SetLightSpaceUniforms(program, frame, lw, slabs.ShadowMap);
   }
   if (slabs.ShadowMap)
   {
-    slabs.ShadowMap->Activate();
-    program->SetUniformi("shadowMap", slabs.ShadowMap->GetTextureUnit());
-    const float depthRange[2] = { static_cast<float>(frame.Light.Near),
-      static_cast<float>(frame.Light.Far) };
-    program->SetUniform2f("lightDepthRange", depthRange);
     program->SetUniformf("shadowBias", static_cast<float>(slabs.ShadowBias));
   }
   if (frame.Cookie)
   {
-    vtkLightShaftShaders::SetCookieUniforms(program, frame.Cookie);
+    vtkLightShaftShaders::SetCookieUniforms(program, frame.Cookie, frame.Light.Model);
   }
   if (frame.Noise)
   {

@@ -20,12 +20,8 @@
 using vtkLightShaftResources::TextureKind;
 
 //------------------------------------------------------------------------------
-vtkLightShaftSlicesMethod::vtkLightShaftSlicesMethod(vtkLightShaftShadowMap& shadowMap,
-  vtkLightShaftSlabDrawer& drawer,
-  unsigned long shadowMapEvent)
-  : ShadowMap(shadowMap)
-  , Drawer(drawer)
-  , ShadowMapEvent(shadowMapEvent)
+vtkLightShaftSlicesMethod::vtkLightShaftSlicesMethod(vtkLightShaftSlabDrawer& drawer)
+  : Drawer(drawer)
 {
 }
 
@@ -41,6 +37,11 @@ TextureKind vtkLightShaftSlicesMethod::AccumulationKind(const vtkLightShaftParam
     return TextureKind::RGBA8;
   }
   return this->vtkLightShaftMethod::AccumulationKind(parameters, buffers);
+}
+
+bool vtkLightShaftSlicesMethod::AddsIntoTarget(const vtkLightShaftParameters& parameters) const
+{
+  return parameters.AccumulationPrecision != vtkLightShaftPass::ACCUMULATE_8BIT;
 }
 
 //------------------------------------------------------------------------------
@@ -99,11 +100,12 @@ vtkTextureObject* vtkLightShaftSlicesMethod::Render(vtkLightShaftFrame& frame,
   const int lattice = this->LatticeWithinBudget(frame, static_cast<int>(this->Footprints.size()));
   frame.Statistics.LatticeResolution = lattice;
 
-  // Shadow map of the casters (skipped when nothing can shadow).
-  const bool shadows = this->ShadowMap.Render(frame, this->ShadowMapEvent);
+  // Shadow map of the casters (none when nothing can shadow).
+  vtkTextureObject* shadowMap = frame.ShadowMap->Ready(frame);
+  const bool shadows = shadowMap != nullptr;
   const bool eightBit = p.AccumulationPrecision == vtkLightShaftPass::ACCUMULATE_8BIT;
-  vtkLightShaftShaders::Variant variant = vtkLightShaftShaders::IntegrandVariant(
-    this->GetName(), nullptr, frame.Medium.Phase, shadows, frame.Cookie, frame.Noise);
+  vtkLightShaftShaders::Variant variant =
+    vtkLightShaftShaders::IntegrandVariant(this->GetName(), nullptr, frame, shadows);
   variant.Feature(jitter, "LIGHTSHAFT_JITTER", "jitter");
   variant.Feature(p.LatticeResolution > 0, "LIGHTSHAFT_LATTICE", "lattice");
   if (eightBit)
@@ -128,10 +130,10 @@ vtkTextureObject* vtkLightShaftSlicesMethod::Render(vtkLightShaftFrame& frame,
   slabs.Lattice = lattice;
   slabs.LastSlab = jitter ? slices : slices - 1; // with jitter, one more slab
   slabs.LatticeShift = jitter ? -0.5 : 0.0;
-  slabs.ShadowMap = shadows ? this->ShadowMap.GetTexture() : nullptr;
-  slabs.ShadowBias = shadows ? frame.Statistics.ShadowBias : 0.0;
+  slabs.ShadowMap = shadowMap;
+  slabs.ShadowBias = shadows ? frame.LightStatistics->ShadowBias : 0.0;
   this->Drawer.Draw(frame, program, slabs);
-  frame.Statistics.SlicesDrawn = static_cast<int>(this->Footprints.size());
+  frame.LightStatistics->SlicesDrawn = static_cast<int>(this->Footprints.size());
   return eightBit ? this->ResolveEightBit(frame, target) : target.GetAccumulation(0);
 }
 

@@ -13,7 +13,6 @@
 
 #include <vector> // For the footprints
 
-class vtkLightShaftShadowMap;
 class vtkLightShaftSlabDrawer;
 class vtkOpenGLFramebufferObject;
 
@@ -30,14 +29,13 @@ class vtkOpenGLFramebufferObject;
 class vtkLightShaftSlicesMethod : public vtkLightShaftMethod
 {
 public:
-  vtkLightShaftSlicesMethod(vtkLightShaftShadowMap& shadowMap,
-    vtkLightShaftSlabDrawer& drawer,
-    unsigned long shadowMapEvent);
+  explicit vtkLightShaftSlicesMethod(vtkLightShaftSlabDrawer& drawer);
   ~vtkLightShaftSlicesMethod() override;
 
   const char* GetName() const override { return "slices"; }
   vtkLightShaftResources::TextureKind AccumulationKind(const vtkLightShaftParameters& parameters,
     int& buffers) const override;
+  bool AddsIntoTarget(const vtkLightShaftParameters& parameters) const override;
   vtkTextureObject* Render(vtkLightShaftFrame& frame,
     const vtkLightShaftGeometry::LitVolume& lit,
     vtkLightShaftInScatterTarget& target) override;
@@ -49,9 +47,7 @@ private:
   vtkTextureObject* ResolveEightBit(vtkLightShaftFrame& frame,
     vtkLightShaftInScatterTarget& target);
 
-  vtkLightShaftShadowMap& ShadowMap;
   vtkLightShaftSlabDrawer& Drawer;
-  unsigned long ShadowMapEvent;
   std::vector<vtkLightShaftGeometry::SlabFootprint> Footprints;
   bool WarnedLatticeBudget = false;
   vtkLightShaftResources::FullScreenPass Resolve;

@@ -1,6 +1,7 @@
 # The GLSL sources vtkLightShaftPass embeds (vtk_encode_string), shared by the VTK module
 # (plugin/CMakeLists.txt) and the ParaView plugin's module (paraview/plugin/module).
 set(lightshafts_pass_shaders
+  vtkLightShaftAddFS
   vtkLightShaftAnalyticFS
   vtkLightShaftBlurFS
   vtkLightShaftCommon
@@ -8,6 +9,8 @@ set(lightshafts_pass_shaders
   vtkLightShaftDepthDownsampleFS
   vtkLightShaftDepthResolveFS
   vtkLightShaftIntegrand
+  vtkLightShaftLightKind
+  vtkLightShaftLightSpace
   vtkLightShaftOcclusionFS
   vtkLightShaftRadialBlurFS
   vtkLightShaftRayMarchFS
@@ -15,6 +18,7 @@ set(lightshafts_pass_shaders
   vtkLightShaftSegment
   vtkLightShaftSlabVS
   vtkLightShaftSliceFS
+  vtkLightShaftSurfaceLightFS
   vtkLightShaftUpsampleFS)
 set(lightshafts_shader_dir "${CMAKE_CURRENT_LIST_DIR}")
 

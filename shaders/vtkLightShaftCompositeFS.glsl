@@ -1,8 +1,8 @@
 //VTK::System::Dec
-// Composite: out = scene * exp(-sigma_t * t_surface) + Exposure * L_in, depth passed through.
-// Features (#defines): LIGHTSHAFT_ATTENUATE (aerial perspective), LIGHTSHAFT_COOKIE_SURFACES
-// (the cookie shapes the spotlight's light on surfaces: scene = unlit + cookie * (lit - unlit),
-// from two renders of the scene, with and without the spotlight), LIGHTSHAFT_MULTISAMPLE (the
+// Composite: out = (scene - correction) * exp(-sigma_t * t_surface) + Exposure * L_in, depth
+// passed through. Features (#defines): LIGHTSHAFT_ATTENUATE (aerial perspective),
+// LIGHTSHAFT_SURFACE_CORRECTION (the light the lights' shadow maps and cookie take away from
+// the surfaces, vtkLightShaftSurfaceLightFS), LIGHTSHAFT_MULTISAMPLE (the
 // scene was rendered multisampled: the composite runs once per sample, reading and writing that
 // sample's colour and depth, so the target keeps its antialiasing and resolves as it would
 // have without the pass), LIGHTSHAFT_WRITE_DEPTH (the scene's depth is written here, when the
@@ -34,23 +34,17 @@ vec4 sceneColorAt(ivec2 pixel) { return texelFetch(sceneColor, pixel, 0); }
 float sceneDepthAt(ivec2 pixel) { return texelFetch(sceneDepth, pixel, 0).r; }
 #endif
 
-#ifdef LIGHTSHAFT_COOKIE_SURFACES
+#ifdef LIGHTSHAFT_SURFACE_CORRECTION
 #ifdef LIGHTSHAFT_MULTISAMPLE
-uniform sampler2DMS sceneColorUnlitSamples;
-vec4 sceneColorUnlitAt(ivec2 pixel)
+uniform sampler2DMS surfaceCorrectionSamples;
+vec3 surfaceCorrectionAt(ivec2 pixel)
 {
-  return texelFetch(sceneColorUnlitSamples, pixel, gl_SampleID);
+  return texelFetch(surfaceCorrectionSamples, pixel, gl_SampleID).rgb;
 }
 #else
-uniform sampler2D sceneColorUnlit;
-vec4 sceneColorUnlitAt(ivec2 pixel) { return texelFetch(sceneColorUnlit, pixel, 0); }
+uniform sampler2D surfaceCorrection;
+vec3 surfaceCorrectionAt(ivec2 pixel) { return texelFetch(surfaceCorrection, pixel, 0).rgb; }
 #endif
-uniform sampler2D cookieTexture;
-uniform float cookieSize;
-uniform mat4 lightClipFromVC;
-uniform vec3 lightPositionVC;
-uniform vec2 pixelFootprint;
-uniform float lightTexelAngle;
 #endif
 
 void main()
@@ -63,33 +57,15 @@ void main()
   // at a lower resolution).
   vec3 inScattered = texture(inScatter, texCoord).rgb;
 
-#if defined(LIGHTSHAFT_ATTENUATE) || defined(LIGHTSHAFT_COOKIE_SURFACES)
+#ifdef LIGHTSHAFT_SURFACE_CORRECTION
+  color.rgb = max(color.rgb - surfaceCorrectionAt(pixel), vec3(0.0));
+#endif
+#ifdef LIGHTSHAFT_ATTENUATE
   vec3 originVC;
   vec3 dirVC;
   vec2 ndc;
   lightShaftViewRay(vec2(pixel) + 0.5, originVC, dirVC, ndc);
-  float surfaceDistance = lightShaftSurfaceDistance(ndc, depth, dirVC);
-#endif
-#ifdef LIGHTSHAFT_COOKIE_SURFACES
-  if (depth < 1.0)
-  {
-    vec3 surfaceVC = originVC + surfaceDistance * dirVC;
-    vec4 lightClip = lightClipFromVC * vec4(surfaceVC, 1.0);
-    vec3 cookie = vec3(0.0);
-    if (lightClip.w > 0.0)
-    {
-      vec2 lightUV = 0.5 * lightClip.xy / lightClip.w + 0.5;
-      float r = length(surfaceVC - lightPositionVC);
-      float footprint = pixelFootprint.x * (-surfaceVC.z) + pixelFootprint.y;
-      float lod = max(log2(footprint / max(r * lightTexelAngle, 1e-30) * cookieSize), 0.0);
-      cookie = max(textureLod(cookieTexture, lightUV, lod).rgb, vec3(0.0));
-    }
-    vec4 unlit = sceneColorUnlitAt(pixel);
-    color.rgb = unlit.rgb + cookie * max(color.rgb - unlit.rgb, vec3(0.0));
-  }
-#endif
-#ifdef LIGHTSHAFT_ATTENUATE
-  color.rgb *= exp(-sigmaT * surfaceDistance);
+  color.rgb *= exp(-sigmaT * lightShaftSurfaceDistance(ndc, depth, dirVC));
 #endif
 
   // Alpha: the shafts are light in front of whatever lies behind, so a pixel is at least as

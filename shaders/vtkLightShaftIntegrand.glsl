@@ -1,11 +1,12 @@
 // Shared by the slab vertex and fragment shaders: the light, the medium, and the smooth factors
-// of the integrand (phase, spot, extinction), all in view coordinates (VC).
+// of the integrand (phase, spot, extinction), all in view coordinates (VC). The light's kind
+// (LIGHTSHAFT_POINT, LIGHTSHAFT_DIRECTIONAL, else a spot) decides r, the direction the light
+// travels and whether there is a spot factor.
 
-uniform vec3 lightPositionVC;
-uniform vec3 lightAxisVC;      // unit spot direction
-uniform float cosConeAngle;    // cos of the cone half-angle
+//VTK::LightShaft::LightKind
+
 uniform float spotExponent;
-uniform vec3 attenuationCoefficients; // c0, c1, c2
+uniform vec3 attenuationCoefficients; // c0, c1, c2 (a directional light: 1, 0, 0)
 uniform vec3 lightRadiantIntensity;   // intensity * colour
 uniform vec3 sigmaS;
 uniform vec3 sigmaT;
@@ -15,110 +16,6 @@ uniform float anisotropy;
 #endif
 
 const float PI = 3.14159265358979;
-
-// The parameter interval of the line m + t dir (m relative to the apex) inside the spot cone's forward nappe.
-// The nappe is convex (half-angle < 90 degrees), so the intersection is one interval.
-bool lightShaftConeInterval(vec3 m, vec3 dir, out float t0, out float t1)
-{
-  float c2 = cosConeAngle * cosConeAngle;
-  float da = dot(dir, lightAxisVC);
-  float ma = dot(m, lightAxisVC);
-  float lo = -3.0e38;
-  float hi = 3.0e38;
-  // Forward half-space: (m + t dir) . axis >= 0.
-  if (abs(da) > 1e-12)
-  {
-    float tPlane = -ma / da;
-    if (da > 0.0)
-    {
-      lo = tPlane;
-    }
-    else
-    {
-      hi = tPlane;
-    }
-  }
-  else if (ma < 0.0)
-  {
-    return false;
-  }
-  // Double cone: A t^2 + B t + C >= 0.
-  float qa = da * da - c2;
-  float qb = 2.0 * (da * ma - c2 * dot(dir, m));
-  float qc = ma * ma - c2 * dot(m, m);
-  if (abs(qa) < 1e-7)
-  {
-    if (abs(qb) > 1e-30)
-    {
-      float tLine = -qc / qb;
-      if (qb > 0.0)
-      {
-        lo = max(lo, tLine);
-      }
-      else
-      {
-        hi = min(hi, tLine);
-      }
-    }
-    else if (qc < 0.0)
-    {
-      return false;
-    }
-  }
-  else
-  {
-    float disc = qb * qb - 4.0 * qa * qc;
-    if (disc < 0.0)
-    {
-      if (qa < 0.0)
-      {
-        return false;
-      }
-    }
-    else
-    {
-      float q = -0.5 * (qb + (qb >= 0.0 ? 1.0 : -1.0) * sqrt(disc));
-      float rootA = q / qa;
-      float rootB = (q != 0.0) ? qc / q : rootA;
-      float tIn = min(rootA, rootB);
-      float tOut = max(rootA, rootB);
-      if (qa < 0.0)
-      {
-        lo = max(lo, tIn);
-        hi = min(hi, tOut);
-      }
-      else
-      {
-        // Outside [tIn, tOut]: keep the piece on the forward nappe's side.
-        bool before = lo <= tIn;
-        bool after = hi >= tOut;
-        if (before && !after)
-        {
-          hi = min(hi, tIn);
-        }
-        else if (after && !before)
-        {
-          lo = max(lo, tOut);
-        }
-        else if (!before && !after)
-        {
-          return false;
-        }
-        else if (ma + 0.5 * (lo + tIn) * da >= 0.0 && tIn - lo >= hi - tOut)
-        {
-          hi = min(hi, tIn);
-        }
-        else
-        {
-          lo = max(lo, tOut);
-        }
-      }
-    }
-  }
-  t0 = lo;
-  t1 = hi;
-  return t1 > t0;
-}
 
 float lightShaftPhase(float cosTheta)
 {
@@ -133,7 +30,7 @@ float lightShaftPhase(float cosTheta)
 }
 
 // The point of the ray originVC + t dirVC at integration variable u (x = t + b = u for constant
-// A, h tan(u) for falling A), its distance to the light, and the sine of its scattering angle.
+// A, h tan(u) for falling A), its light distance r, and the sine of its scattering angle.
 // Returns the smooth factor there: phase * spot * exp(-sigma_t (r + t)).
 vec3 lightShaftNode(vec3 originVC, vec3 dirVC, float b, float h, bool constantA, float u,
   out vec3 pointVC, out float r, out float sinTheta)
@@ -141,11 +38,14 @@ vec3 lightShaftNode(vec3 originVC, vec3 dirVC, float b, float h, bool constantA,
   float x = constantA ? u : h * tan(u);
   float t = x - b;
   pointVC = originVC + t * dirVC;
-  vec3 toPoint = pointVC - lightPositionVC;
-  r = length(toPoint);
-  vec3 lightDir = toPoint / max(r, 1e-30);
+  r = lightShaftLightDistance(pointVC);
+  vec3 lightDir = lightShaftLightDirection(pointVC, r);
+#if defined(LIGHTSHAFT_POINT) || defined(LIGHTSHAFT_DIRECTIONAL)
+  float spot = 1.0;
+#else
   float cosAxis = max(dot(lightDir, lightAxisVC), 0.0);
   float spot = (spotExponent == 0.0) ? 1.0 : pow(cosAxis, spotExponent);
+#endif
   float cosTheta = -dot(dirVC, lightDir);
   sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
   return lightShaftPhase(cosTheta) * spot * exp(-sigmaT * (r + t));

@@ -1,11 +1,9 @@
 // Shared by the slab fragment shaders of every method (slices, ray march, analytic): the
-// light-space lookups (shadow map, cookie, noise), the in-scattered radiance of one segment of a
-// pixel's view ray, and the pixel's lit interval. Features (#defines): LIGHTSHAFT_SHADOW,
-// LIGHTSHAFT_COOKIE, LIGHTSHAFT_NOISE, LIGHTSHAFT_LATTICE; code for a feature that is off is not
-// compiled.
-#if defined(LIGHTSHAFT_SHADOW) || defined(LIGHTSHAFT_COOKIE) || defined(LIGHTSHAFT_NOISE)
-#define LIGHTSHAFT_LIGHT_SPACE
-#endif
+// in-scattered radiance of one segment of a pixel's view ray, with the light-space factors
+// (shadow map, cookie, noise), and the pixel's lit interval. Features (#defines):
+// LIGHTSHAFT_SHADOW, LIGHTSHAFT_COOKIE, LIGHTSHAFT_NOISE, LIGHTSHAFT_LATTICE, the light's kind;
+// code for a feature that is off is not compiled.
+//VTK::LightShaft::LightSpace
 
 #ifdef LIGHTSHAFT_LATTICE
 // The smooth factors' mean over this slab, evaluated at the lattice's vertices (Chen, Li and
@@ -13,29 +11,8 @@
 in vec3 latticeSmooth;
 #endif
 
-#ifdef LIGHTSHAFT_LIGHT_SPACE
-uniform mat4 lightClipFromVC;   // VC -> the light camera's clip coordinates
-uniform vec2 pixelFootprint;    // a pixel's width at view depth z: x * z + y (view units)
-uniform float lightTexelAngle;  // 2 tan(cone half-angle): the light square's width at r = 1
-#endif
-
 #ifdef LIGHTSHAFT_SHADOW
-uniform sampler2D shadowMap;
-uniform vec2 lightDepthRange;   // near, far of the light camera
-uniform float shadowBias;       // relative depth tolerance
-#endif
-
-#ifdef LIGHTSHAFT_COOKIE
-uniform sampler2D cookieTexture;
-uniform float cookieSize;       // texels across the light's square
-#endif
-
-#ifdef LIGHTSHAFT_NOISE
-uniform sampler2D noiseTexture;
-uniform float noiseSize;        // texels across one tile
-uniform float noiseAmplitude;
-uniform float noiseScale;       // tiles across the light's square (layer 1; layer 2 is 1.37x)
-uniform vec4 noiseShift;        // both layers' scroll offsets at the current time, in tiles
+uniform float shadowBias; // the shadow map's depth tolerance for the shafts
 #endif
 
 // integral of dt / (c0 + c1 r + c2 r^2) for x = t + b in [x0, x1], r^2 = h2 + x^2.
@@ -106,38 +83,21 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
   float visibility = 1.0;
   vec3 modulation = vec3(1.0);
 #ifdef LIGHTSHAFT_LIGHT_SPACE
-  vec4 lightClip = lightClipFromVC * vec4(sampleVC, 1.0);
-  vec2 lightNDC = lightClip.xy / max(lightClip.w, 1e-30);
-  vec2 lightUV = 0.5 * lightNDC + 0.5;
   // The sample stands for a pixel-wide, segment-long footprint: its size in light-square widths
   // picks the mip level, so cookie and noise are pre-filtered instead of aliasing.
   float footprint = max(pixelFootprint.x * (-sampleVC.z) + pixelFootprint.y,
     (x1 - x0) * sampleSinTheta);
-  float footprintInSquares = footprint / max(sampleR * lightTexelAngle, 1e-30);
+  float footprintInSquares =
+    footprint / max(lightSquareWidth.x * sampleR + lightSquareWidth.y, 1e-30);
 #endif
 #ifdef LIGHTSHAFT_SHADOW
-  if (lightClip.w > 0.0 && all(lessThanEqual(abs(lightNDC), vec2(1.0))))
-  {
-    float stored = texture(shadowMap, lightUV).r;
-    if (stored < 1.0)
-    {
-      float n = lightDepthRange.x;
-      float f = lightDepthRange.y;
-      float casterDepth = 2.0 * n * f / ((f + n) - (2.0 * stored - 1.0) * (f - n));
-      visibility = (lightClip.w > casterDepth * (1.0 + shadowBias)) ? 0.0 : 1.0;
-    }
-  }
+  visibility = lightShaftVisibility(sampleVC, sampleR, shadowBias);
 #endif
 #ifdef LIGHTSHAFT_COOKIE
-  modulation *= max(textureLod(cookieTexture, lightUV,
-    max(log2(footprintInSquares * cookieSize), 0.0)).rgb, vec3(0.0));
+  modulation *= lightShaftCookie(sampleVC, footprintInSquares);
 #endif
 #ifdef LIGHTSHAFT_NOISE
-  float noiseLod = max(log2(footprintInSquares * noiseScale * noiseSize), 0.0);
-  float n1 = textureLod(noiseTexture, lightUV * noiseScale + noiseShift.xy, noiseLod).r;
-  float n2 = textureLod(noiseTexture, lightUV * (1.37 * noiseScale) + noiseShift.zw,
-    noiseLod + 0.45).r;
-  modulation *= 1.0 + noiseAmplitude * (n1 * n2 - 1.0);
+  modulation *= lightShaftNoiseDensity(sampleVC, footprintInSquares);
 #endif
 
   return sigmaS * lightRadiantIntensity * modulation * (weight * visibility) * smoothMean;
@@ -155,7 +115,7 @@ float lightShaftPieceBoundary(float u0, float u1, float fraction, float h, bool 
 // the foot of the perpendicular from the light (b: that foot's ray parameter, h2: its squared
 // distance to the light). Working relative to the foot keeps the cone quadratic's
 // coefficients of the size of h, not of the eye-light distance: rays passing next to the apex
-// stay accurate in float.
+// stay accurate in float. A directional light has no apex: x = t (b = 0).
 struct LightShaftRay
 {
   vec3 originVC;
@@ -166,8 +126,9 @@ struct LightShaftRay
   float x1;
 };
 
-// The pixel's ray and the part of it between the view depths [nearDepth, farDepth] that lies
-// inside the cone and in front of the scene surface; false when that part is empty.
+// The pixel's ray and the part of it between the view depths [nearDepth, farDepth] that the
+// light reaches (lightShaftLightInterval) in front of the scene surface; false when that part
+// is empty.
 bool lightShaftLitInterval(float nearDepth, float farDepth, out LightShaftRay ray)
 {
   vec2 ndc;
@@ -177,18 +138,17 @@ bool lightShaftLitInterval(float nearDepth, float farDepth, out LightShaftRay ra
   float tb = farDepth * tPerDepth;
   float depth = texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r;
   tb = min(tb, lightShaftSurfaceDistance(ndc, depth, ray.dirVC));
-  vec3 m = ray.originVC - lightPositionVC;
-  ray.b = dot(m, ray.dirVC);
-  vec3 foot = m - ray.b * ray.dirVC;
+  vec3 foot;
+  lightShaftRayFoot(ray.originVC, ray.dirVC, ray.b, foot);
   ray.h2 = dot(foot, foot);
-  float coneIn;
-  float coneOut;
-  if (!lightShaftConeInterval(foot, ray.dirVC, coneIn, coneOut))
+  float litIn;
+  float litOut;
+  if (!lightShaftLightInterval(foot, ray.dirVC, litIn, litOut))
   {
     return false;
   }
-  ray.x0 = max(ta + ray.b, coneIn);
-  ray.x1 = min(tb + ray.b, coneOut);
+  ray.x0 = max(ta + ray.b, litIn);
+  ray.x1 = min(tb + ray.b, litOut);
   return ray.x1 > ray.x0;
 }
 

@@ -40,19 +40,19 @@ void main()
   float nearDepth = clamp(slabStart + k * slabThickness, slabStart, slabEnd);
   float farDepth = clamp(slabStart + (k + 1.0) * slabThickness, slabStart, slabEnd);
   float tPerDepth = -1.0 / dirVC.z;
-  vec3 m = originVC - lightPositionVC;
-  float b = dot(m, dirVC);
-  vec3 foot = m - b * dirVC;
+  float b;
+  vec3 foot;
+  lightShaftRayFoot(originVC, dirVC, b, foot);
   float x0 = nearDepth * tPerDepth + b;
   float x1 = max(farDepth * tPerDepth + b, x0);
-  // The part of the slab inside the cone, as the fragments integrate it (the surface cut is
+  // The part of the slab the light reaches, as the fragments integrate it (the surface cut is
   // left to them): near the cone's edge the spot factor inside differs from the whole slab's.
-  float coneIn;
-  float coneOut;
-  if (lightShaftConeInterval(foot, dirVC, coneIn, coneOut) && min(x1, coneOut) > max(x0, coneIn))
+  float litIn;
+  float litOut;
+  if (lightShaftLightInterval(foot, dirVC, litIn, litOut) && min(x1, litOut) > max(x0, litIn))
   {
-    x0 = max(x0, coneIn);
-    x1 = min(x1, coneOut);
+    x0 = max(x0, litIn);
+    x1 = min(x1, litOut);
   }
   bool constantA = attenuationCoefficients.y == 0.0 && attenuationCoefficients.z == 0.0;
   float h = max(length(foot), 1e-6 * max(abs(x0), abs(x1)) + 1e-30);

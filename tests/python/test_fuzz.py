@@ -55,7 +55,8 @@ REFUSING = {"Exposure", "Anisotropy", "NoiseAmplitude", "NoiseScale", "Time", "D
             "Density", "Weight", "RadialGuardBand", "ScatteringCoefficient",
             "AbsorptionCoefficient", "NoiseVelocity1", "NoiseVelocity2"}
 # The pass's documented warnings (README "Behaviour with any scene").
-DOCUMENTED_WARNINGS = ["No spotlight in the renderer", "is not a spotlight",
+DOCUMENTED_WARNINGS = ["No spot or point light in the renderer", "given to the pass are switched off",
+                       "The cookie shapes spot and directional lights only",
                        "cookie texture has no image", "noise texture has no image",
                        "Method ANALYTIC ignores shadows", "lattice cells in a frame"]
 INT_PROBE = 2 ** 31 - 1

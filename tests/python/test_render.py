@@ -140,8 +140,8 @@ def test_no_light_renders_unchanged_and_warns_once(messages):
     np.testing.assert_array_equal(rh.screenshot(window), plain)
     assert len(log.warnings) == 1
     assert shafts.GetLastUsedLight() is None
-    # A light that is not a spotlight, given explicitly: same answer, one more warning.
-    info.light.SetConeAngle(120.0)
+    # A given light that is switched off: same answer, one more warning.
+    info.light.SwitchOff()
     shafts.SetLight(info.light)
     window.Render()
     window.Render()

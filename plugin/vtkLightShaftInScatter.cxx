@@ -1,0 +1,169 @@
+#include "vtkLightShaftInScatter.h"
+
+#include "vtkLightShaftFrame.h"
+#include "vtkLightShaftPass.h"
+
+#include "vtkObject.h"
+#include "vtkTextureObject.h"
+
+//------------------------------------------------------------------------------
+vtkLightShaftInScatter::vtkLightShaftInScatter() = default;
+vtkLightShaftInScatter::~vtkLightShaftInScatter() = default;
+
+vtkLightShaftMethod* vtkLightShaftInScatter::GetMethod(int method)
+{
+  vtkLightShaftMethod* methods[] = {
+    &this->Slices, &this->RayMarch, &this->RadialBlur, &this->Analytic
+  };
+  return methods[method];
+}
+
+//------------------------------------------------------------------------------
+// AUTOMATIC takes the exact unshadowed integral when nothing can shadow the light's volume and
+// the medium is homogeneous, else the slabs. ANALYTIC says once that it ignores the shadows
+// props could cast.
+int vtkLightShaftInScatter::ChooseMethod(const vtkLightShaftFrame& frame)
+{
+  int method = frame.Parameters.Method;
+  if (method == vtkLightShaftPass::AUTOMATIC)
+  {
+    const bool noise = frame.Parameters.NoiseAmplitude > 0.0;
+    method = (!frame.Light.ShadowsPossible && !noise) ? vtkLightShaftPass::ANALYTIC
+                                                      : vtkLightShaftPass::SLICES;
+  }
+  if (method == vtkLightShaftPass::ANALYTIC && !frame.Light.Casters.empty() &&
+      !this->WarnedAnalyticShadows)
+  {
+    vtkWarningWithObjectMacro(frame.Owner,
+      "Method ANALYTIC ignores shadows, but "
+        << frame.Light.Casters.size()
+        << " prop(s) reach into the light's volume: use SLICES or AUTOMATIC for shadowed shafts.");
+    this->WarnedAnalyticShadows = true;
+  }
+  return method;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftInScatter::Begin(vtkLightShaftFrame& frame)
+{
+  this->Target.PrepareDepth(frame);
+  this->TargetCleared = false;
+  this->TargetHolds = false;
+  this->Pending = nullptr;
+}
+
+void vtkLightShaftInScatter::ClearTarget(vtkLightShaftFrame& frame, vtkLightShaftMethod* method)
+{
+  int buffers = 1;
+  const vtkLightShaftResources::TextureKind kind =
+    method->AccumulationKind(frame.Parameters, buffers);
+  this->Target.Clear(frame, buffers, kind);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftInScatter::Add(vtkLightShaftFrame& frame, int method)
+{
+  vtkLightShaftMethod* computing = this->GetMethod(method);
+  const bool direct = computing->AddsIntoTarget(frame.Parameters);
+  const vtkLightShaftGeometry::LitVolume lit =
+    vtkLightShaftGeometry::ComputeLitVolume(frame.Light, frame.Camera);
+  if (lit.Empty() || !frame.Light.Model.Radiates())
+  {
+    return; // the light's volume is outside the view, or the light is dark: nothing to do
+  }
+  if (this->Pending)
+  {
+    // The previous light's result lives in a buffer this light may write: sum it first.
+    this->Target.AddToSum(frame, this->Pending);
+    this->Pending = nullptr;
+    this->TargetCleared = false;
+  }
+  if (!direct && this->TargetHolds)
+  {
+    // The lights added into the target so far go into the sum before it is cleared.
+    this->Target.AddToSum(frame, this->Target.GetAccumulation(0));
+    this->TargetHolds = false;
+  }
+  if (!direct || !this->TargetCleared)
+  {
+    // A light that does not add into the target computes into a cleared one; the first light
+    // that does clears it once for all of them.
+    this->ClearTarget(frame, computing);
+    this->TargetCleared = direct;
+  }
+  vtkLightShaftLightStatistics& stats = *frame.LightStatistics;
+  stats.Method = method;
+  if (frame.Statistics.SliceDepthRange[1] <= frame.Statistics.SliceDepthRange[0])
+  {
+    frame.Statistics.SliceDepthRange[0] = lit.Nearest;
+    frame.Statistics.SliceDepthRange[1] = lit.Deepest;
+  }
+  vtkTextureObject* computed = computing->Render(frame, lit, this->Target);
+  if (frame.ShaderMethod)
+  {
+    this->ShaderMethod = frame.ShaderMethod;
+    stats.ShaderVariant = frame.ShaderMethod->GetShaderVariant();
+  }
+  if (!computed)
+  {
+    return;
+  }
+  if (direct)
+  {
+    this->TargetHolds = true;
+  }
+  else
+  {
+    this->Pending = computed; // summed when another light comes (one light: never copied)
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftInScatter::Finish(vtkLightShaftFrame& frame, bool& computed)
+{
+  vtkTextureObject* lights = nullptr;
+  if (this->Pending && !this->Target.GetSum() && !this->TargetHolds)
+  {
+    lights = this->Pending; // one light's own result
+  }
+  else
+  {
+    if (this->Pending)
+    {
+      this->Target.AddToSum(frame, this->Pending);
+    }
+    if (this->Target.GetSum() && this->TargetHolds)
+    {
+      this->Target.AddToSum(frame, this->Target.GetAccumulation(0));
+    }
+    lights = this->Target.GetSum();
+    if (!lights && this->TargetHolds)
+    {
+      lights = this->Target.GetAccumulation(0);
+    }
+  }
+  this->Pending = nullptr;
+  computed = lights != nullptr;
+  if (!computed)
+  {
+    if (!this->TargetCleared)
+    {
+      this->ClearTarget(frame, &this->Slices); // zeros
+    }
+    return this->Target.GetAccumulation(0);
+  }
+  return this->Post.Render(frame, lights, this->Target.GetDepth(), frame.Scene.ShaftDepth);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftInScatter::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Target.ReleaseGraphicsResources(window);
+  this->Slabs.ReleaseGraphicsResources(window);
+  for (int method = vtkLightShaftPass::SLICES; method < vtkLightShaftPass::AUTOMATIC; ++method)
+  {
+    this->GetMethod(method)->ReleaseGraphicsResources(window);
+  }
+  this->Post.ReleaseGraphicsResources(window);
+  this->ShaderMethod = nullptr;
+}

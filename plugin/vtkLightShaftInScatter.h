@@ -1,0 +1,82 @@
+/**
+ * @file   vtkLightShaftInScatter.h
+ * @brief  The in-scattered radiance of a frame's lights, for vtkLightShaftPass (private, not
+ *         installed).
+ */
+
+#ifndef vtkLightShaftInScatter_h
+#define vtkLightShaftInScatter_h
+
+#include "vtkLightShaftAnalyticMethod.h"   // For a method held
+#include "vtkLightShaftInScatterTarget.h"  // For the target held
+#include "vtkLightShaftPostProcess.h"      // For the post chain held
+#include "vtkLightShaftRadialBlurMethod.h" // For a method held
+#include "vtkLightShaftRayMarchMethod.h"   // For a method held
+#include "vtkLightShaftSlabDrawer.h"       // For the drawer held
+#include "vtkLightShaftSlicesMethod.h"     // For a method held
+
+class vtkTextureObject;
+class vtkWindow;
+struct vtkLightShaftFrame;
+
+/**
+ * @class   vtkLightShaftInScatter
+ * @brief   Computes L_in, the in-scattered radiance, for each of the frame's lights with the
+ *          method chosen for it, adds the lights up, and post-processes the sum.
+ *
+ * Lights whose method adds into the target's accumulation buffer (SLICES with float
+ * accumulation, RAY_MARCH without interleaving, ANALYTIC) add up there directly; the others
+ * (8-bit SLICES, interleaved RAY_MARCH, RADIAL_BLUR) compute into a cleared buffer and their
+ * result is added into a sum. With one light nothing is copied.
+ */
+class vtkLightShaftInScatter
+{
+public:
+  vtkLightShaftInScatter();
+  ~vtkLightShaftInScatter();
+
+  /// The method for the frame's current light (AUTOMATIC resolved; see
+  /// vtkLightShaftPass::SetMethod), with one warning when ANALYTIC ignores possible shadows.
+  int ChooseMethod(const vtkLightShaftFrame& frame);
+  /// Start the frame: the depth the shafts read, no light added.
+  void Begin(vtkLightShaftFrame& frame);
+
+  /**
+   * Add the in-scatter of the frame's current light computed with `method`. Records what it
+   * did in the frame's statistics; nothing when the light lights nothing in view.
+   */
+  void Add(vtkLightShaftFrame& frame, int method);
+
+  /// The lights' L_in at full resolution, post-processed (zeros when no light added any), and
+  /// whether any did.
+  vtkTextureObject* Finish(vtkLightShaftFrame& frame, bool& computed);
+
+  /// The feature variant and fragment source of the slab program readied last.
+  const vtkLightShaftMethod* GetShaderMethod() const { return this->ShaderMethod; }
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkLightShaftInScatter(const vtkLightShaftInScatter&) = delete;
+  void operator=(const vtkLightShaftInScatter&) = delete;
+
+  vtkLightShaftMethod* GetMethod(int method);
+  void ClearTarget(vtkLightShaftFrame& frame, vtkLightShaftMethod* method);
+
+  vtkLightShaftInScatterTarget Target;
+  vtkLightShaftSlabDrawer Slabs;
+  vtkLightShaftSlicesMethod Slices{ this->Slabs };
+  vtkLightShaftRayMarchMethod RayMarch{ this->Slabs };
+  vtkLightShaftAnalyticMethod Analytic{ this->Slabs };
+  vtkLightShaftRadialBlurMethod RadialBlur{ this->Analytic };
+  vtkLightShaftPostProcess Post;
+
+  const vtkLightShaftMethod* ShaderMethod = nullptr;
+  bool TargetCleared = false; ///< the accumulation buffer holds this frame's direct lights
+  bool TargetHolds = false;   ///< some light added into it
+  /// The last light's result when its method did not add into the target (not yet summed).
+  vtkTextureObject* Pending = nullptr;
+  bool WarnedAnalyticShadows = false;
+};
+
+#endif
