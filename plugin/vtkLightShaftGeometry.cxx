@@ -749,24 +749,6 @@ std::vector<SlabFootprint> ComputeSlabFootprints(const LitVolume& lit,
 void AppendSlabTriangles(const SlabFootprint& slab, int lattice, std::vector<float>& vertices)
 {
   const std::vector<glm::dvec2>& hull = slab.Hull;
-  auto emit = [&](const glm::dvec2& p)
-  {
-    vertices.insert(vertices.end(),
-      { static_cast<float>(p.x),
-        static_cast<float>(p.y),
-        static_cast<float>(slab.Index),
-        static_cast<float>(slab.NearDepth) });
-  };
-  if (lattice <= 0)
-  {
-    for (size_t i = 1; i + 1 < hull.size(); ++i)
-    {
-      emit(hull[0]);
-      emit(hull[i]);
-      emit(hull[i + 1]);
-    }
-    return;
-  }
   glm::dvec2 low = hull[0];
   glm::dvec2 high = hull[0];
   for (const glm::dvec2& p : hull)
@@ -774,10 +756,10 @@ void AppendSlabTriangles(const SlabFootprint& slab, int lattice, std::vector<flo
     low = glm::min(low, p);
     high = glm::max(high, p);
   }
-  auto corner = [&](int i, int j)
-  { return low + (high - low) * glm::dvec2(double(i) / lattice, double(j) / lattice); };
-  // Clip against the hull without its near-coincident vertices: the direction of an edge a
-  // rounding error long is noise, and its half-plane would cut a sliver out of the slab.
+  // The hull without its near-coincident vertices: the direction of an edge a rounding error
+  // long is noise (its half-plane would cut a sliver out of the slab), and a triangle with
+  // two such vertices is degenerate once in float (llvmpipe was seen to drop a whole draw of a
+  // fan ending in one).
   const double tiny = 1e-9 * glm::length(high - low);
   std::vector<glm::dvec2> window;
   for (const glm::dvec2& p : hull)
@@ -791,18 +773,50 @@ void AppendSlabTriangles(const SlabFootprint& slab, int lattice, std::vector<flo
   {
     window.pop_back();
   }
+  // Triangles with a positive area in float, as the GL will see them.
+  auto emit = [&](const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c)
+  {
+    const std::array<float, 6> f = { static_cast<float>(a.x),
+      static_cast<float>(a.y),
+      static_cast<float>(b.x),
+      static_cast<float>(b.y),
+      static_cast<float>(c.x),
+      static_cast<float>(c.y) };
+    const double area = (static_cast<double>(f[2]) - f[0]) * (static_cast<double>(f[5]) - f[1]) -
+                        (static_cast<double>(f[3]) - f[1]) * (static_cast<double>(f[4]) - f[0]);
+    if (!(area > 0.0))
+    {
+      return;
+    }
+    for (int v = 0; v < 3; ++v)
+    {
+      vertices.insert(vertices.end(),
+        { f[2 * v],
+          f[2 * v + 1],
+          static_cast<float>(slab.Index),
+          static_cast<float>(slab.NearDepth) });
+    }
+  };
+  auto fan = [&](const std::vector<glm::dvec2>& polygon)
+  {
+    for (size_t i = 1; i + 1 < polygon.size(); ++i)
+    {
+      emit(polygon[0], polygon[i], polygon[i + 1]);
+    }
+  };
+  if (lattice <= 0)
+  {
+    fan(window);
+    return;
+  }
+  auto corner = [&](int i, int j)
+  { return low + (high - low) * glm::dvec2(double(i) / lattice, double(j) / lattice); };
   for (int j = 0; j < lattice; ++j)
   {
     for (int i = 0; i < lattice; ++i)
     {
-      const std::vector<glm::dvec2> cell = ClipToConvex(
-        { corner(i, j), corner(i + 1, j), corner(i + 1, j + 1), corner(i, j + 1) }, window);
-      for (size_t c = 1; c + 1 < cell.size(); ++c)
-      {
-        emit(cell[0]);
-        emit(cell[c]);
-        emit(cell[c + 1]);
-      }
+      fan(ClipToConvex(
+        { corner(i, j), corner(i + 1, j), corner(i + 1, j + 1), corner(i, j + 1) }, window));
     }
   }
 }

@@ -44,6 +44,39 @@ def add_spotlight(renderer, position, focal_point, cone_angle=30.0, intensity=1.
     return light
 
 
+def add_point_light(renderer, position, intensity=1.0, color=(1.0, 1.0, 1.0),
+                    attenuation=(1.0, 0.0, 0.0)):
+    """Add a point light (positional, cone angle 180: no cone) to `renderer` and return it."""
+    light = vtkLight()
+    light.SetLightTypeToSceneLight()
+    light.SetPositional(True)
+    light.SetPosition(*position)
+    light.SetFocalPoint(position[0], position[1] - 1.0, position[2])
+    light.SetConeAngle(180.0)
+    light.SetAttenuationValues(*attenuation)
+    light.SetIntensity(intensity)
+    light.SetColor(*color)
+    renderer.AddLight(light)
+    return light
+
+
+def add_directional_light(renderer, position, focal_point, intensity=1.0,
+                          color=(1.0, 1.0, 1.0)):
+    """Add a directional light (a sun) to `renderer` and return it: parallel light travelling
+    from `position` towards `focal_point`, lighting the half-space beyond the plane through
+    `position` perpendicular to that direction. The pass uses it when given (SetLight or
+    AddLight): directional lights do not scatter by default."""
+    light = vtkLight()
+    light.SetLightTypeToSceneLight()
+    light.SetPositional(False)
+    light.SetPosition(*position)
+    light.SetFocalPoint(*focal_point)
+    light.SetIntensity(intensity)
+    light.SetColor(*color)
+    renderer.AddLight(light)
+    return light
+
+
 def add_fill_light(renderer, intensity=0.12):
     """A dim headlight so a room is not pitch black; it is no spotlight, so it makes no shafts."""
     light = vtkLight()

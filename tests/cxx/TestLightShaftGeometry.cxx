@@ -14,6 +14,7 @@
 #include "vtkNew.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPropCollection.h"
+#include "vtkRenderer.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -217,6 +218,210 @@ void TestLightFrameAndSlabs()
     "a light volume behind the camera lights nothing in view");
 }
 
+// A point light: casters anywhere, six 90-degree cameras, each seeing the casters in its
+// pyramid; the lit volume is the whole view volume.
+void TestPointLight()
+{
+  vtkNew<vtkLight> light;
+  light->SetPositional(true);
+  light->SetPosition(0, 3, 0);
+  light->SetFocalPoint(0, 0, 0);
+  light->SetConeAngle(180);
+  const vtkLightShaftModel::Light model = vtkLightShaftModel::DescribeLight(light);
+  Check(model.Kind == vtkLightShaftModel::LightKind::Point, "cone angle 180: a point light");
+  Check(!model.FallingAttenuation() && model.Exponent == 0.0, "no spot exponent");
+
+  // One caster below the light, one beside it (+X), none above.
+  vtkNew<vtkPropCollection> props;
+  vtkNew<vtkActor> actors[2];
+  const double centres[2][3] = { { 0, 1, 0 }, { 4, 3, 0 } };
+  for (int i = 0; i < 2; ++i)
+  {
+    vtkNew<vtkCubeSource> cube;
+    cube->SetCenter(centres[i]);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(cube->GetOutputPort());
+    actors[i]->SetMapper(mapper);
+    props->AddItem(actors[i]);
+  }
+  const glm::dmat4 view =
+    glm::lookAt(glm::dvec3(0, 3, 12), glm::dvec3(0, 2, 0), glm::dvec3(0, 1, 0));
+  const auto camera = vtkLightShaftGeometry::CameraFrame::FromMatrices(
+    view, glm::perspective(glm::radians(30.0), 4.0 / 3.0, 0.1, 40.0));
+  const vtkLightShaftGeometry::LightFrame frame =
+    vtkLightShaftGeometry::ComputeLightFrame(model, camera, props, nullptr);
+  Check(frame.Casters.size() == 2 && frame.ShadowsPossible, "both props can shadow a point light");
+  Check(frame.Views.size() == 6, "six cube faces");
+  Check(frame.Views[0].Casters.size() == 1 && frame.Views[0].Casters[0] == actors[1].Get(),
+    "+X face sees the prop beside the light");
+  Check(frame.Views[3].Casters.size() == 1 && frame.Views[3].Casters[0] == actors[0].Get(),
+    "-Y face sees the prop below");
+  Check(frame.Views[2].Casters.empty(), "+Y face sees nothing");
+  Check(frame.Near > 0.0 && frame.Near <= 1.5 && frame.Far >= std::sqrt(4.5 * 4.5 + 0.5) &&
+          frame.Far < 6.0,
+    "depth range from the nearest to the farthest caster");
+  bool centred = true;
+  for (int face = 0; face < 6; ++face)
+  {
+    glm::dvec3 axis(0.0);
+    axis[face / 2] = (face % 2) ? -1.0 : 1.0;
+    const glm::dvec4 c = frame.Views[face].WorldToClip * glm::dvec4(model.Position + 2.0 * axis, 1);
+    centred = centred && std::abs(c.x / c.w) < 1e-12 && std::abs(c.y / c.w) < 1e-12 && c.w > 0;
+    // A direction at a face's corner (45 degrees off both axes) projects to the face's corner.
+    const glm::dvec3 corner =
+      axis + frame.Views[face].ViewUp + glm::cross(axis, frame.Views[face].ViewUp);
+    const glm::dvec4 k = frame.Views[face].WorldToClip * glm::dvec4(model.Position + corner, 1);
+    centred = centred && std::abs(std::abs(k.x / k.w) - 1.0) < 1e-9 &&
+              std::abs(std::abs(k.y / k.w) - 1.0) < 1e-9;
+  }
+  Check(centred, "each face looks along its axis and spans 90 degrees");
+  const auto lit = vtkLightShaftGeometry::ComputeLitVolume(frame, camera);
+  Check(!lit.Empty() && lit.Nearest <= 1e-5 * camera.FarDepth &&
+          std::abs(lit.Deepest - camera.FarDepth) < 1e-9 * camera.FarDepth,
+    "a point light lights the whole view volume");
+}
+
+// A directional light: the half-space beyond its plane, an orthographic camera over the part of
+// the plane where the lit view volume and the casters overlap.
+void TestDirectionalLight()
+{
+  vtkNew<vtkLight> light;
+  light->SetPositional(false);
+  light->SetPosition(0, 5, 0); // plane y = 5, light travelling down
+  light->SetFocalPoint(0, 3, 0);
+  const vtkLightShaftModel::Light model = vtkLightShaftModel::DescribeLight(light);
+  Check(model.Kind == vtkLightShaftModel::LightKind::Directional, "not positional: directional");
+  Check(std::abs(model.SquareSide - 2.0) < 1e-12, "square side |F - P|");
+  Check(
+    std::abs(model.Distance(glm::dvec3(3, 1, 2)) - 4.0) < 1e-12, "r: the distance from the plane");
+
+  vtkNew<vtkPropCollection> props;
+  vtkNew<vtkActor> actors[3];
+  // Under the plane in view; above the plane (casts nothing); far away beside the view.
+  const double centres[3][3] = { { 0, 2, 0 }, { 0, 7, 0 }, { 60, 2, 0 } };
+  for (int i = 0; i < 3; ++i)
+  {
+    vtkNew<vtkCubeSource> cube;
+    cube->SetCenter(centres[i]);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(cube->GetOutputPort());
+    actors[i]->SetMapper(mapper);
+    props->AddItem(actors[i]);
+  }
+  const glm::dmat4 view =
+    glm::lookAt(glm::dvec3(0, 3, 12), glm::dvec3(0, 2, 0), glm::dvec3(0, 1, 0));
+  for (bool parallel : { false, true })
+  {
+    const auto camera = vtkLightShaftGeometry::CameraFrame::FromMatrices(view,
+      parallel ? glm::ortho(-4.0, 4.0, -3.0, 3.0, 0.1, 40.0)
+               : glm::perspective(glm::radians(30.0), 4.0 / 3.0, 0.1, 40.0));
+    const std::string name = parallel ? " (parallel camera)" : " (perspective camera)";
+    const vtkLightShaftGeometry::LightFrame frame =
+      vtkLightShaftGeometry::ComputeLightFrame(model, camera, props, nullptr);
+    Check(frame.Casters.size() == 1 && frame.Casters[0] == actors[0].Get(),
+      "only the prop beyond the plane and over the view casts" + name);
+    Check(frame.Views.size() == 1, "one orthographic camera" + name);
+    Check(frame.Near >= 0.0 && frame.Near <= 2.5 && frame.Far >= 3.5 && frame.Far < 3.6,
+      "depth range: the caster's distances from the plane" + name);
+    // The caster's top face lies inside the camera's rectangle, which is no wider than the
+    // caster's footprint (plus the margin).
+    bool inside = true;
+    for (double x : { -0.5, 0.5 })
+    {
+      for (double z : { -0.5, 0.5 })
+      {
+        const glm::dvec4 c = frame.WorldToLightClip * glm::dvec4(x, 2.5, z, 1);
+        inside = inside && std::abs(c.x) <= 1.0 && std::abs(c.y) <= 1.0 && c.w == 1.0 &&
+                 std::abs(c.x) > 0.99 && std::abs(c.y) > 0.99;
+      }
+    }
+    Check(inside, "the camera's rectangle fits the caster's footprint" + name);
+    const glm::dvec4 depth = frame.WorldToLightClip * glm::dvec4(0, 2.5, 0, 1);
+    const double expected = 2.0 * (2.5 - frame.Near) / (frame.Far - frame.Near) - 1.0;
+    Check(std::abs(depth.z - expected) < 1e-9, "orthographic depth is linear in r" + name);
+    // The lit volume lies beyond the plane.
+    const auto lit = vtkLightShaftGeometry::ComputeLitVolume(frame, camera);
+    const glm::dmat4 toWorld = glm::inverse(view);
+    bool beyond = !lit.Empty();
+    for (const auto& face : lit.Polytope.Faces)
+    {
+      for (const glm::dvec3& p : face)
+      {
+        beyond = beyond && (toWorld * glm::dvec4(p, 1.0)).y <= 5.0 + 1e-9;
+      }
+    }
+    Check(beyond, "the lit volume lies beyond the light's plane" + name);
+  }
+
+  // The light's plane behind the view (the light travelling towards the camera from behind
+  // it... away from the scene): nothing lit.
+  vtkNew<vtkLight> away;
+  away->SetPositional(false);
+  away->SetPosition(0, 3, 14);
+  away->SetFocalPoint(0, 3, 20);
+  const auto camera = vtkLightShaftGeometry::CameraFrame::FromMatrices(
+    view, glm::perspective(glm::radians(30.0), 4.0 / 3.0, 0.1, 40.0));
+  const auto awayFrame = vtkLightShaftGeometry::ComputeLightFrame(
+    vtkLightShaftModel::DescribeLight(away), camera, props, nullptr);
+  Check(vtkLightShaftGeometry::ComputeLitVolume(awayFrame, camera).Empty() &&
+          !awayFrame.ShadowsPossible,
+    "a half-space behind the camera lights nothing in view");
+}
+
+void TestLightChoice()
+{
+  vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkLight> spot;
+  spot->SetPositional(true);
+  spot->SetConeAngle(30);
+  vtkNew<vtkLight> point;
+  point->SetPositional(true);
+  point->SetConeAngle(90);
+  vtkNew<vtkLight> sun;
+  vtkNew<vtkLight> off;
+  off->SetPositional(true);
+  off->SwitchOff();
+  for (vtkLight* light : { spot.Get(), sun.Get(), point.Get(), off.Get() })
+  {
+    renderer->AddLight(light);
+  }
+  auto lights = vtkLightShaftModel::FindLights({}, renderer);
+  Check(lights.size() == 2 && lights[0] == spot.Get() && lights[1] == point.Get(),
+    "automatic: the switched-on spot and point lights, in order");
+  lights = vtkLightShaftModel::FindLights({ sun, off }, renderer);
+  Check(
+    lights.size() == 1 && lights[0] == sun.Get(), "given: any kind, switched-off ones left out");
+  Check(vtkLightShaftModel::KindOf(point) == vtkLightShaftModel::LightKind::Point,
+    "a cone angle of exactly 90 degrees is a point light");
+}
+
+// A hull whose vertices coincide once in float (seen: a screen-filling footprint ending in
+// (1, 1) and (1, 1 + 1e-12)) gives no degenerate triangle: llvmpipe dropped whole fans ending in
+// one.
+void TestNoDegenerateTriangles()
+{
+  vtkLightShaftGeometry::SlabFootprint slab{
+    0, 1.0, { { -1, 1 }, { -1, -1 }, { 1, -1 }, { 1, 1 - 1e-12 }, { 1, 1 } }
+  };
+  for (int lattice : { 0, 3 })
+  {
+    std::vector<float> vertices;
+    vtkLightShaftGeometry::AppendSlabTriangles(slab, lattice, vertices);
+    bool positive = !vertices.empty();
+    for (size_t v = 0; v + 11 < vertices.size(); v += 12)
+    {
+      const double area =
+        (double(vertices[v + 4]) - vertices[v]) * (double(vertices[v + 9]) - vertices[v + 1]) -
+        (double(vertices[v + 5]) - vertices[v + 1]) * (double(vertices[v + 8]) - vertices[v]);
+      positive = positive && area > 0.0;
+    }
+    Check(positive,
+      "every triangle has a positive area in float (lattice " + std::to_string(lattice) + ")");
+    Check(std::abs(TrianglesArea(vertices) - 4.0) < 1e-6,
+      "and they still cover the footprint (lattice " + std::to_string(lattice) + ")");
+  }
+}
+
 void TestLatticeBudget()
 {
   using vtkLightShaftGeometry::AffordableLattice;
@@ -235,6 +440,10 @@ int main()
   TestPolygons();
   TestCameraAndPyramid();
   TestLightFrameAndSlabs();
+  TestPointLight();
+  TestDirectionalLight();
+  TestLightChoice();
+  TestNoDegenerateTriangles();
   TestLatticeBudget();
   if (Failures > 0)
   {
