@@ -11,7 +11,8 @@ import lightshafts_pvscene as scene  # noqa: E402
 # Every property away from its default.
 VALUES = {
     "LightShafts": 1,
-    "ShaftLight": 1,
+    "ShaftLights": [2, 1],
+    "ShadowSurfaces": 1,
     "ScatteringCoefficient": [0.03, 0.04, 0.05],
     "AbsorptionCoefficient": [0.01, 0.02, 0.0],
     "PhaseFunction": 1,

@@ -22,7 +22,8 @@ def read_png(path):
 
 
 @pytest.mark.parametrize("script", ["window_shafts.py", "isosurface_shafts.py",
-                                    "stained_glass.py"])
+                                    "stained_glass.py", "sun_through_window.py",
+                                    "lamp_over_table.py", "crossing_spotlights.py"])
 def test_example_renders(tmp_path, script):
     output = tmp_path / "out.png"
     result = subprocess.run(

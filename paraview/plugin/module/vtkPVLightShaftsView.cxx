@@ -33,6 +33,8 @@ public:
 
   // The additional lights, in the order the Light Inspector added them.
   std::vector<vtkWeakPointer<vtkLight>> Lights;
+  // ShaftLights: 1-based indices into Lights.
+  std::vector<int> ShaftLights;
 
   // Sampling as set (the preset, when one is chosen, overrides these in the pass); they start
   // at the pass's own defaults.
@@ -155,7 +157,12 @@ void vtkPVLightShaftsView::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "LightShafts: " << this->LightShafts << "\n";
-  os << indent << "ShaftLight: " << this->ShaftLight << "\n";
+  os << indent << "ShaftLights:";
+  for (int index : this->Impl->ShaftLights)
+  {
+    os << " " << index;
+  }
+  os << (this->Impl->ShaftLights.empty() ? " (automatic)\n" : "\n");
   os << indent << "ShaftQuality: " << this->ShaftQuality << "\n";
   os << indent << "LinkShaftTimeToAnimation: " << this->LinkShaftTimeToAnimation << "\n";
   os << indent << "ShaftTime: " << this->ShaftTime << "\n";
@@ -229,24 +236,47 @@ void vtkPVLightShaftsView::UpdateLight()
                       impl.Lights.end(),
                       [](const vtkWeakPointer<vtkLight>& l) { return l == nullptr; }),
     impl.Lights.end());
-  vtkLight* light = nullptr;
-  if (this->ShaftLight >= 1 && this->ShaftLight <= static_cast<int>(impl.Lights.size()))
+  vtkLightShaftPass* shafts = impl.Shafts;
+  shafts->RemoveAllLights(); // automatic unless a listed light exists
+  for (int index : impl.ShaftLights)
   {
-    light = impl.Lights[this->ShaftLight - 1];
+    if (index >= 1 && index <= static_cast<int>(impl.Lights.size()))
+    {
+      shafts->AddLight(impl.Lights[index - 1]);
+    }
   }
-  impl.Shafts->SetLight(light);
 }
 
 //------------------------------------------------------------------------------
-void vtkPVLightShaftsView::SetShaftLight(int index)
+void vtkPVLightShaftsView::AddShaftLight(int index)
 {
-  index = std::max(index, 0);
-  if (this->ShaftLight != index)
+  this->Impl->ShaftLights.push_back(index);
+  this->UpdateLight();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::RemoveAllShaftLights()
+{
+  if (!this->Impl->ShaftLights.empty())
   {
-    this->ShaftLight = index;
+    this->Impl->ShaftLights.clear();
     this->UpdateLight();
     this->Modified();
   }
+}
+
+//------------------------------------------------------------------------------
+int vtkPVLightShaftsView::GetNumberOfShaftLights() const
+{
+  return static_cast<int>(this->Impl->ShaftLights.size());
+}
+
+//------------------------------------------------------------------------------
+int vtkPVLightShaftsView::GetShaftLight(int i) const
+{
+  const std::vector<int>& lights = this->Impl->ShaftLights;
+  return (i >= 0 && i < static_cast<int>(lights.size())) ? lights[i] : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -270,6 +300,12 @@ void vtkPVLightShaftsView::RemoveLight(vtkLight* light)
                  [light](const vtkWeakPointer<vtkLight>& l) { return l == light; }),
     lights.end());
   this->UpdateLight();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetShadowSurfaces(bool shadow)
+{
+  this->Impl->Shafts->SetShadowSurfaces(shadow);
 }
 
 //------------------------------------------------------------------------------

@@ -11,10 +11,11 @@
  *
  * The pass's parameters are forwarded as view properties (server-manager proxy
  * "LightShaftsRenderView", label "Render View (Light Shafts)"); see LightShafts.xml for their
- * ranges and defaults. The scattering light is the view's ShaftLight-th additional light
- * (ParaView's Light Inspector, 1-based), or with ShaftLight = 0 the first switched-on
- * spotlight (positional, cone angle < 90 degrees) of the view. The noise's time follows the
- * view time (the animation time) unless LinkShaftTimeToAnimation is off.
+ * ranges and defaults. The scattering lights are the additional lights (ParaView's Light
+ * Inspector, 1-based) listed by ShaftLights, of any kind (spot, point, directional), or with an
+ * empty list every switched-on spot and point light of the view (vtkLightShaftPass's automatic
+ * choice). The noise's time follows the view time (the animation time) unless
+ * LinkShaftTimeToAnimation is off.
  *
  * @sa vtkLightShaftPass vtkPVImageProcessingChain vtkPVRenderView
  */
@@ -62,18 +63,22 @@ public:
 
   ///@{
   /**
-   * Which light scatters: 0 = automatic (the first switched-on spotlight of the view), k >= 1
-   * = the k-th additional light (the Light Inspector's list, in the order the lights were
-   * added). A k beyond the list falls back to automatic. Default is 0.
+   * Which lights scatter (the ShaftLights property, a list): empty = automatic (every
+   * switched-on spot and point light of the view; directional lights only when listed, since
+   * the light kit's are directional); k >= 1 = the k-th additional light (the Light
+   * Inspector's list, in the order the lights were added), of any kind. Entries beyond the
+   * list are ignored (none left: automatic). Default is empty.
    */
-  void SetShaftLight(int index);
-  vtkGetMacro(ShaftLight, int);
+  void AddShaftLight(int index);
+  void RemoveAllShaftLights();
+  int GetNumberOfShaftLights() const;
+  int GetShaftLight(int i) const;
   ///@}
 
   ///@{
   /**
    * The additional lights (ParaView's AdditionalLights property, the Light Inspector): hide the
-   * superclass's methods to remember their order for ShaftLight, then forward.
+   * superclass's methods to remember their order for ShaftLights, then forward.
    */
   void AddLight(vtkLight* light);
   void RemoveLight(vtkLight* light);
@@ -91,6 +96,12 @@ public:
   void SetShaftExposure(double exposure);
   void SetAttenuateScene(bool attenuate);
   ///@}
+
+  /**
+   * Surfaces shadowed by the scattering lights' shadow maps (and shaped by the cookie),
+   * forwarded to vtkLightShaftPass::SetShadowSurfaces. Default is off.
+   */
+  void SetShadowSurfaces(bool shadow);
 
   ///@{
   /**
@@ -193,7 +204,6 @@ protected:
   bool DistributedShadowMap = true;
 
   bool LightShafts = true;
-  int ShaftLight = 0;
   int ShaftQuality = CUSTOM;
   bool LinkShaftTimeToAnimation = true;
   double ShaftTime = 0.0;
@@ -206,7 +216,7 @@ private:
   void UpdateImageProcessing();
   // Pushes the sampling parameters, then the preset if one is chosen.
   void UpdateQuality();
-  // Picks the scattering light from ShaftLight.
+  // Gives the pass the lights ShaftLights lists (none: its automatic choice).
   void UpdateLight();
   // Pushes the linked or fixed time.
   void UpdateTime();
