@@ -73,9 +73,9 @@ def render(width=160, height=120, prepare=None, **params):
     return renderer, window, info, shafts, image, pixels
 
 
-def error_against_reference(renderer, window, info, shafts, image, threshold=0.01):
+def error_against_reference(renderer, window, info, shafts, image, threshold=0.01, lights=None):
     reference = rh.reference_for(renderer, window, info, shafts,
-                                 shadows=_method != "analytic")
+                                 shadows=_method != "analytic", lights=lights)
     assert np.all(np.isfinite(reference))
     if reference.max() == 0.0:
         return 0.0 if image.max() == 0.0 else np.inf
@@ -275,3 +275,93 @@ def test_degenerate_scene():
     window.Render()
     assert shafts.GetLastGLErrorCount() == 0
     assert np.all(np.isfinite(rh.in_scatter(shafts)))
+
+
+# --- point and directional lights, several lights -----------------------------------------
+
+def point_light(position, attenuation=(1.0, 0.0, 0.05)):
+    """prepare(): sphere_and_floor's spotlight becomes a point light at `position`."""
+    def prepare(renderer, info, shafts):
+        info.light.SetConeAngle(180.0)
+        info.light.SetPosition(*position)
+        info.light.SetAttenuationValues(*attenuation)
+    return prepare
+
+
+def directional_light(position, focal_point):
+    """prepare(): sphere_and_floor's spotlight becomes a directional light."""
+    def prepare(renderer, info, shafts):
+        info.light.SetPositional(False)
+        info.light.SetPosition(*position)
+        info.light.SetFocalPoint(*focal_point)
+    return prepare
+
+
+def then(*prepares):
+    def prepare(renderer, info, shafts):
+        for step in prepares:
+            step(renderer, info, shafts)
+    return prepare
+
+
+@pytest.mark.parametrize("case", ["eye next to it", "inside the sphere", "far away",
+                                  "largest shadow map"])
+def test_point_light_extremes(method, case):
+    params = {}
+    if case == "eye next to it":
+        light = (0.4, 3.4, 0.3)
+        prepare = then(point_light(light), move_camera((0.4 + 1e-3, 3.4, 0.3), (0.0, 0.0, 0.0)))
+    elif case == "inside the sphere":  # every direction blocked a radius 0.8 away
+        prepare = point_light((0.0, 1.5, 0.0))
+    elif case == "far away":  # 1000 units up: nearly parallel light, 1/r^2 = 1e-6
+        prepare = point_light((0.3, 1000.0, 0.2), attenuation=(0.0, 0.0, 1.0))
+    else:
+        if method not in ("slices", "ray-march"):
+            pytest.skip("only SLICES and RAY_MARCH use a shadow map")
+        prepare = point_light((0.4, 3.4, 0.3))
+        params["ShadowMapSize"] = 16384  # faces limited to a third of the largest texture
+    args = render(prepare=prepare, **params)
+    renderer, window, info, shafts, image, _ = args
+    assert shafts.GetLastLightKind(0) == vtkLightShaftPass.POINT_LIGHT
+    if case == "inside the sphere" and method != "analytic":
+        # Only the inside of the sphere is lit; the camera sees its outside: nothing.
+        assert image.max() == 0.0
+        return
+    assert error_against_reference(*args[:5]) < bound(0.03)
+
+
+@pytest.mark.parametrize("case", ["eye on its plane", "grazing", "along the view",
+                                  "tiny focal distance"])
+def test_directional_light_extremes(method, case):
+    if case == "eye on its plane":  # the camera on the plane the light starts from
+        prepare = then(directional_light((0.0, 4.0, 12.0), (0.0, 0.0, 12.0)),
+                       move_camera((0.0, 4.0, 12.0), (0.0, 2.0, 0.0)))
+    elif case == "grazing":  # 0.6 degrees above the floor's plane
+        prepare = directional_light((-10.0, 1.6, 0.0), (10.0, 1.4, 0.0))
+    elif case == "along the view":  # light travelling towards the camera, from behind the scene
+        prepare = directional_light((0.0, 2.0, -20.0), (0.0, 2.0, 0.0))
+    else:  # focal point 1e-4 from the position: only the direction matters
+        prepare = directional_light((0.5, 6.0, 0.0), (0.5, 6.0 - 1e-4, 0.0))
+    args = render(prepare=prepare)
+    shafts = args[3]
+    assert shafts.GetLastLightKind(0) == vtkLightShaftPass.DIRECTIONAL_LIGHT
+    assert error_against_reference(*args[:5]) < bound(0.03)
+
+
+def test_eight_lights_at_once(method):
+    colours = [(1, 0.2, 0.2), (0.2, 1, 0.2), (0.2, 0.2, 1), (1, 1, 0.2)]
+
+    def prepare(renderer, info, shafts):
+        for k, colour in enumerate(colours):
+            angle = 2.0 * np.pi * k / len(colours)
+            x, z = 4.0 * np.cos(angle), 4.0 * np.sin(angle)
+            scenes.add_spotlight(renderer, (x, 5.0, z), (0.0, 0.5, 0.0), cone_angle=15.0,
+                                 color=colour, intensity=0.5)
+            scenes.add_point_light(renderer, (0.5 * x, 3.2, 0.5 * z), intensity=0.1,
+                                   color=colour, attenuation=(1.0, 0.0, 0.2))
+        info.light.SwitchOff()
+    args = render(prepare=prepare, ShadowMapSize=1024)
+    renderer, window, info, shafts, image, _ = args
+    assert shafts.GetLastNumberOfUsedLights() == 8
+    lights = [shafts.GetLastUsedLight(i) for i in range(8)]
+    assert error_against_reference(*args[:5], lights=lights) < bound(0.03)

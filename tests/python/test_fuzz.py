@@ -2,8 +2,9 @@
 
 A random sequence of what users do between frames: parameters set in range, at their bounds
 and to junk (NaN, +-inf, negative, huge), methods and presets switched, cookie and noise
-textures set, replaced by empty ones and removed, the light moved, widened past a spotlight,
-switched off; the camera moved (into the beam too), perspective and parallel; the window
+textures set, replaced by empty ones and removed, the light moved, widened past a spotlight
+(a point light), made directional, switched off; other lights (a point light, a sun, a second
+spot) switched on and off, given to the pass and taken away (several lights); the camera moved (into the beam too), perspective and parallel; the window
 resized down to 1x1, viewports, multisampling changed, a hardware selection now and then.
 After every frame:
   - no GL error, and no VTK message but the pass's documented ones (an error naming the
@@ -103,6 +104,17 @@ class Fuzzer:
         self.info = scenes.sphere_and_floor(self.renderer, sphere_resolution=24)
         scenes.add_fill_light(self.renderer)
         self.spot = self.info.light
+        # Other lights of every kind, switched off until the fuzz switches them on.
+        self.others = {
+            "point": scenes.add_point_light(self.renderer, (1.0, 3.5, 1.0),
+                                            attenuation=(1.0, 0.0, 0.05)),
+            "sun": scenes.add_directional_light(self.renderer, (2.0, 9.0, -1.0),
+                                                (0.0, 0.0, 0.0)),
+            "spot2": scenes.add_spotlight(self.renderer, (-4.0, 5.0, 2.0), (0.0, 1.0, 0.0),
+                                          cone_angle=20.0, color=(0.3, 0.5, 1.0)),
+        }
+        for light in self.others.values():
+            light.SwitchOff()
         self.shafts = vtkLightShaftPass()
         self.renderer.SetPass(self.shafts)
         self.log = Messages(self.shafts)
@@ -204,9 +216,34 @@ class Fuzzer:
         self.shafts.SetLight(light)
         return f"SetLight({target})"
 
+    def several_lights(self):
+        rng = self.rng
+        name = rng.choice(sorted(self.others))
+        light = self.others[name]
+        choice = rng.random()
+        if choice < 0.3:
+            light.SetSwitch(not light.GetSwitch())
+            return f"{name} switch {light.GetSwitch()}"
+        if choice < 0.55:
+            self.shafts.AddLight(light)
+            return f"AddLight({name})"
+        if choice < 0.7:
+            self.shafts.RemoveLight(light)
+            return f"RemoveLight({name})"
+        if choice < 0.8:
+            self.shafts.RemoveAllLights()
+            return "RemoveAllLights()"
+        if choice < 0.9:
+            self.spot.SetPositional(not self.spot.GetPositional())
+            return f"spot positional {self.spot.GetPositional()}"
+        light.SetPosition(rng.uniform(-8, 8), rng.uniform(-2, 10), rng.uniform(-8, 8))
+        light.SetFocalPoint(rng.uniform(-3, 3), rng.uniform(-1, 2), rng.uniform(-3, 3))
+        return f"{name} at {light.GetPosition()} -> {light.GetFocalPoint()}"
+
     def usable_light(self):
         # Users switch lights back on: keep most frames computing shafts.
         self.spot.SetSwitch(True)
+        self.spot.SetPositional(True)
         self.spot.SetConeAngle(self.rng.uniform(5, 60))
         self.spot.SetIntensity(1.0)
         self.shafts.SetLight(None)
@@ -274,7 +311,7 @@ class Fuzzer:
         return "hardware selection"
 
     ACTIONS = [(set_scalar, 30), (set_vector, 8), (set_boolean, 6), (preset, 2), (textures, 5),
-               (light, 10), (usable_light, 5), (camera, 10), (window_size, 6), (viewport, 4), (multisamples, 3),
+               (light, 10), (several_lights, 8), (usable_light, 5), (camera, 10), (window_size, 6), (viewport, 4), (multisamples, 3),
                (delegate, 2), (selection, 2)]
 
     # --- one frame --------------------------------------------------------------------------
