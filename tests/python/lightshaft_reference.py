@@ -6,12 +6,13 @@ the model that vtkLightShaftPass documents, summed over the lights:
     L_in = sum over lights of
            int_0^{t_s} sigma_s p(cos theta) I S(x) A(r) V(x) exp(-sigma_t r) exp(-sigma_t t) dt
 
-for an analytic scene made of spheres (occluders) and finite horizontal floors (they stop view
-rays but cast no shadow), lit by spotlights, point lights and directional lights. Nothing here
-uses the pass or VTK's matrices: rays come from the camera's position, focal point, view-up,
+for an analytic scene made of spheres and finite horizontal floors (both stop view rays and cast
+shadows), lit by spotlights, point lights and directional lights. Nothing here uses the pass or
+VTK's matrices: rays come from the camera's position, focal point, view-up,
 view angle (or parallel scale) and clipping range; surfaces and shadows are exact (ray-sphere
 and ray-plane hits; a sphere's shadow from a spot or point light is the part of its tangent cone
-beyond the tangent circle, from a directional light the half-cylinder beyond its centre). The
+beyond the tangent circle, from a directional light the half-cylinder beyond its centre; a
+floor's shadow is where the segment to the light crosses its rectangle, one interval). The
 ray is split at every breakpoint (where the light starts or stops shining, shadow entry/exit,
 surface) and each smooth piece is integrated by composite Gauss-Legendre quadrature: about a
 spot or point light in s with x = h sinh(s) (x along the ray from its point closest to the
@@ -256,6 +257,57 @@ def cylinder_shadow_interval(origin, dirs, axis, centre, radius):
     return np.where(never, np.inf, lo), np.where(never, -np.inf, hi)
 
 
+def _half_line(lo, hi, alpha, beta):
+    """[lo, hi] narrowed to where alpha + beta t >= 0."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = -alpha / beta
+    lo = np.where(beta > 0, np.maximum(lo, t), lo)
+    hi = np.where(beta < 0, np.minimum(hi, t), hi)
+    never = (beta == 0) & (alpha < 0)
+    return np.where(never, np.inf, lo), np.where(never, -np.inf, hi)
+
+
+def floor_shadow_interval(light, origin, dirs, floor):
+    """Where the ray is in a floor rectangle's shadow: the segment from x to a spot or point
+    light, or from x back along a to a directional light's plane, crosses the rectangle. Every
+    condition is linear in t (for a positional light after multiplying by the distance across
+    the floor's plane, positive on the far side), so the shadow is one interval."""
+    height, xmin, xmax, zmin, zmax = floor
+    shape = dirs.shape[:-1]
+    o = np.broadcast_to(origin, dirs.shape)
+    lo, hi = np.full(shape, -np.inf), np.full(shape, np.inf)
+    position = np.asarray(light.position, float)
+    if light.kind == "directional":
+        a = _axis(light)
+        if a[1] == 0.0:
+            return np.full(shape, np.inf), np.full(shape, -np.inf)
+        # The segment meets the floor's plane at p = x - s a, s = (y - height) / a_y >= 0,
+        # which must lie beyond the light's plane: r(p) = r(x) - s >= 0.
+        s0, s1 = (o[..., 1] - height) / a[1], dirs[..., 1] / a[1]
+        lo, hi = _half_line(lo, hi, s0, s1)
+        lo, hi = _half_line(lo, hi, (o - position) @ a - s0, dirs @ a - s1)
+        for c, (cmin, cmax) in ((0, (xmin, xmax)), (2, (zmin, zmax))):
+            alpha, beta = o[..., c] - a[c] * s0, dirs[..., c] - a[c] * s1
+            lo, hi = _half_line(lo, hi, alpha - cmin, beta)
+            lo, hi = _half_line(lo, hi, cmax - alpha, -beta)
+        return lo, hi
+    q = position[1] - height  # the light's height above the floor's plane
+    if q == 0.0:
+        return np.full(shape, np.inf), np.full(shape, -np.inf)
+    sg = np.sign(q)
+    # x on the far side of the plane; there D = sg (L_y - y) > 0 and p_c = L_c + (x_c - L_c) q /
+    # (L_y - y), so cmin <= p_c <= cmax is linear in t once multiplied by D.
+    lo, hi = _half_line(lo, hi, sg * (height - o[..., 1]), -sg * dirs[..., 1])
+    across0, across1 = position[1] - o[..., 1], -dirs[..., 1]
+    for c, (cmin, cmax) in ((0, (xmin, xmax)), (2, (zmin, zmax))):
+        along0, along1 = (o[..., c] - position[c]) * q, dirs[..., c] * q
+        lo, hi = _half_line(lo, hi, sg * ((position[c] - cmin) * across0 + along0),
+                            sg * ((position[c] - cmin) * across1 + along1))
+        lo, hi = _half_line(lo, hi, sg * ((cmax - position[c]) * across0 - along0),
+                            sg * ((cmax - position[c]) * across1 - along1))
+    return lo, hi
+
+
 def _axis(light):
     """Unit direction from the light's position to its focal point."""
     return _normalize(np.asarray(light.focal_point, float) - np.asarray(light.position, float))
@@ -409,7 +461,7 @@ def _integrate_pieces(eye, dirs, t0, t1, light, medium, panels):
 
 def in_scattered_radiance(cam, light, medium, scene, panels=4, rows_per_chunk=32, shadows=True):
     """L_in as an array (height, width, 3), row 0 at the bottom, for one light or a list of
-    lights (their sum). shadows=False: the spheres stop view rays but cast no shadow (what an
+    lights (their sum). shadows=False: spheres and floors stop view rays but cast no shadow (what an
     unshadowed method computes)."""
     lights = list(light) if isinstance(light, (list, tuple)) else [light]
     eye, dirs, forward = camera_rays(cam)
@@ -426,8 +478,10 @@ def in_scattered_radiance(cam, light, medium, scene, panels=4, rows_per_chunk=32
             hi = np.minimum(hi, t_s)
             # Lit pieces: [lo, hi] minus the union of shadow intervals (spheres may overlap).
             pieces = [(lo, hi)]
-            for centre, radius in (scene.spheres if shadows else []):
-                s0, s1 = shadow_interval(each, o, d, centre, radius)
+            occluders = [shadow_interval(each, o, d, centre, radius)
+                         for centre, radius in scene.spheres]
+            occluders += [floor_shadow_interval(each, o, d, floor) for floor in scene.floors]
+            for s0, s1 in (occluders if shadows else []):
                 no_shadow = s0 >= s1
                 s0 = np.where(no_shadow, np.inf, s0)
                 s1 = np.where(no_shadow, np.inf, s1)
