@@ -164,6 +164,34 @@ void Integrate(const std::function<RGB(double)>& f,
 }
 
 //------------------------------------------------------------------------------
+double Model::Distance(const Vec& x) const
+{
+  return this->Directional() ? Dot(x - this->Light, this->Axis) : Norm(x - this->Light);
+}
+
+double Model::NoiseLayers(double u, double v) const
+{
+  const double s1 = this->NoiseScale;
+  const double s2 = 1.37 * this->NoiseScale;
+  const double n1 = Lookup(this->Noise,
+    this->NoiseWidth,
+    this->NoiseHeight,
+    1,
+    0,
+    u * s1 + this->NoiseShift[0],
+    v * s1 + this->NoiseShift[1],
+    true);
+  const double n2 = Lookup(this->Noise,
+    this->NoiseWidth,
+    this->NoiseHeight,
+    1,
+    0,
+    u * s2 + this->NoiseShift[2],
+    v * s2 + this->NoiseShift[3],
+    true);
+  return n1 * n2;
+}
+
 RGB Model::Modulation(const Vec& x) const
 {
   RGB out{ 1.0, 1.0, 1.0 };
@@ -172,41 +200,53 @@ RGB Model::Modulation(const Vec& x) const
     return out;
   }
   const Vec d = x - this->Light;
-  const double depth = Dot(d, this->Axis);
-  if (depth <= 0.0)
+  if (this->Kind == vtkLightShaftModel::LightKind::Point)
   {
-    return out;
+    // No cookie; the noise on the three planes across the unit sphere of directions.
+    const double r = Norm(d);
+    if (this->Noise.empty() || r <= 0.0)
+    {
+      return out;
+    }
+    const Vec n = (1.0 / r) * d;
+    const glm::dvec3 w = vtkLightShaftModel::TriplanarWeights(glm::dvec3(n[0], n[1], n[2]));
+    const double layers = w.x * this->NoiseLayers(0.5 * n[1] + 0.5, 0.5 * n[2] + 0.5) +
+                          w.y * this->NoiseLayers(0.5 * n[2] + 0.5, 0.5 * n[0] + 0.5) +
+                          w.z * this->NoiseLayers(0.5 * n[0] + 0.5, 0.5 * n[1] + 0.5);
+    const double density = 1.0 + this->NoiseAmplitude * (layers - 1.0);
+    return { density, density, density };
   }
-  const double u = 0.5 * Dot(d, this->Right) / (depth * this->SquareTangent) + 0.5;
-  const double v = 0.5 * Dot(d, this->Up) / (depth * this->SquareTangent) + 0.5;
+  // The light's square: in perspective from a spot, tiling a directional light's plane.
+  double u;
+  double v;
+  if (this->Directional())
+  {
+    u = Dot(d, this->Right) / this->SquareSide + 0.5;
+    v = Dot(d, this->Up) / this->SquareSide + 0.5;
+  }
+  else
+  {
+    const double depth = Dot(d, this->Axis);
+    if (depth <= 0.0)
+    {
+      return out;
+    }
+    u = 0.5 * Dot(d, this->Right) / (depth * this->SquareTangent) + 0.5;
+    v = 0.5 * Dot(d, this->Up) / (depth * this->SquareTangent) + 0.5;
+  }
   if (!this->Cookie.empty())
   {
+    const bool repeat = this->Directional();
+    const double cu = repeat ? u - std::floor(u) : u;
+    const double cv = repeat ? v - std::floor(v) : v;
     for (int c = 0; c < 3; ++c)
     {
-      out[c] = Lookup(this->Cookie, this->CookieWidth, this->CookieHeight, 3, c, u, v, false);
+      out[c] = Lookup(this->Cookie, this->CookieWidth, this->CookieHeight, 3, c, cu, cv, repeat);
     }
   }
   if (!this->Noise.empty())
   {
-    const double s1 = this->NoiseScale;
-    const double s2 = 1.37 * this->NoiseScale;
-    const double n1 = Lookup(this->Noise,
-      this->NoiseWidth,
-      this->NoiseHeight,
-      1,
-      0,
-      u * s1 + this->NoiseShift[0],
-      v * s1 + this->NoiseShift[1],
-      true);
-    const double n2 = Lookup(this->Noise,
-      this->NoiseWidth,
-      this->NoiseHeight,
-      1,
-      0,
-      u * s2 + this->NoiseShift[2],
-      v * s2 + this->NoiseShift[3],
-      true);
-    const double density = 1.0 + this->NoiseAmplitude * (n1 * n2 - 1.0);
+    const double density = 1.0 + this->NoiseAmplitude * (this->NoiseLayers(u, v) - 1.0);
     for (double& channel : out)
     {
       channel *= density;
@@ -237,33 +277,62 @@ bool Model::FallingAttenuation() const
   return this->Attenuation[1] != 0.0 || this->Attenuation[2] != 0.0;
 }
 
+bool Model::Equiangular() const
+{
+  return !this->Directional() && this->FallingAttenuation();
+}
+
 bool Model::ClosedFormsHold() const
 {
-  return this->Cookie.empty() && this->Noise.empty() && this->Attenuation[0] == 0.0 &&
-         this->Attenuation[1] == 0.0 && this->Attenuation[2] > 0.0 && this->Exponent == 0.0 &&
-         this->Phase == vtkLightShaftPass::ISOTROPIC;
+  if (!this->Cookie.empty() || !this->Noise.empty())
+  {
+    return false;
+  }
+  if (this->Directional())
+  {
+    return true;
+  }
+  return this->Attenuation[0] == 0.0 && this->Attenuation[1] == 0.0 && this->Attenuation[2] > 0.0 &&
+         this->Exponent == 0.0 && this->Phase == vtkLightShaftPass::ISOTROPIC;
 }
 
 RGB Model::Integrand(const Vec& origin, const Vec& dir, double t) const
 {
   const Vec x = origin + t * dir;
-  const Vec toPoint = x - this->Light;
-  const double r = Norm(toPoint);
   RGB out{};
-  if (r <= 0.0)
+  double r;
+  Vec lightDir;
+  double factor = 1.0; // S(x) A(r)
+  if (this->Directional())
   {
-    return out;
+    r = Dot(x - this->Light, this->Axis);
+    if (r < 0.0)
+    {
+      return out;
+    }
+    lightDir = this->Axis;
   }
-  const Vec lightDir = (1.0 / r) * toPoint;
-  const double cosAxis = Dot(lightDir, this->Axis);
-  if (cosAxis < this->CosCone)
+  else
   {
-    return out;
+    const Vec toPoint = x - this->Light;
+    r = Norm(toPoint);
+    if (r <= 0.0)
+    {
+      return out;
+    }
+    lightDir = (1.0 / r) * toPoint;
+    if (this->Kind == vtkLightShaftModel::LightKind::Spot)
+    {
+      const double cosAxis = Dot(lightDir, this->Axis);
+      if (cosAxis < this->CosCone)
+      {
+        return out;
+      }
+      factor = this->Exponent == 0.0 ? 1.0 : std::pow(cosAxis, this->Exponent);
+    }
+    factor /= this->Attenuation[0] + r * (this->Attenuation[1] + this->Attenuation[2] * r);
   }
-  const double spot = this->Exponent == 0.0 ? 1.0 : std::pow(cosAxis, this->Exponent);
-  const double a =
-    1.0 / (this->Attenuation[0] + r * (this->Attenuation[1] + this->Attenuation[2] * r));
-  const double scalar = this->PhaseValue(-Dot(dir, lightDir)) * spot * a;
+  const double scalar = this->PhaseValue(-Dot(dir, lightDir)) * factor;
   const RGB modulation = this->Modulation(x);
   for (int c = 0; c < 3; ++c)
   {
@@ -283,6 +352,7 @@ Model MakeModel(vtkLight* light, vtkLightShaftPass* pass)
       pass->GetPhaseFunction(),
       pass->GetAnisotropy());
   Model model;
+  model.Kind = described.Kind;
   model.Light = ToVec(described.Position);
   model.Axis = ToVec(described.Axis);
   model.CosCone = std::cos(described.ConeHalfAngle);
@@ -299,8 +369,10 @@ Model MakeModel(vtkLight* light, vtkLightShaftPass* pass)
   model.Right = ToVec(described.Right);
   model.Up = ToVec(described.Up);
   model.SquareTangent = described.SquareTangent;
+  model.SquareSide = described.SquareSide;
 
-  if (pass->GetCookie() &&
+  // A point light ignores the cookie (the pass says so once).
+  if (model.Kind != vtkLightShaftModel::LightKind::Point && pass->GetCookie() &&
       !vtkLightShaftImageToRGB(
         pass->GetCookie(), model.Cookie, model.CookieWidth, model.CookieHeight))
   {
@@ -333,6 +405,9 @@ Model MakeModel(vtkLight* light, vtkLightShaftPass* pass)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// The spot cone's forward nappe.
 void ConeInterval(const Model& model, const Vec& origin, const Vec& dir, double& t0, double& t1)
 {
   const Vec m = origin - model.Light;
@@ -423,31 +498,58 @@ void ConeInterval(const Model& model, const Vec& origin, const Vec& dir, double&
   t0 = lo - b;
   t1 = hi - b;
 }
+}
+
+void LitInterval(const Model& model, const Vec& origin, const Vec& dir, double& t0, double& t1)
+{
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  switch (model.Kind)
+  {
+    case vtkLightShaftModel::LightKind::Spot:
+      ConeInterval(model, origin, dir, t0, t1);
+      return;
+    case vtkLightShaftModel::LightKind::Point:
+      t0 = -infinity;
+      t1 = infinity;
+      return;
+    default:
+      break;
+  }
+  // Directional: r(t) = r0 + t k >= 0 (a ray parallel to the plane: all or nothing).
+  const double k = Dot(dir, model.Axis);
+  const double r0 = Dot(origin - model.Light, model.Axis);
+  t0 = -infinity;
+  t1 = infinity;
+  if (k > 0.0)
+  {
+    t0 = -r0 / k;
+  }
+  else if (k < 0.0)
+  {
+    t1 = -r0 / k;
+  }
+  else if (r0 < 0.0)
+  {
+    t0 = 1.0;
+    t1 = 0.0;
+  }
+}
 
 //------------------------------------------------------------------------------
-Result IntegrateRay(const Model& model,
+namespace
+{
+// The lit pieces of [u0, u1] (in the integration variable; toT maps it to the ray's t): the
+// visibility sampled at `samples` points, every change bisected to 1e-12 of the interval.
+std::vector<std::pair<double, double>> FindLitPieces(const std::function<bool(const Vec&)>& visible,
+  const std::function<double(double)>& toT,
   const Vec& origin,
   const Vec& dir,
-  double t0,
-  double t1,
-  const std::function<bool(const Vec&)>& visible,
-  int samples,
-  double tolerance,
-  bool closedForms)
+  double u0,
+  double u1,
+  int samples)
 {
-  // Integration variable: the equiangular angle when A falls off, else t.
-  const Vec m = origin - model.Light;
-  const double b = Dot(m, dir);
-  const double h = std::max(std::sqrt(std::max(Dot(m, m) - b * b, 0.0)), 1e-300);
-  const bool angle = model.FallingAttenuation();
-  auto toU = [&](double t) { return angle ? std::atan2(t + b, h) : t; };
-  auto toT = [&](double u) { return angle ? h * std::tan(u) - b : u; };
-  const double u0 = toU(t0);
-  const double u1 = toU(t1);
-
-  // Lit pieces: visibility sampled, transitions bisected.
   std::vector<std::pair<double, double>> lit;
-  bool previous = visible(origin + t0 * dir);
+  bool previous = visible(origin + toT(u0) * dir);
   double start = u0;
   double uPrevious = u0;
   for (int k = 1; k <= samples; ++k)
@@ -478,6 +580,120 @@ Result IntegrateRay(const Model& model,
   {
     lit.emplace_back(start, u1);
   }
+  return lit;
+}
+
+// The closed forms (A) and (B) of a spot or point light over [ta, tb] (A = 1 / (c2 r^2),
+// isotropic, no cone inside the piece); false when the ray runs along the line to the light.
+bool PositionalClosedForm(const Model& model,
+  const Vec& origin,
+  const Vec& dir,
+  double ta,
+  double tb,
+  double tolerance,
+  RGB& sum)
+{
+  const Vec m = origin - model.Light;
+  const double b = Dot(m, dir);
+  const double h = std::max(std::sqrt(std::max(Dot(m, m) - b * b, 0.0)), 1e-300);
+  const Vec toLight = model.Light - origin;
+  const double distance = Norm(toLight);
+  const double cosGamma = Dot(dir, toLight) / distance;
+  const double sinGamma = std::sqrt(std::max(1.0 - cosGamma * cosGamma, 0.0));
+  if (!(sinGamma > 1e-9))
+  {
+    return false;
+  }
+  const double c2 = model.Attenuation[2];
+  const double x0 = ta + b;
+  const double x1 = tb + b;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double scale = model.SigmaS[c] * model.Intensity[c] / (4.0 * Pi * c2);
+    if (model.SigmaT[c] == 0.0)
+    {
+      // (A): int dt / r^2 = atan2(h (x1 - x0), h^2 + x0 x1) / h.
+      sum[c] += scale * std::atan2(h * (x1 - x0), h * h + x0 * x1) / h;
+    }
+    else
+    {
+      // (B): Sun et al. 2005.
+      const double T = model.SigmaT[c] * distance;
+      const double a1 = T * sinGamma;
+      auto v = [&](double t)
+      { return Pi / 4.0 + 0.5 * std::atan((model.SigmaT[c] * t - T * cosGamma) / a1); };
+      const double a0 =
+        model.SigmaT[c] * std::exp(-T * cosGamma) / (2.0 * Pi * a1) * (4.0 * Pi * scale);
+      sum[c] += a0 * (SunF(a1, v(tb), tolerance) - SunF(a1, v(ta), tolerance));
+    }
+  }
+  return true;
+}
+
+// A directional light's exact integral over [ta, tb] (beyond its plane): theta is constant and
+// r(t) + t = r(ta) + ta + (1 + k)(t - ta) with k = dir . axis, so
+// int exp(-sigma_t (r + t)) dt = exp(-sigma_t (r(ta) + ta)) (1 - exp(-kappa L)) / kappa,
+// kappa = sigma_t (1 + k), L = tb - ta (L itself when kappa = 0: looking into the light).
+void DirectionalClosedForm(const Model& model,
+  const Vec& origin,
+  const Vec& dir,
+  double ta,
+  double tb,
+  RGB& sum)
+{
+  const double k = Dot(dir, model.Axis);
+  const double ra = std::max(Dot(origin + ta * dir - model.Light, model.Axis), 0.0);
+  const double phase = model.PhaseValue(-k);
+  const double length = tb - ta;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double kappa = model.SigmaT[c] * (1.0 + k);
+    const double integral = kappa > 0.0 ? -std::expm1(-kappa * length) / kappa : length;
+    sum[c] += model.SigmaS[c] * model.Intensity[c] * phase *
+              std::exp(-model.SigmaT[c] * (ra + ta)) * integral;
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+Result IntegrateRay(const Model& model,
+  const Vec& origin,
+  const Vec& dir,
+  double t0,
+  double t1,
+  const std::function<bool(const Vec&)>& visible,
+  int samples,
+  double tolerance,
+  bool closedForms)
+{
+  // Integration variable: the equiangular angle about the light when A falls off, else t. A
+  // ray through the light (h tiny) with a finite A there goes in t: the angle would put the
+  // whole integrand within h of its ends.
+  const Vec m = origin - model.Light;
+  const double b = model.Directional() ? 0.0 : Dot(m, dir);
+  const double h = std::max(std::sqrt(std::max(Dot(m, m) - b * b, 0.0)), 1e-300);
+  const double extent = std::max({ std::abs(t0 + b), std::abs(t1 + b), h });
+  const bool angle = model.Equiangular() && !(model.Attenuation[0] > 0.0 && h < 1e-6 * extent);
+  auto toU = [&](double t) { return angle ? std::atan2(t + b, h) : t; };
+  const std::function<double(double)> toT = [&](double u)
+  { return angle ? h * std::tan(u) - b : u; };
+
+  std::vector<std::pair<double, double>> lit =
+    FindLitPieces(visible, toT, origin, dir, toU(t0), toU(t1), samples);
+  if (!angle && !model.Directional())
+  {
+    // In t, split at the point closest to the light (the phase function's and A's peak).
+    const double closest = -b;
+    for (size_t k = 0; k < lit.size(); ++k)
+    {
+      if (lit[k].first < closest && closest < lit[k].second)
+      {
+        lit.insert(lit.begin() + k + 1, { closest, lit[k].second });
+        lit[k].second = closest;
+        ++k;
+      }
+    }
+  }
 
   RGB sum{};
   RGB error{};
@@ -486,41 +702,16 @@ Result IntegrateRay(const Model& model,
   {
     const double ta = toT(piece.first);
     const double tb = toT(piece.second);
-    if (closedForms)
+    if (closedForms && model.Directional())
     {
-      const Vec s = model.Light;
-      const Vec toLight = s - origin;
-      const double distance = Norm(toLight);
-      const double cosGamma = Dot(dir, toLight) / distance;
-      const double sinGamma = std::sqrt(std::max(1.0 - cosGamma * cosGamma, 0.0));
-      if (sinGamma > 1e-9)
-      {
-        usedClosedForm = true;
-        const double c2 = model.Attenuation[2];
-        const double x0 = ta + b;
-        const double x1 = tb + b;
-        for (int c = 0; c < 3; ++c)
-        {
-          const double scale = model.SigmaS[c] * model.Intensity[c] / (4.0 * Pi * c2);
-          if (model.SigmaT[c] == 0.0)
-          {
-            // (A): int dt / r^2 = atan2(h (x1 - x0), h^2 + x0 x1) / h.
-            sum[c] += scale * std::atan2(h * (x1 - x0), h * h + x0 * x1) / h;
-          }
-          else
-          {
-            // (B): Sun et al. 2005.
-            const double T = model.SigmaT[c] * distance;
-            const double a1 = T * sinGamma;
-            auto v = [&](double t)
-            { return Pi / 4.0 + 0.5 * std::atan((model.SigmaT[c] * t - T * cosGamma) / a1); };
-            const double a0 =
-              model.SigmaT[c] * std::exp(-T * cosGamma) / (2.0 * Pi * a1) * (4.0 * Pi * scale);
-            sum[c] += a0 * (SunF(a1, v(tb), tolerance) - SunF(a1, v(ta), tolerance));
-          }
-        }
-        continue;
-      }
+      DirectionalClosedForm(model, origin, dir, ta, tb, sum);
+      usedClosedForm = true;
+      continue;
+    }
+    if (closedForms && PositionalClosedForm(model, origin, dir, ta, tb, tolerance, sum))
+    {
+      usedClosedForm = true;
+      continue;
     }
     Integrate(
       [&](double u)

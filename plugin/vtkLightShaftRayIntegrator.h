@@ -1,13 +1,15 @@
 /**
  * @file   vtkLightShaftRayIntegrator.h
- * @brief  vtkLightShaftReference's integral along one view ray, in float64 (private, not
- *         installed): the model at a point, the cone interval, the lit pieces found by
- *         sampling and bisecting the visibility, and their integrals (closed forms or adaptive
- *         Gauss-Kronrod).
+ * @brief  vtkLightShaftReference's integral along one view ray for one light, in float64
+ *         (private, not installed): the model at a point for each kind of light (spot, point,
+ *         directional), the lit interval, the lit pieces found by sampling and bisecting the
+ *         visibility, and their integrals (closed forms or adaptive Gauss-Kronrod).
  */
 
 #ifndef vtkLightShaftRayIntegrator_h
 #define vtkLightShaftRayIntegrator_h
+
+#include "vtkLightShaftModel.h" // For LightKind
 
 #include <array>      // For Vec and RGB
 #include <cmath>      // For std::sqrt
@@ -64,11 +66,20 @@ void Integrate(const std::function<RGB(double)>& f,
   RGB& sum,
   RGB& error);
 
-/// Everything one ray's integral needs, in world coordinates, double precision.
+/**
+ * Everything one ray's integral needs for one light, in world coordinates, double precision.
+ * Per kind (P = Light, a = Axis):
+ * - Spot: r = |x - P|, lit inside the cone's forward nappe, S = cos(angle to a)^Exponent,
+ *   A = 1 / (c0 + c1 r + c2 r^2), light direction l = (x - P) / r.
+ * - Point: as a spot without the cone (S = 1).
+ * - Directional: r = (x - P) . a, the distance from the plane through P perpendicular to a;
+ *   lit where r >= 0; S = A = 1; l = a everywhere.
+ */
 struct Model
 {
-  Vec Light{};
-  Vec Axis{};
+  vtkLightShaftModel::LightKind Kind = vtkLightShaftModel::LightKind::Spot;
+  Vec Light{}; ///< the light's position (directional: a point of its plane)
+  Vec Axis{};  ///< unit: the spot's axis, the direction a directional light travels
   double CosCone = 1.0;
   double Exponent = 1.0;
   double Attenuation[3] = { 1.0, 0.0, 0.0 };
@@ -81,8 +92,9 @@ struct Model
   // The light's square as vtkLightShaftPass lays it out, for cookie and noise coordinates.
   Vec Right{ 1.0, 0.0, 0.0 };
   Vec Up{ 0.0, 1.0, 0.0 };
-  double SquareTangent = 1.0;
-  std::vector<float> Cookie; // RGB, row 0 at the bottom; empty: no cookie
+  double SquareTangent = 1.0; ///< spot: tan of the square's half-angle
+  double SquareSide = 1.0;    ///< directional: the square's side (cookie and noise period)
+  std::vector<float> Cookie;  // RGB, row 0 at the bottom; empty: no cookie (always, for a point)
   int CookieWidth = 0;
   int CookieHeight = 0;
   std::vector<float> Noise; // mean 1, tiled; empty: homogeneous
@@ -92,15 +104,32 @@ struct Model
   double NoiseScale = 1.0;
   double NoiseShift[4] = { 0.0, 0.0, 0.0, 0.0 };
 
-  /// Cookie colour times noise density at x (1 when neither is in use).
+  bool Directional() const { return this->Kind == vtkLightShaftModel::LightKind::Directional; }
+  /// r at x: the distance from the light, or from a directional light's plane (signed).
+  double Distance(const Vec& x) const;
+  /**
+   * Cookie colour times noise density at x (1 when neither is in use). Spot: the light's
+   * square in perspective, the cookie clamped to its edge. Directional: the square of side
+   * SquareSide centred on the axis through Light, the cookie repeating. Point: no cookie; the
+   * noise projected triplanar on the unit sphere of directions, in world axes.
+   */
   RGB Modulation(const Vec& x) const;
   double PhaseValue(double cosTheta) const;
   bool FallingAttenuation() const;
-  /// Whether the closed forms hold: a plain cone (exponent 0), isotropic phase, A = 1 / r^2,
-  /// no cookie and no noise.
+  /// Whether the ray is integrated in the equiangular angle about the light: A falls off (so
+  /// never for a directional light).
+  bool Equiangular() const;
+  /**
+   * Whether the closed forms hold: no cookie and no noise, and for a spot or point light a
+   * plain cone or none (exponent 0), isotropic phase and A = 1 / r^2 ((A), (B)); a directional
+   * light's unshadowed integral is exact for any phase (theta is constant).
+   */
   bool ClosedFormsHold() const;
   /// The integrand at parameter t of the ray origin + t dir (visibility excluded).
   RGB Integrand(const Vec& origin, const Vec& dir, double t) const;
+
+private:
+  double NoiseLayers(double u, double v) const;
 };
 
 /**
@@ -110,8 +139,12 @@ struct Model
  */
 Model MakeModel(vtkLight* light, vtkLightShaftPass* pass);
 
-/// The parameter interval of origin + t dir inside the cone's forward nappe (t0 > t1: none).
-void ConeInterval(const Model& model, const Vec& origin, const Vec& dir, double& t0, double& t1);
+/**
+ * The parameter interval of origin + t dir where the light shines (t0 > t1: none; infinite
+ * ends where it is unbounded): inside a spot's cone (its forward nappe), everywhere for a point
+ * light, in the half-space beyond a directional light's plane.
+ */
+void LitInterval(const Model& model, const Vec& origin, const Vec& dir, double& t0, double& t1);
 
 /// One ray's in-scattered radiance, its estimated quadrature error, and whether a closed form
 /// computed it.
@@ -123,10 +156,13 @@ struct Result
 };
 
 /**
- * The integral along origin + t dir over [t0, t1] (inside the cone, in front of the surface):
- * the visibility sampled at `samples` points (in the equiangular angle when A falls off) and
- * every change bisected to 1e-12 of the interval; each lit piece integrated by the closed
- * forms (when `closedForms`) or adaptive Gauss-Kronrod to `tolerance`.
+ * The integral along origin + t dir over [t0, t1] (inside the lit interval, in front of the
+ * surface): the visibility sampled at `samples` points (in the equiangular angle when A falls
+ * off, else in t) and every change bisected to 1e-12 of the interval; each lit piece integrated
+ * by the closed forms (when `closedForms`) or adaptive Gauss-Kronrod to `tolerance`. In t, the
+ * pieces of a spot or point light are split where the ray passes closest to the light (the
+ * phase function's peak); a ray through (within 1e-6 of its length of) a light whose A is
+ * finite there (c0 > 0) is integrated in t, since the angle would crowd it into the ends.
  */
 Result IntegrateRay(const Model& model,
   const Vec& origin,

@@ -25,6 +25,9 @@
 #include <atomic>
 #include <cmath>
 #include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkLightShaftReference);
 
@@ -85,11 +88,18 @@ void vtkLightShaftReference::SetRelativeTolerance(double tolerance)
 vtkMTimeType vtkLightShaftReference::GetMTime()
 {
   // The scene changes without telling us: any change of the renderer, its camera, lights or
-  // props, or of the pass, makes the next Update() recompute.
+  // props, or of the pass or the lights given to it, makes the next Update() recompute.
   vtkMTimeType time = this->Superclass::GetMTime();
   if (this->Pass)
   {
     time = std::max(time, this->Pass->GetMTime());
+    for (int i = 0; i < this->Pass->GetNumberOfLights(); ++i)
+    {
+      if (vtkLight* light = this->Pass->GetLight(i))
+      {
+        time = std::max(time, light->GetMTime()); // given lights need not be the renderer's
+      }
+    }
   }
   if (vtkRenderer* ren = this->Renderer)
   {
@@ -193,6 +203,46 @@ struct CameraRays
     }
   }
 };
+
+/**
+ * Set `scene` to decide visibility with the pass's shadow map of the one light used; what is
+ * wrong otherwise (empty: nothing). One light only: the pass publishes the depth range and
+ * bias of its first mapped light; a point light's cube map is not read back.
+ */
+std::string UseShadowMap(vtkLightShaftPass* pass,
+  vtkLightShaftReferenceScene& scene,
+  const std::vector<vtkLight*>& lights,
+  const std::vector<Model>& models)
+{
+  std::ostringstream problem;
+  if (lights.size() != 1)
+  {
+    problem << "SHADOW_MAP visibility supports exactly one light; " << lights.size()
+            << " lights are used (use EXACT visibility).";
+    return problem.str();
+  }
+  if (models[0].Kind == vtkLightShaftModel::LightKind::Point)
+  {
+    problem << "SHADOW_MAP visibility: point light " << lights[0]
+            << " has a cube shadow map, which the pass does not read back (use EXACT"
+               " visibility).";
+    return problem.str();
+  }
+  int index = -1;
+  for (int i = 0; i < pass->GetLastNumberOfUsedLights(); ++i)
+  {
+    if (pass->GetLastUsedLight(i) == lights[0])
+    {
+      index = i;
+    }
+  }
+  if (index < 0 || !scene.UseShadowMap(pass, index, models[0]))
+  {
+    problem << "SHADOW_MAP visibility: the pass rendered no shadow map for light " << lights[0]
+            << " in its last frame.";
+  }
+  return problem.str();
+}
 }
 
 //------------------------------------------------------------------------------
@@ -204,6 +254,7 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
   vtkRenderer* ren = this->Renderer;
   vtkLightShaftPass* pass = this->Pass;
   this->LastClosedFormPixels = 0;
+  this->LastNumberOfLights = 0;
   if (!ren || !pass)
   {
     vtkErrorMacro("SetRenderer and SetLightShaftPass are required.");
@@ -225,33 +276,46 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
   output->GetPointData()->SetScalars(radiance);
   output->GetPointData()->AddArray(errors);
 
-  // The light, chosen as the pass chooses it, and the model of light and medium.
+  // The lights, chosen as the pass chooses them, and the model of each with the medium.
   std::vector<vtkLight*> given;
   for (int i = 0; i < pass->GetNumberOfLights(); ++i)
   {
     given.push_back(pass->GetLight(i));
   }
-  const std::vector<vtkLight*> lights = vtkLightShaftModel::FindLights(given, ren);
-  vtkLight* light = lights.empty() ? nullptr : lights[0];
-  if (!light || !light->GetSwitch())
+  std::vector<Model> models;
+  std::vector<vtkLight*> used;
+  for (vtkLight* light : vtkLightShaftModel::FindLights(given, ren))
+  {
+    models.push_back(MakeModel(light, pass));
+    used.push_back(light);
+  }
+  this->LastNumberOfLights = static_cast<int>(models.size());
+  if (models.empty())
   {
     return 1; // no usable light: no in-scatter
   }
-  const Model model = MakeModel(light, pass);
 
   // The opaque polygonal props for surfaces and exact shadows; or the pass's shadow map.
   vtkLightShaftReferenceScene scene;
   scene.Capture(ren);
-  if (this->VisibilityMode == SHADOW_MAP && !scene.UseShadowMap(pass))
+  if (this->VisibilityMode == SHADOW_MAP)
   {
-    vtkErrorMacro("SHADOW_MAP visibility: the pass rendered no shadow map in its last frame.");
-    return 0;
+    const std::string problem = UseShadowMap(pass, scene, used, models);
+    if (!problem.empty())
+    {
+      vtkErrorMacro(<< problem);
+      return 0;
+    }
   }
 
   const CameraRays rays(ren->GetActiveCamera(), width, height);
   const double tolerance = this->RelativeTolerance;
   const int samples = this->VisibilitySamples;
-  const bool closedForms = this->UseClosedForms && model.ClosedFormsHold();
+  std::vector<char> closedForms;
+  for (const Model& model : models)
+  {
+    closedForms.push_back(this->UseClosedForms && model.ClosedFormsHold());
+  }
   std::atomic<vtkIdType> closedFormPixels(0);
   vtkSMPThreadLocal<std::shared_ptr<vtkLightShaftReferenceScene::Tracer>> tracers;
   double* radianceOut = radiance->GetPointer(0);
@@ -265,7 +329,6 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
       {
         tracer = std::make_shared<vtkLightShaftReferenceScene::Tracer>(scene);
       }
-      auto visible = [&](const Vec& x) { return tracer->Visible(x, model.Light); };
       vtkIdType closedHere = 0;
       for (vtkIdType pixel = first; pixel < last; ++pixel)
       {
@@ -274,30 +337,38 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
         double tFar;
         rays.Ray(
           static_cast<int>(pixel % width), static_cast<int>(pixel / width), origin, dir, tFar);
-        // The first surface along the ray, else the far plane; the part inside the cone.
+        // The first surface along the ray, else the far plane.
         double tSurface = tFar;
         double hit;
         if (tracer->FirstHit(origin, origin + tFar * dir, hit))
         {
           tSurface = hit * tFar;
         }
-        double t0;
-        double t1;
-        ConeInterval(model, origin, dir, t0, t1);
-        t0 = std::max(t0, 0.0);
-        t1 = std::min(t1, tSurface);
-        if (!(t1 > t0))
+        // Each light's share over the part of the ray it lights.
+        bool closed = false;
+        for (size_t l = 0; l < models.size(); ++l)
         {
-          continue;
+          const Model& model = models[l];
+          double t0;
+          double t1;
+          LitInterval(model, origin, dir, t0, t1);
+          t0 = std::max(t0, 0.0);
+          t1 = std::min(t1, tSurface);
+          if (!(t1 > t0))
+          {
+            continue;
+          }
+          auto visible = [&](const Vec& x) { return tracer->Visible(x, model); };
+          const Result result = IntegrateRay(
+            model, origin, dir, t0, t1, visible, samples, tolerance, closedForms[l] != 0);
+          closed = closed || result.ClosedForm;
+          for (int c = 0; c < 3; ++c)
+          {
+            radianceOut[3 * pixel + c] += result.Radiance[c];
+            errorOut[3 * pixel + c] += result.Error[c];
+          }
         }
-        const Result result =
-          IntegrateRay(model, origin, dir, t0, t1, visible, samples, tolerance, closedForms);
-        closedHere += result.ClosedForm ? 1 : 0;
-        for (int c = 0; c < 3; ++c)
-        {
-          radianceOut[3 * pixel + c] = result.Radiance[c];
-          errorOut[3 * pixel + c] = result.Error[c];
-        }
+        closedHere += closed ? 1 : 0;
       }
       closedFormPixels += closedHere;
     });
@@ -315,4 +386,6 @@ void vtkLightShaftReference::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RelativeTolerance: " << this->RelativeTolerance << "\n";
   os << indent << "VisibilitySamples: " << this->VisibilitySamples << "\n";
   os << indent << "UseClosedForms: " << this->UseClosedForms << "\n";
+  os << indent << "LastNumberOfLights: " << this->LastNumberOfLights << "\n";
+  os << indent << "LastClosedFormPixels: " << this->LastClosedFormPixels << "\n";
 }

@@ -3,35 +3,56 @@
  * @brief   Float64 CPU reference of the in-scattered radiance vtkLightShaftPass renders.
  *
  * Integrates exactly the model vtkLightShaftPass documents, for every pixel-centre view ray of
- * a renderer's camera:
+ * a renderer's camera, summed over the lights the pass uses:
  *
- *   L_in = int_0^{t_s} sigma_s p(cos theta) I S(x) A(r) V(x) exp(-sigma_t r) exp(-sigma_t t) dt
+ *   L_in = sum over lights of
+ *          int_0^{t_s} sigma_s p(cos theta) I S(x) A(r) V(x) M(x) exp(-sigma_t (r + t)) dt
  *
- * with the same light choice, spot term, attenuation, phase functions (cos theta = -d.(x -
- * light)/r) and medium, read from a vtkLightShaftPass. The surfaces and the visibility V are
- * exact: the opaque polygonal props (vtkActor with a vtkPolyDataMapper input, in world
- * coordinates) are put in a vtkModifiedBSPTree; t_s is the first hit of the ray (or the far
- * clipping plane) and V(x) tests the segment from x to the light. The ray is split at the
- * cone's entry and exit (closed form) and at every change of visibility (found on a sampling in
- * the equiangular angle, then bisected to 1e-12 of the ray's length); each piece is integrated
- * by adaptive Gauss-Kronrod (7/15 points) in the equiangular variable when A(r) falls off (in t
- * otherwise), or by the closed forms of shared/notes (A: no extinction; B: homogeneous
- * extinction, Sun et al. 2005) when the spot is a plain cone (exponent 0), the phase isotropic
- * and A = 1/r^2 (UseClosedForms, default on).
+ * with the same light choice (the switched-on lights given to the pass, of any kind; with none
+ * given every switched-on spot and point light of the renderer), light description, phase
+ * functions (cos theta = -d . l) and medium, read from a vtkLightShaftPass. Per kind of light
+ * (P its transformed position, a the unit direction to its focal point):
+ *  - spot (positional, cone angle below 90 degrees): r = |x - P|, lit inside the cone's forward
+ *    nappe, S = cos(angle to a)^exponent, A = 1 / (c0 + c1 r + c2 r^2), l = (x - P) / r;
+ *  - point (positional, cone angle of 90 degrees or more): as a spot without the cone (S = 1);
+ *  - directional (not positional): r = (x - P) . a, the distance from the plane through P
+ *    perpendicular to a; lit where r >= 0; S = A = 1; l = a.
+ * M is the cookie colour times the noise density when the pass has them: on a spot's square
+ * (cookie clamped to its edge), on a directional light's square of side |focal point - P|
+ * centred on its axis (cookie repeating), and for a point light no cookie and the noise
+ * triplanar over the unit direction from the light, in world axes.
+ *
+ * The surfaces and the visibility V are exact: the opaque polygonal props (vtkActor with a
+ * vtkPolyDataMapper input, in world coordinates) are put in a vtkModifiedBSPTree; t_s is the
+ * first hit of the ray (or the far clipping plane) and V(x) tests the segment from x to a spot
+ * or point light, or from x back along a to a directional light's plane (geometry before the
+ * plane casts nothing). For each light the ray is clipped to where the light shines (the cone,
+ * in closed form; everywhere; the half-space) and split at every change of visibility (found
+ * on a sampling, then bisected to 1e-12 of the ray's length); each piece is integrated by
+ * adaptive Gauss-Kronrod (7/15 points), in the equiangular angle about the light when A(r)
+ * falls off (in t otherwise), or by a closed form where one holds (UseClosedForms, default
+ * on): for a spot (exponent 0) or point light with isotropic phase and A = 1/r^2, those of
+ * shared/notes (A: no extinction; B: homogeneous extinction, Sun et al. 2005); for a
+ * directional light, any phase, the exact exponential integral (theta is constant). Neither
+ * holds with a cookie or noise.
  *
  * Output: a vtkImageData laid out like vtkLightShaftPass::GetInScatteredRadiance (viewport
  * size, row 0 at the bottom) with "InScatteredRadiance" (double RGB) and "ErrorEstimate" (the
- * quadrature's estimated absolute error per pixel, summed over the pieces, double RGB).
- * Pixels run in parallel with vtkSMPTools.
+ * quadrature's estimated absolute error per pixel, summed over the pieces and lights, double
+ * RGB). Pixels run in parallel with vtkSMPTools.
  *
  * Visibility: EXACT (default) as above, or SHADOW_MAP: the depth map the pass rendered in its
- * last frame, looked up as the pass does (nearest texel, same relative bias), so that comparing
- * the pass with both references separates the shadow map's error from the integration's.
+ * last frame, looked up as the pass does (nearest texel, the same bias: relative for a spot's
+ * perspective map, absolute in world units for a directional light's orthographic map with
+ * its linear depth), so that comparing the pass with both references separates the shadow
+ * map's error from the integration's. SHADOW_MAP needs exactly one used light, a spot or a
+ * directional light, that had a shadow map in the pass's last frame: the pass publishes the
+ * depth range and bias of its first mapped light only, and a point light's cube map is not read
+ * back. Otherwise Update() reports an error (naming the light) and fails; EXACT supports every
+ * kind and any number of lights.
  *
  * No regularisation of A(r) near the light, as in the pass: both integrate the model exactly.
- *
- * The pass's cookie and noise density are modelled (level 0 of their images, bilinear, laid out
- * as the pass lays them out). Parallel projection is supported.
+ * Parallel projection is supported.
  *
  * @sa vtkLightShaftPass
  */
@@ -56,8 +77,8 @@ public:
   /// How V(x) is decided.
   enum VisibilityModeType
   {
-    EXACT = 0,     ///< rays to the light against the scene's polygons
-    SHADOW_MAP = 1 ///< the pass's last shadow map, nearest texel
+    EXACT = 0,     ///< segments to the light (or its plane) against the scene's polygons
+    SHADOW_MAP = 1 ///< the pass's last shadow map of its one light, nearest texel
   };
 
   ///@{
@@ -72,7 +93,7 @@ public:
 
   ///@{
   /**
-   * The renderer whose camera, viewport size, light and props are integrated. Default is
+   * The renderer whose camera, viewport size, lights and props are integrated. Default is
    * nullptr (required).
    */
   void SetRenderer(vtkRenderer* renderer);
@@ -81,8 +102,8 @@ public:
 
   ///@{
   /**
-   * The pass whose medium, phase function and light choice are used. Default is nullptr
-   * (required).
+   * The pass whose medium, phase function, cookie, noise and lights (GetLight(i), or its
+   * automatic choice) are used. Default is nullptr (required).
    */
   void SetLightShaftPass(vtkLightShaftPass* pass);
   vtkLightShaftPass* GetLightShaftPass();
@@ -99,8 +120,9 @@ public:
 
   ///@{
   /**
-   * Visibility samples per lit cone interval before bisection, in [2, 100000]: a shadow
-   * feature narrower than one spacing (in the equiangular angle) can be missed. Default is 32.
+   * Visibility samples per lit interval and light before bisection, in [2, 100000]: a shadow
+   * feature narrower than one spacing (in the integration variable) can be missed. Default
+   * is 32.
    */
   vtkSetClampMacro(VisibilitySamples, int, 2, 100000);
   vtkGetMacro(VisibilitySamples, int);
@@ -117,9 +139,15 @@ public:
   ///@}
 
   /**
-   * Number of pixels of the last Update() computed by a closed form.
+   * Number of pixels of the last Update() where a closed form computed at least one light's
+   * share.
    */
   vtkGetMacro(LastClosedFormPixels, vtkIdType);
+
+  /**
+   * Number of lights the last Update() integrated (the pass's choice; 0 when none is usable).
+   */
+  vtkGetMacro(LastNumberOfLights, int);
 
 protected:
   vtkLightShaftReference();
@@ -134,6 +162,7 @@ protected:
   int VisibilitySamples = 32;
   bool UseClosedForms = true;
   vtkIdType LastClosedFormPixels = 0;
+  int LastNumberOfLights = 0;
 
 private:
   vtkLightShaftReference(const vtkLightShaftReference&) = delete;

@@ -108,9 +108,12 @@ void vtkLightShaftReferenceScene::Capture(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-bool vtkLightShaftReferenceScene::UseShadowMap(vtkLightShaftPass* pass)
+bool vtkLightShaftReferenceScene::UseShadowMap(vtkLightShaftPass* pass,
+  int index,
+  const vtkLightShaftRayIntegrator::Model& light)
 {
-  if (!pass->GetLastShadowMap(this->ShadowDepths, this->WorldToLightClip))
+  if (light.Kind == vtkLightShaftModel::LightKind::Point ||
+      !pass->GetLastShadowMap(this->ShadowDepths, this->WorldToLightClip, index))
   {
     return false;
   }
@@ -125,7 +128,8 @@ bool vtkLightShaftReferenceScene::UseShadowMap(vtkLightShaftPass* pass)
 }
 
 //------------------------------------------------------------------------------
-bool vtkLightShaftReferenceScene::ShadowMapVisible(const Vec& x) const
+bool vtkLightShaftReferenceScene::ShadowMapVisible(const Vec& x,
+  const vtkLightShaftRayIntegrator::Model& light) const
 {
   double clip[4];
   const double point[4] = { x[0], x[1], x[2], 1.0 };
@@ -150,6 +154,11 @@ bool vtkLightShaftReferenceScene::ShadowMapVisible(const Vec& x) const
   }
   const double n = this->LightNear;
   const double f = this->LightFar;
+  if (light.Directional())
+  {
+    // Orthographic (w = 1): the stored depth is linear in r, the bias in world units.
+    return light.Distance(x) <= n + stored * (f - n) + this->ShadowBias;
+  }
   const double caster = 2.0 * n * f / ((f + n) - (2.0 * stored - 1.0) * (f - n));
   return clip[3] <= caster * (1.0 + this->ShadowBias);
 }
@@ -198,11 +207,23 @@ bool vtkLightShaftReferenceScene::Tracer::FirstHit(const Vec& from, const Vec& t
 }
 
 //------------------------------------------------------------------------------
-bool vtkLightShaftReferenceScene::Tracer::Visible(const Vec& x, const Vec& light)
+bool vtkLightShaftReferenceScene::Tracer::Visible(const Vec& x,
+  const vtkLightShaftRayIntegrator::Model& model)
 {
   if (this->Scene.ShadowMap)
   {
-    return this->Scene.ShadowMapVisible(x);
+    return this->Scene.ShadowMapVisible(x, model);
+  }
+  // The segment to the light, or back to a directional light's plane.
+  Vec light = model.Light;
+  if (model.Directional())
+  {
+    const double r = model.Distance(x);
+    if (!(r > 0.0))
+    {
+      return true; // on (or before) the plane: nothing lies between
+    }
+    light = x - r * model.Axis;
   }
   const Vec toLight = light - x;
   const double distance = Norm(toLight);

@@ -1,7 +1,7 @@
 /**
  * @file   vtkLightShaftReferenceScene.h
- * @brief  vtkLightShaftReference's scene: surfaces and visibility, exact or from the pass's
- *         shadow map (private, not installed).
+ * @brief  vtkLightShaftReference's scene: surfaces and visibility per kind of light, exact or
+ *         from the pass's shadow map (private, not installed).
  */
 
 #ifndef vtkLightShaftReferenceScene_h
@@ -25,7 +25,11 @@ class vtkRenderer;
  * @class   vtkLightShaftReferenceScene
  * @brief   The opaque polygonal props of a renderer in world coordinates (one triangle mesh and
  *          bounding box per actor), for the reference's surfaces and exact shadows; or the
- *          pass's last shadow map, looked up as the pass looks it up.
+ *          pass's last shadow map of one light, looked up as the pass looks it up.
+ *
+ * Exact visibility of a point x: for a spot or point light, the segment from x to the light is
+ * unobstructed; for a directional light, the segment from x back along the light's direction
+ * to its plane (geometry before the plane casts nothing).
  *
  * Queries go through a Tracer, one per thread: VTK 9.1's vtkModifiedBSPTree keeps a scratch
  * cell per tree (shared trees gave non-deterministic results across threads).
@@ -41,9 +45,16 @@ public:
   /// Capture `renderer`'s visible, opaque actors with polygonal input.
   void Capture(vtkRenderer* renderer);
 
-  /// Decide visibility with `pass`'s last shadow map (nearest texel, its bias) instead of the
-  /// exact rays; false when the pass rendered no shadow map in its last frame.
-  bool UseShadowMap(vtkLightShaftPass* pass);
+  /**
+   * Decide visibility with the last shadow map of `pass`'s `index`-th used light, whose model
+   * is `light` (nearest texel, the pass's bias), instead of the exact rays: a spot's
+   * perspective map (relative bias) or a directional light's orthographic one (linear depth,
+   * absolute bias). False when that light had no shadow map in the last frame (and for a point
+   * light: its cube map is not read back).
+   */
+  bool UseShadowMap(vtkLightShaftPass* pass,
+    int index,
+    const vtkLightShaftRayIntegrator::Model& light);
 
   /**
    * The scene's queries for one thread.
@@ -56,8 +67,8 @@ public:
 
     /// The nearest hit of the segment from -> to, as a fraction of it; false when none.
     bool FirstHit(const Vec& from, const Vec& to, double& nearest);
-    /// Whether x sees `light`.
-    bool Visible(const Vec& x, const Vec& light);
+    /// Whether x sees `light` (see the class description).
+    bool Visible(const Vec& x, const vtkLightShaftRayIntegrator::Model& light);
 
   private:
     const vtkLightShaftReferenceScene& Scene;
@@ -69,7 +80,7 @@ private:
   vtkLightShaftReferenceScene(const vtkLightShaftReferenceScene&) = delete;
   void operator=(const vtkLightShaftReferenceScene&) = delete;
 
-  bool ShadowMapVisible(const Vec& x) const;
+  bool ShadowMapVisible(const Vec& x, const vtkLightShaftRayIntegrator::Model& light) const;
 
   struct Occluder
   {

@@ -98,14 +98,34 @@ def reference_camera(renderer, window, size=None):
     cam = renderer.GetActiveCamera()
     w, h = size or window.GetSize()
     return ref.Camera(cam.GetPosition(), cam.GetFocalPoint(), cam.GetViewUp(),
-                      cam.GetViewAngle(), cam.GetClippingRange(), w, h)
+                      cam.GetViewAngle(), cam.GetClippingRange(), w, h,
+                      parallel=bool(cam.GetParallelProjection()),
+                      parallel_scale=cam.GetParallelScale())
 
 
 def reference_light(light, cookie=None):
-    """A vtkLight, for the reference (optionally with a cookie function)."""
-    return ref.Spotlight(light.GetPosition(), light.GetFocalPoint(), light.GetConeAngle(),
-                         light.GetExponent(), light.GetAttenuationValues(), light.GetIntensity(),
-                         light.GetDiffuseColor(), cookie=cookie)
+    """A vtkLight of any kind, for the reference (optionally with a cookie function): a spot
+    (positional, cone angle below 90 degrees), a point light (positional, 90 or more; it takes
+    no cookie, as in the pass, so `cookie` is ignored) or a directional light (not positional).
+    Position and focal point are the transformed ones, as the pass reads them (a scene light's
+    are its own)."""
+    position = light.GetTransformedPosition()
+    focal_point = light.GetTransformedFocalPoint()
+    colour = tuple(light.GetDiffuseColor())
+    intensity = light.GetIntensity() if light.GetSwitch() else 0.0
+    if not light.GetPositional():
+        return ref.DirectionalLight(position, focal_point, intensity, colour, cookie=cookie)
+    if light.GetConeAngle() >= 90.0:
+        return ref.PointLight(position, light.GetAttenuationValues(), intensity, colour)
+    return ref.Spotlight(position, focal_point, light.GetConeAngle(), light.GetExponent(),
+                         light.GetAttenuationValues(), intensity, colour, cookie=cookie)
+
+
+def reference_lights(lights, cookie=None):
+    """A vtkLight or a list of them, for the reference (a list of reference lights)."""
+    if not isinstance(lights, (list, tuple)):
+        lights = [lights]
+    return [reference_light(light, cookie) for light in lights]
 
 
 def reference_medium(shaft_pass):
@@ -115,12 +135,15 @@ def reference_medium(shaft_pass):
 
 
 def reference_for(renderer, window, info, shaft_pass, panels=4, cookie=None, with_props=True,
-                  size=None, shadows=True):
+                  size=None, shadows=True, lights=None):
     """The float64 reference L_in for a scenes.* scene as the pass is set up (shadows=False:
-    surfaces stop the rays but cast no shadow)."""
+    surfaces stop the rays but cast no shadow). The lights: `lights` (a vtkLight or a list),
+    else info.lights when the scene has several, else info.light (which may be a list)."""
     scene = ref.Scene(spheres=info.spheres, floors=info.floors) if with_props else ref.Scene()
+    if lights is None:
+        lights = getattr(info, "lights", None) or info.light
     return ref.in_scattered_radiance(reference_camera(renderer, window, size),
-                                     reference_light(info.light, cookie),
+                                     reference_lights(lights, cookie),
                                      reference_medium(shaft_pass), scene, panels=panels,
                                      shadows=shadows)
 
@@ -130,9 +153,10 @@ def surface_points(renderer, window, info):
     camera = reference_camera(renderer, window)
     eye, dirs, forward = ref.camera_rays(camera)
     d = dirs.reshape(-1, 3)
-    t = ref.surface_distance(eye, d, forward, camera,
+    origins = np.broadcast_to(eye, dirs.shape).reshape(-1, 3)
+    t = ref.surface_distance(origins, d, forward, camera,
                              ref.Scene(spheres=info.spheres, floors=info.floors))
-    hit = eye + t[:, None] * d
+    hit = origins + t[:, None] * d
     return hit, np.abs(hit[:, 1]) < 1e-9
 
 
