@@ -29,6 +29,17 @@ float lightShaftPhase(float cosTheta)
 #endif
 }
 
+// The length scale of the equiangular variable u = atan(x / H) for a ray at distance h from the
+// light: H^2 = h^2 + c0 / c2, so that A dt = du / (c2 H) is uniform in u when c1 = 0 (for pure
+// inverse-square, H = h); h alone when c2 = 0. Kept away from 0 relative to the lit part
+// [x0, x1].
+float lightShaftAngleScale(float h2, float x0, float x1)
+{
+  float c2 = attenuationCoefficients.z;
+  float scale2 = h2 + ((c2 > 0.0) ? attenuationCoefficients.x / c2 : 0.0);
+  return max(sqrt(scale2), 1e-6 * max(abs(x0), abs(x1)) + 1e-30);
+}
+
 // The point of the ray originVC + t dirVC at integration variable u (x = t + b = u for constant
 // A, h tan(u) for falling A), its light distance r, and the sine of its scattering angle.
 // Returns the smooth factor there: phase * spot * exp(-sigma_t (r + t)).
@@ -52,8 +63,9 @@ vec3 lightShaftNode(vec3 originVC, vec3 dirVC, float b, float h, bool constantA,
 }
 
 // The A-weighted mean of the smooth factors over u in [u0, u1], with 3-point Gauss-Legendre in
-// t (constant A) or in the equiangular angle phi, x = h tan(phi) (falling A), where those
-// factors stay smooth even when the ray passes close to the light. Also returns the middle
+// t (constant A) or in the equiangular angle phi, x = h tan(phi) (falling A; h from
+// lightShaftAngleScale), where those factors stay smooth even when the ray passes close to the
+// light. Also returns the middle
 // node (the segment's equiangular midpoint).
 vec3 lightShaftSmoothMean(vec3 originVC, vec3 dirVC, float b, float h, bool constantA, float u0,
   float u1, out vec3 middleVC, out float middleR, out float middleSinTheta)
@@ -72,10 +84,12 @@ vec3 lightShaftSmoothMean(vec3 originVC, vec3 dirVC, float b, float h, bool cons
     vec3 factors =
       lightShaftNode(originVC, dirVC, b, h, constantA, uMid + uHalf * nodes[i], pointVC, r,
         sinTheta);
-    // Relative weight of this node in the A-weighted mean (dt/dphi = r^2 / h, h cancels).
+    // Relative weight of this node in the A-weighted mean: A dt/dphi with dt/dphi =
+    // (h^2 + x^2) / h = (r^2 + c0 / c2) / h (lightShaftAngleScale; h cancels).
+    float c2 = attenuationCoefficients.z;
     float a = constantA ? 1.0 :
-      r * r / (attenuationCoefficients.x + r * (attenuationCoefficients.y +
-        attenuationCoefficients.z * r));
+      (r * r + ((c2 > 0.0) ? attenuationCoefficients.x / c2 : 0.0)) /
+        (attenuationCoefficients.x + r * (attenuationCoefficients.y + c2 * r));
     smoothSum += nodeWeights[i] * a * factors;
     weightSum += nodeWeights[i] * a;
     if (i == 1)

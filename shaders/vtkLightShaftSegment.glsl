@@ -64,7 +64,7 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
   // smooth factors (phase, spot, extinction; lightShaftSmoothMean).
   float weight = lightShaftAttenuationIntegral(x0, x1, h2);
   bool constantA = attenuationCoefficients.y == 0.0 && attenuationCoefficients.z == 0.0;
-  float h = max(sqrt(h2), 1e-6 * max(abs(x0), abs(x1)) + 1e-30);
+  float h = lightShaftAngleScale(h2, x0, x1);
   float u0 = constantA ? x0 : atan(x0, h);
   float u1 = constantA ? x1 : atan(x1, h);
   vec3 sampleVC;
@@ -153,7 +153,7 @@ bool lightShaftLitInterval(float nearDepth, float farDepth, out LightShaftRay ra
 }
 
 // The integration variable over a lit part [x0, x1]: u = x when A is constant, else the
-// equiangular angle u = atan(x / h) (h kept away from 0), from u0 to u1.
+// equiangular angle u = atan(x / h) (h from lightShaftAngleScale), from u0 to u1.
 struct LightShaftVariable
 {
   bool constantA;
@@ -166,7 +166,7 @@ LightShaftVariable lightShaftVariable(LightShaftRay ray)
 {
   LightShaftVariable v;
   v.constantA = attenuationCoefficients.y == 0.0 && attenuationCoefficients.z == 0.0;
-  v.h = max(sqrt(ray.h2), 1e-6 * max(abs(ray.x0), abs(ray.x1)) + 1e-30);
+  v.h = lightShaftAngleScale(ray.h2, ray.x0, ray.x1);
   v.u0 = v.constantA ? ray.x0 : atan(ray.x0, v.h);
   v.u1 = v.constantA ? ray.x1 : atan(ray.x1, v.h);
   return v;

@@ -55,7 +55,7 @@ void main()
     x1 = min(x1, litOut);
   }
   bool constantA = attenuationCoefficients.y == 0.0 && attenuationCoefficients.z == 0.0;
-  float h = max(length(foot), 1e-6 * max(abs(x0), abs(x1)) + 1e-30);
+  float h = lightShaftAngleScale(dot(foot, foot), x0, x1);
   vec3 middleVC;
   float middleR;
   float middleSinTheta;

@@ -44,6 +44,7 @@ view.ScatteringCoefficient = [0.08, 0.07, 0.06]
 view.ShaftExposure = 100.0
 view.AttenuateScene = 0
 view.ShaftQuality = 3                               # Final preset
+view.ShadowSurfaces = 1                             # the floor shows the sphere's shadow too
 Render(view)  # the first render resets the camera to the data: place it afterwards
 view.CameraPosition = [2.0, 3.5, 14.0]
 view.CameraFocalPoint = [0.0, 2.5, 0.0]

@@ -38,7 +38,33 @@ CORNERS = [
       "BlurRadius": 32}),
     ("Final preset, cookie, noise, window MultiSamples 8",
      {"QualityToFinal": None, "NoiseAmplitude": 1.0, "cookie": True, "multisamples": 8}),
+    ("point light, ShadowMapSize 16384 (faces 5461)", {"kind": "point", "ShadowMapSize": 16384}),
+    ("point light, ShadowMapSize 16384, ShadowSurfaces",
+     {"kind": "point", "ShadowMapSize": 16384, "ShadowSurfaces": 1}),
+    ("directional light, ShadowMapSize 16384", {"kind": "directional", "ShadowMapSize": 16384}),
+    ("8 lights (4 spots, 4 points), Final preset, ShadowSurfaces",
+     {"kind": "eight", "QualityToFinal": None, "ShadowSurfaces": 1}),
 ]
+
+
+def make_lights(renderer, light, kind):
+    """The corner's lights: sphere_and_floor's spot turned into a point or a directional light,
+    or joined by four spots and four point lights around the sphere (the spot switched off)."""
+    from lightshafts import scenes
+    if kind == "point":
+        light.SetConeAngle(180.0)
+        light.SetPosition(0.4, 3.4, 0.3)
+        light.SetAttenuationValues(1.0, 0.0, 0.05)
+    elif kind == "directional":
+        light.SetPositional(False)
+    elif kind == "eight":
+        import math
+        for k in range(4):
+            x, z = 4.0 * math.cos(k * math.pi / 2), 4.0 * math.sin(k * math.pi / 2)
+            scenes.add_spotlight(renderer, (x, 5.0, z), (0.0, 0.5, 0.0), cone_angle=15.0)
+            scenes.add_point_light(renderer, (0.5 * x, 3.2, 0.5 * z), intensity=0.1,
+                                   attenuation=(1.0, 0.0, 0.2))
+        light.SwitchOff()
 
 
 def run_corner(params, width, height, frames):
@@ -52,7 +78,8 @@ def run_corner(params, width, height, frames):
     window.SetSize(width, height)
     renderer = vtkRenderer()
     window.AddRenderer(renderer)
-    scenes.sphere_and_floor(renderer, sphere_resolution=64)
+    info = scenes.sphere_and_floor(renderer, sphere_resolution=64)
+    make_lights(renderer, info.light, params.pop("kind", "spot"))
     window.Render()
     baseline = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
     shafts = vtkLightShaftPass()
