@@ -33,8 +33,8 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
 import render_helpers as rh  # noqa: E402
-from lightshafts import scenes, vtkLightShaftPass, vtkLightShaftReference  # noqa: E402
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from benchmark import reference_image  # noqa: E402  (tests/benchmarks/benchmark.py)
+from lightshafts import scenes, vtkLightShaftPass  # noqa: E402
 
 SIGMA_S, SIGMA_A = (0.05, 0.04, 0.03), (0.01, 0.01, 0.01)
 
@@ -94,16 +94,6 @@ def configure(shafts, lights, params):
             getattr(shafts, "SetQualityTo" + value)()
         else:
             getattr(shafts, "Set" + name)(value)
-
-
-def reference_image(renderer, shafts):
-    reference = vtkLightShaftReference()
-    reference.SetRenderer(renderer)
-    reference.SetLightShaftPass(shafts)
-    reference.Update()
-    image = reference.GetOutput()
-    w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, 3).copy()
 
 
 def measure(window, shafts, frames):

@@ -32,3 +32,20 @@ def test_benchmark_smoke(tmp_path):
     assert all(0.0 < float(r["ssim"]) <= 1.0 for r in measured)
     assert (tmp_path / "images" / "pareto.png").stat().st_size > 10000
     assert "| setting | time ratio |" in (tmp_path / "benchmark.md").read_text()
+
+
+def test_light_kinds_benchmark_smoke(tmp_path):
+    script = os.path.join(os.path.dirname(BENCHMARK), "light_kinds.py")
+    result = subprocess.run([sys.executable, script, "--smoke", "--output-dir", str(tmp_path)],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    with open(tmp_path / "light-kinds.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert {r["lights"] for r in rows} == {"spot", "point", "directional", "spot + point",
+                                           "2 spots + 2 points"}
+    for row in rows:
+        assert float(row["time_ratio"]) > 0.0
+        lights = 4 if row["lights"].startswith("2 spots") else 2 if "+" in row["lights"] else 1
+        assert len(row["gpu_ms_per_light"].split(" / ")) == lights
+        assert 0.0 <= float(row["relative_rmse"]) < 0.2  # Interactive, shadowed, at 96x72
+    assert "| lights | setting |" in (tmp_path / "light-kinds.md").read_text()
