@@ -86,6 +86,16 @@ run_backend() {
     echo "ctest failed ($build/ctest.log)" >&2
     return 1
   fi
+  # Every test this script stands for must have run and passed (no test left out or skipped).
+  local test_name
+  for test_name in LightShaftGeometry LightShaftPass.ImageRegression LightShaftAccuracy \
+    LightShaftContexts LightShafts.InstalledPackage; do
+    if ! grep -qE "Test +#[0-9]+: $test_name \.+ +Passed" "$build/ctest.log"; then
+      cat "$build/ctest.log" >&2
+      echo "ctest did not run and pass $test_name ($build/ctest.log)" >&2
+      return 1
+    fi
+  done
   grep -E "tests passed|Total Test time" "$build/ctest.log"
   # The figures the tests print (their full output: $build/Testing/Temporary/LastTest.log).
   grep -E "^(mean absolute difference|accuracy:|contexts:)" \
