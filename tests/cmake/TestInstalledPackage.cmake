@@ -1,6 +1,7 @@
 # Installs the build into a scratch prefix, builds examples/cpp against it with
 # find_package(LightShafts), and runs the example: proves the installed CMake package works.
-# Variables: BUILD_DIR, SOURCE_DIR, WORK_DIR.
+# Variables: BUILD_DIR, SOURCE_DIR, WORK_DIR, VTK_DIR (the VTK the build used, so that the example
+# finds that one: Debian's, or a headless build of tools/build-headless-vtk.sh).
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
 
@@ -13,7 +14,7 @@ endfunction ()
 
 run("${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${WORK_DIR}/prefix")
 run("${CMAKE_COMMAND}" -S "${SOURCE_DIR}/examples/cpp" -B "${WORK_DIR}/example"
-  "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" -DCMAKE_BUILD_TYPE=Release)
+  "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" "-DVTK_DIR=${VTK_DIR}" -DCMAKE_BUILD_TYPE=Release)
 run("${CMAKE_COMMAND}" --build "${WORK_DIR}/example")
 run("${WORK_DIR}/example/window_shafts" "${WORK_DIR}/window_shafts.png")
 if (NOT EXISTS "${WORK_DIR}/window_shafts.png")
