@@ -49,7 +49,8 @@ CORNERS = [
 
 def make_lights(renderer, light, kind):
     """The corner's lights: sphere_and_floor's spot turned into a point or a directional light,
-    or joined by four spots and four point lights around the sphere (the spot switched off)."""
+    or joined by four spots and four point lights around the sphere (the spot switched off).
+    Returns the lights to give the pass (a directional light scatters only when given)."""
     from lightshafts import scenes
     if kind == "point":
         light.SetConeAngle(180.0)
@@ -57,6 +58,7 @@ def make_lights(renderer, light, kind):
         light.SetAttenuationValues(1.0, 0.0, 0.05)
     elif kind == "directional":
         light.SetPositional(False)
+        return [light]
     elif kind == "eight":
         import math
         for k in range(4):
@@ -65,6 +67,7 @@ def make_lights(renderer, light, kind):
             scenes.add_point_light(renderer, (0.5 * x, 3.2, 0.5 * z), intensity=0.1,
                                    attenuation=(1.0, 0.0, 0.2))
         light.SwitchOff()
+    return []
 
 
 def run_corner(params, width, height, frames):
@@ -79,10 +82,12 @@ def run_corner(params, width, height, frames):
     renderer = vtkRenderer()
     window.AddRenderer(renderer)
     info = scenes.sphere_and_floor(renderer, sphere_resolution=64)
-    make_lights(renderer, info.light, params.pop("kind", "spot"))
+    given = make_lights(renderer, info.light, params.pop("kind", "spot"))
     window.Render()
     baseline = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
     shafts = vtkLightShaftPass()
+    for light in given:
+        shafts.AddLight(light)
     if params.pop("cookie", False):
         sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "python"))
         import render_helpers as rh
