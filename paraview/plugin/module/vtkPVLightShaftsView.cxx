@@ -11,6 +11,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPVImageProcessingChain.h"
 #include "vtkPVSynchronizedRenderer.h"
+#include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkTexture.h"
 #include "vtkTextureObject.h"
@@ -49,6 +50,9 @@ public:
 
   std::string CookieFileName;
   double ViewTime = 0.0;
+
+  // The renderer's own FXAA was turned off for this render (AboutToRenderOnLocalProcess).
+  bool RestoreRendererFXAA = false;
 };
 
 vtkStandardNewMacro(vtkPVLightShaftsView);
@@ -91,6 +95,20 @@ vtkPVLightShaftsView::vtkPVLightShaftsView()
   combine->SetCallback([](vtkObject*, unsigned long, void* self, void*)
     { static_cast<vtkPVLightShaftsView*>(self)->CombineShadowMaps(); });
   impl.Shafts->AddObserver(vtkLightShaftPass::ShadowMapRenderedEvent, combine);
+
+  vtkNew<vtkCallbackCommand> restoreFXAA;
+  restoreFXAA->SetClientData(this);
+  restoreFXAA->SetCallback(
+    [](vtkObject* renderer, unsigned long, void* self, void*)
+    {
+      bool& restore = static_cast<vtkPVLightShaftsView*>(self)->Impl->RestoreRendererFXAA;
+      if (restore)
+      {
+        static_cast<vtkRenderer*>(renderer)->SetUseFXAA(true);
+        restore = false;
+      }
+    });
+  this->GetRenderer()->AddObserver(vtkCommand::EndEvent, restoreFXAA);
 }
 
 namespace
@@ -106,6 +124,17 @@ vtkMultiProcessController* DistributedController()
 void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
 {
   this->Superclass::AboutToRenderOnLocalProcess(interactive);
+  // With its image-processing slot filled, ParaView 5.11 antialiases twice: its FXAA pass runs
+  // around the slot, and the renderer's own FXAA inside the scene's default pass. Keep the
+  // outer one (it sees the final picture, shafts included) and turn the renderer's off for
+  // this render (restored at its end), so the medium off gives a RenderView's picture.
+  vtkRenderer* renderer = this->GetRenderer();
+  if (this->SynchronizedRenderers->GetImageProcessingPass() &&
+      this->SynchronizedRenderers->GetUseFXAA() && renderer->GetUseFXAA())
+  {
+    renderer->SetUseFXAA(false);
+    this->Impl->RestoreRendererFXAA = true;
+  }
   vtkLightShaftPass* shafts = this->Impl->Shafts;
   if (this->DistributedShadowMap && DistributedController() && this->GeometryBounds.IsValid())
   {
