@@ -381,7 +381,10 @@ def light_in_view(renderer, scene):
     else:
         point = list(scene.light_position) + [1.0]
     x, y, _, w = matrix.MultiplyPoint(point)
-    return bool(w > 0 and abs(x / w) <= 1 and abs(y / w) <= 1)
+    # In front of the camera (a parallel projection's w is 1 behind it too).
+    ahead = np.dot(np.subtract(point[:3], point[3] * np.asarray(camera.GetPosition())),
+                   camera.GetDirectionOfProjection()) > 0
+    return bool(ahead and w > 0 and abs(x / w) <= 1 and abs(y / w) <= 1)
 
 
 def configure(shafts, scene, light, params):
