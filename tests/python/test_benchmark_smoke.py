@@ -49,3 +49,34 @@ def test_light_kinds_benchmark_smoke(tmp_path):
         assert len(row["gpu_ms_per_light"].split(" / ")) == lights
         assert 0.0 <= float(row["relative_rmse"]) < 0.2  # Interactive, shadowed, at 96x72
     assert "| lights | setting |" in (tmp_path / "light-kinds.md").read_text()
+
+
+def test_random_scenes_smoke(tmp_path):
+    import json
+    import math
+    import time
+    script = os.path.join(os.path.dirname(BENCHMARK), "random_scenes.py")
+    start = time.perf_counter()
+    result = subprocess.run([sys.executable, script, "--smoke", "--output-dir", str(tmp_path)],
+                            capture_output=True, text=True, timeout=600)
+    seconds = time.perf_counter() - start
+    assert result.returncode == 0, result.stderr
+    assert seconds < 60.0, seconds
+    with open(tmp_path / "random-scenes.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 3 * 2  # 3 scenes x (Interactive, Final)
+    assert {r["setting"] for r in rows} == {"Interactive", "Final"}
+    for row in rows:
+        assert math.isfinite(float(row["relative_rmse"])) and float(row["relative_rmse"]) >= 0
+        assert float(row["time_ratio"]) > 0.0
+        assert int(row["gl_errors"]) == 0
+        assert row["unexpected_warnings"] == ""  # every VTK message is a documented one
+        scene = json.loads(row["scene_json"])
+        assert (scene["width"], scene["height"]) == (96, 72)
+        if row["setting"] == "Final":
+            assert float(row["relative_rmse"]) < 0.2
+    text = (tmp_path / "random-scenes.md").read_text()
+    assert "| setting | scenes | median error | p90 error |" in text
+    assert (tmp_path / "images" / "random-pareto.png").stat().st_size > 10000
+    for k in (1, 2, 3):
+        assert (tmp_path / "images" / f"random-worst-{k}.png").stat().st_size > 10000
