@@ -7,30 +7,24 @@
 // Usage: TestLightShaftPass <baseline.png> [--update]
 //   --update writes the baseline instead of comparing (then check the image by eye).
 
+#include "LightShaftTestScene.h" // For the sphere-and-floor scene
 #include "vtkLightShaftPass.h"
 
-#include "vtkActor.h"
 #include "vtkCallbackCommand.h"
-#include "vtkCamera.h"
 #include "vtkDataObject.h"
 #include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
 #include "vtkImageData.h"
-#include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
 #include "vtkPNGReader.h"
 #include "vtkPNGWriter.h"
-#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSelection.h"
 #include "vtkSelectionNode.h"
 #include "vtkSmartPointer.h"
-#include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
@@ -90,48 +84,12 @@ int main(int argc, char* argv[])
   vtkOutputWindow::GetInstance()->AddObserver(vtkCommand::WarningEvent, recorder);
 
   vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.02, 0.02, 0.05);
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(true);
   window->SetMultiSamples(0);
   window->SetSize(320, 240);
   window->AddRenderer(renderer);
-
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(0.0, 1.5, 0.0);
-  sphere->SetRadius(0.8);
-  sphere->SetThetaResolution(128);
-  sphere->SetPhiResolution(128);
-  vtkNew<vtkPolyDataMapper> sphereMapper;
-  sphereMapper->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkActor> sphereActor;
-  sphereActor->SetMapper(sphereMapper);
-  sphereActor->GetProperty()->SetColor(0.9, 0.5, 0.3);
-  renderer->AddActor(sphereActor);
-
-  vtkNew<vtkPlaneSource> floor;
-  floor->SetOrigin(-6.0, 0.0, -6.0);
-  floor->SetPoint1(-6.0, 0.0, 6.0);
-  floor->SetPoint2(6.0, 0.0, -6.0);
-  vtkNew<vtkPolyDataMapper> floorMapper;
-  floorMapper->SetInputConnection(floor->GetOutputPort());
-  vtkNew<vtkActor> floorActor;
-  floorActor->SetMapper(floorMapper);
-  renderer->AddActor(floorActor);
-
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(true);
-  light->SetPosition(0.5, 6.0, 0.0);
-  light->SetFocalPoint(0.0, 0.0, 0.0);
-  light->SetConeAngle(30.0);
-  renderer->AddLight(light);
-
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0.0, 3.0, 12.0);
-  camera->SetFocalPoint(0.0, 2.0, 0.0);
-  camera->SetViewAngle(30.0);
-  renderer->ResetCameraClippingRange();
+  lightshafts_test::AddSphereAndFloor(renderer);
 
   vtkNew<vtkLightShaftPass> shafts;
   shafts->SetScatteringCoefficient(0.05, 0.045, 0.04);
