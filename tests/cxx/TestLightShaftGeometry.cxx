@@ -15,11 +15,14 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
+#include <initializer_list>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -35,6 +38,24 @@ void Check(bool condition, const std::string& what)
     std::cerr << "FAIL: " << what << std::endl;
     ++Failures;
   }
+}
+
+// Unit cubes at `centres`, added to `props`; returns their actors.
+std::vector<vtkSmartPointer<vtkActor>> AddUnitCubes(vtkPropCollection* props,
+  std::initializer_list<std::array<double, 3>> centres)
+{
+  std::vector<vtkSmartPointer<vtkActor>> actors;
+  for (const std::array<double, 3>& centre : centres)
+  {
+    vtkNew<vtkCubeSource> cube;
+    cube->SetCenter(centre.data());
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(cube->GetOutputPort());
+    actors.emplace_back(vtkSmartPointer<vtkActor>::New());
+    actors.back()->SetMapper(mapper);
+    props->AddItem(actors.back());
+  }
+  return actors;
 }
 
 double PolygonArea(const std::vector<glm::dvec2>& polygon)
@@ -154,17 +175,8 @@ void TestLightFrameAndSlabs()
 
   // A caster under the light and a prop far beside it.
   vtkNew<vtkPropCollection> props;
-  vtkNew<vtkActor> actors[2];
-  const double centres[2][3] = { { 0, 2, 0 }, { 20, 2, 0 } };
-  for (int i = 0; i < 2; ++i)
-  {
-    vtkNew<vtkCubeSource> cube;
-    cube->SetCenter(centres[i]);
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(cube->GetOutputPort());
-    actors[i]->SetMapper(mapper);
-    props->AddItem(actors[i]);
-  }
+  const std::vector<vtkSmartPointer<vtkActor>> actors =
+    AddUnitCubes(props, { { 0, 2, 0 }, { 20, 2, 0 } });
   const glm::dmat4 view =
     glm::lookAt(glm::dvec3(0, 3, 12), glm::dvec3(0, 2, 0), glm::dvec3(0, 1, 0));
   const auto camera = vtkLightShaftGeometry::CameraFrame::FromMatrices(
@@ -233,17 +245,8 @@ void TestPointLight()
 
   // One caster below the light, one beside it (+X), none above.
   vtkNew<vtkPropCollection> props;
-  vtkNew<vtkActor> actors[2];
-  const double centres[2][3] = { { 0, 1, 0 }, { 4, 3, 0 } };
-  for (int i = 0; i < 2; ++i)
-  {
-    vtkNew<vtkCubeSource> cube;
-    cube->SetCenter(centres[i]);
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(cube->GetOutputPort());
-    actors[i]->SetMapper(mapper);
-    props->AddItem(actors[i]);
-  }
+  const std::vector<vtkSmartPointer<vtkActor>> actors =
+    AddUnitCubes(props, { { 0, 1, 0 }, { 4, 3, 0 } });
   const glm::dmat4 view =
     glm::lookAt(glm::dvec3(0, 3, 12), glm::dvec3(0, 2, 0), glm::dvec3(0, 1, 0));
   const auto camera = vtkLightShaftGeometry::CameraFrame::FromMatrices(
@@ -296,18 +299,9 @@ void TestDirectionalLight()
     std::abs(model.Distance(glm::dvec3(3, 1, 2)) - 4.0) < 1e-12, "r: the distance from the plane");
 
   vtkNew<vtkPropCollection> props;
-  vtkNew<vtkActor> actors[3];
   // Under the plane in view; above the plane (casts nothing); far away beside the view.
-  const double centres[3][3] = { { 0, 2, 0 }, { 0, 7, 0 }, { 60, 2, 0 } };
-  for (int i = 0; i < 3; ++i)
-  {
-    vtkNew<vtkCubeSource> cube;
-    cube->SetCenter(centres[i]);
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(cube->GetOutputPort());
-    actors[i]->SetMapper(mapper);
-    props->AddItem(actors[i]);
-  }
+  const std::vector<vtkSmartPointer<vtkActor>> actors =
+    AddUnitCubes(props, { { 0, 2, 0 }, { 0, 7, 0 }, { 60, 2, 0 } });
   const glm::dmat4 view =
     glm::lookAt(glm::dvec3(0, 3, 12), glm::dvec3(0, 2, 0), glm::dvec3(0, 1, 0));
   for (bool parallel : { false, true })

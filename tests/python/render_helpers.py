@@ -160,6 +160,72 @@ def surface_points(renderer, window, info):
     return hit, np.abs(hit[:, 1]) < 1e-9
 
 
+POINT_ATTENUATION = {"point": (1.0, 0.0, 0.05), "point-constant": (1.0, 0.0, 0.0),
+                     "point-inverse-square": (0.0, 0.0, 1.0)}
+
+
+def make_light_kind(renderer, info, kind, point_position):
+    """Turn scenes.sphere_and_floor's spotlight (at (0.5, 6, 0), aiming at the origin) into
+    `kind` and return the lights to give the pass: "spot" (unchanged); a point light at
+    `point_position` with A = 1 / (1 + 0.05 r^2) ("point"), A = 1 ("point-constant") or A = 1 / r^2
+    ("point-inverse-square"); "directional" (the plane through (0.5, 6, 0), light travelling
+    down to the origin); "pair" (the spot, orange, and a blue point light)."""
+    from lightshafts import scenes
+    light = info.light
+    if kind in POINT_ATTENUATION:
+        light.SetConeAngle(180.0)
+        light.SetPosition(*point_position)
+        light.SetAttenuationValues(*POINT_ATTENUATION[kind])
+    elif kind == "directional":
+        light.SetPositional(False)
+    elif kind == "pair":
+        light.SetColor(1.0, 0.6, 0.3)
+        point = scenes.add_point_light(renderer, (-1.5, 3.2, 1.0), intensity=0.8,
+                                       color=(0.3, 0.6, 1.0), attenuation=(1.0, 0.0, 0.1))
+        return [light, point]
+    return [light]
+
+
+def floor_shadow_masks(renderer, window, info, erode=2):
+    """Analytic floor masks (lit by info.light, of any kind / in the sphere's shadow from it), as
+    (height, width) booleans eroded by `erode` pixels."""
+    w, h = window.GetSize()
+    hit, on_floor = surface_points(renderer, window, info)
+    light = info.light
+    position = np.asarray(light.GetPosition(), float)
+    axis = np.asarray(light.GetFocalPoint(), float) - position
+    axis /= np.linalg.norm(axis)
+    (centre, radius), = info.spheres
+    centre = np.asarray(centre, float)
+    if not light.GetPositional():  # directional: the half-space, a cylinder of shadow
+        lit_here = (hit - position) @ axis >= 0.0
+        offset = hit - centre
+        along = offset @ axis
+        across = np.linalg.norm(offset - along[:, None] * axis, axis=1)
+        shadowed = (along > 0.0) & (across < radius)
+    else:  # spot (its cone) or point: a cone of shadow from the light
+        to_hit = hit - position
+        r = np.linalg.norm(to_hit, axis=1)
+        lit_here = np.ones(len(hit), bool)
+        if light.GetConeAngle() < 90.0:
+            lit_here = (to_hit @ axis) / r >= np.cos(np.radians(light.GetConeAngle()))
+        u = to_hit / r[:, None]
+        m = position - centre
+        b = u @ m
+        disc = b * b - (m @ m - radius * radius)
+        shadowed = (disc > 0) & (-b - np.sqrt(np.maximum(disc, 0)) < r)
+
+    def erode_mask(mask):
+        mask = mask.reshape(h, w)
+        out = mask.copy()
+        for dy in range(-erode, erode + 1):
+            for dx in range(-erode, erode + 1):
+                out &= np.roll(np.roll(mask, dy, 0), dx, 1)
+        return out
+
+    return erode_mask(on_floor & lit_here & ~shadowed), erode_mask(on_floor & lit_here & shadowed)
+
+
 def median_frame_time(window, frames):
     """Median wall time of `frames` renders, each finished with glFinish (one warm-up frame)."""
     import statistics

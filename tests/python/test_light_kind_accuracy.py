@@ -3,7 +3,7 @@ a point light, a directional light, and a spot and a point light of different co
 
 Scene: scenes.sphere_and_floor (sphere of 256x256 facets over a floor, medium sigma_s = (0.05,
 0.04, 0.03), sigma_a = (0.02, 0.01, 0.03)), shadows on, at 200x150, with its spotlight turned
-into each kind (make_kind). The point light sits where the sphere's shadow, seen from the light,
+into each kind (render_helpers.make_light_kind). The point light sits where the sphere's shadow, seen from the light,
 straddles the seam between the +X and -Y faces of its cube map. The error measure is
 test_accuracy.py's: relative RMS over the pixels whose reference exceeds 1% of the peak, and the
 energy error over the image.
@@ -35,31 +35,11 @@ FINAL_ENERGY_BOUND = 0.005
 POINT_POSITION = (-1.3, 3.0, 0.0)  # the sphere at (0, 1.5, 0) is 4 degrees off a face seam
 
 
-def make_kind(renderer, info, kind):
-    """Turn sphere_and_floor's spotlight into `kind` and return the lights to give the pass:
-    "point" (A = 1 / (1 + 0.05 r^2)), "point-constant" (A = 1), "directional" (the plane
-    through (0.5, 6, 0), light travelling down to the origin), "pair" (the spot, orange, and
-    a blue point light), or "spot" (unchanged)."""
-    light = info.light
-    if kind.startswith("point"):
-        light.SetConeAngle(180.0)
-        light.SetPosition(*POINT_POSITION)
-        light.SetAttenuationValues(*((1.0, 0.0, 0.05) if kind == "point" else (1.0, 0.0, 0.0)))
-    elif kind == "directional":
-        light.SetPositional(False)
-    elif kind == "pair":
-        light.SetColor(1.0, 0.6, 0.3)
-        point = scenes.add_point_light(renderer, (-1.5, 3.2, 1.0), intensity=0.8,
-                                       color=(0.3, 0.6, 1.0), attenuation=(1.0, 0.0, 0.1))
-        return [light, point]
-    return [light]
-
-
 def final_scene(kind, **params):
     """The scene at the Final preset, then Set<name>(value) for each keyword; rendered once."""
     renderer, window = rh.make_window(WIDTH, HEIGHT)
     info = scenes.sphere_and_floor(renderer)
-    lights = make_kind(renderer, info, kind)
+    lights = rh.make_light_kind(renderer, info, kind, POINT_POSITION)
     shafts = vtkLightShaftPass()
     shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
     shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)

@@ -457,45 +457,6 @@ def test_every_method_supports_every_kind(kind, method):
 
 # --- surfaces shadowed by the same maps ----------------------------------------------------------
 
-def floor_masks(renderer, window, info, kind, erode=2):
-    """Analytic floor masks: lit by the light and in the sphere's shadow, eroded by `erode`."""
-    w, h = window.GetSize()
-    hit, on_floor = rh.surface_points(renderer, window, info)
-    light = info.light
-    position = np.asarray(light.GetPosition(), float)
-    axis = np.asarray(light.GetFocalPoint(), float) - position
-    axis /= np.linalg.norm(axis)
-    (centre, radius), = info.spheres
-    centre = np.asarray(centre, float)
-    if kind == DIRECTIONAL:
-        lit_here = (hit - position) @ axis >= 0.0
-        offset = hit - centre
-        along = offset @ axis
-        across = np.linalg.norm(offset - along[:, None] * axis, axis=1)
-        shadowed = (along > 0.0) & (across < radius)
-    else:
-        to_hit = hit - position
-        r = np.linalg.norm(to_hit, axis=1)
-        lit_here = np.ones(len(hit), bool)
-        if kind == SPOT:
-            lit_here = (to_hit @ axis) / r >= np.cos(np.radians(light.GetConeAngle()))
-        u = to_hit / r[:, None]
-        m = position - centre
-        b = u @ m
-        disc = b * b - (m @ m - radius * radius)
-        shadowed = (disc > 0) & (-b - np.sqrt(np.maximum(disc, 0)) < r)
-
-    def erode_mask(mask):
-        mask = mask.reshape(h, w)
-        out = mask.copy()
-        for dy in range(-erode, erode + 1):
-            for dx in range(-erode, erode + 1):
-                out &= np.roll(np.roll(mask, dy, 0), dx, 1)
-        return out
-
-    return erode_mask(on_floor & lit_here & ~shadowed), erode_mask(on_floor & lit_here & shadowed)
-
-
 @pytest.mark.parametrize("kind", [SPOT, POINT, DIRECTIONAL])
 @pytest.mark.parametrize("delegate", ["default", "user"])
 def test_floor_shadow_matches_the_analytic_shadow(kind, delegate):
@@ -518,7 +479,7 @@ def test_floor_shadow_matches_the_analytic_shadow(kind, delegate):
     assert shafts.GetLastGLErrorCount() == 0
     assert shafts.GetLastNumberOfSceneRenders() == 2  # with and without the light
     pixels = rh.screenshot(window).max(axis=-1)
-    lit, dark = floor_masks(renderer, window, info, kind)
+    lit, dark = rh.floor_shadow_masks(renderer, window, info)
     assert lit.sum() > 1000 and dark.sum() > 200
     # Dark exactly where the sphere shadows the floor from this light, lit elsewhere (no acne).
     print(f"{KIND_NAMES[kind]}, {delegate} delegate: dark {np.mean(pixels[dark] < 8):.4f}, "
@@ -547,9 +508,9 @@ def test_surfaces_shadowed_for_each_of_several_lights():
     window.Render()
     assert shafts.GetLastNumberOfSceneRenders() == 3
     both = rh.screenshot(window).astype(float).max(axis=-1)
-    spot_lit, spot_dark = floor_masks(renderer, window, info, SPOT)
+    spot_lit, spot_dark = rh.floor_shadow_masks(renderer, window, info)
     point_info = scenes.SceneInfo(light=point, spheres=info.spheres, floors=info.floors)
-    point_lit, point_dark = floor_masks(renderer, window, point_info, POINT)
+    point_lit, point_dark = rh.floor_shadow_masks(renderer, window, point_info)
     only_spot_dark = spot_dark & point_lit
     only_point_dark = point_dark & spot_lit
     neither = spot_lit & point_lit

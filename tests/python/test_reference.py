@@ -224,30 +224,10 @@ POINT_POSITION = (0.4, 3.4, 0.3)  # below the top of the view, beside the sphere
 ABSORPTION = (0.02, 0.01, 0.03)
 
 
-def make_kind(renderer, info, kind):
-    """Turn sphere_and_floor's spotlight (at (0.5, 6, 0), aiming at the origin) into `kind`, and
-    return the lights to give the pass: "point" (A = 1 / (1 + 0.05 r^2)), "point-inverse-square"
-    (A = 1 / r^2), "directional" (the plane through (0.5, 6, 0), light travelling down), or
-    "pair" (the spot, orange, and a blue point light)."""
-    light = info.light
-    if kind.startswith("point"):
-        light.SetConeAngle(180.0)
-        light.SetPosition(*POINT_POSITION)
-        light.SetAttenuationValues(*((1.0, 0.0, 0.05) if kind == "point" else (0.0, 0.0, 1.0)))
-    elif kind == "directional":
-        light.SetPositional(False)
-    elif kind == "pair":
-        light.SetColor(1.0, 0.6, 0.3)
-        point = scenes.add_point_light(renderer, (-1.5, 3.2, 1.0), intensity=0.8,
-                                       color=(0.3, 0.6, 1.0), attenuation=(1.0, 0.0, 0.1))
-        return [light, point]
-    return [light]
-
-
 def kind_scene(kind, width=120, height=90, sphere=True, phase="isotropic", **medium):
-    """scene() with its light turned into `kind` (make_kind), the lights given to the pass."""
+    """scene() with its light turned into `kind` (rh.make_light_kind), the lights given to the pass."""
     renderer, window, info, shafts = scene(width, height, sphere, **medium)
-    lights = make_kind(renderer, info, kind)
+    lights = rh.make_light_kind(renderer, info, kind, POINT_POSITION)
     for light in lights:
         shafts.AddLight(light)
     if phase == "hg":

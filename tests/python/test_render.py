@@ -303,36 +303,6 @@ def test_light_volume_outside_view_skips_work():
     assert np.all(rh.in_scatter(shafts) == 0.0)
 
 
-def floor_shadow_masks(renderer, window, info, erode=2):
-    """Analytic floor masks (lit by the spot / in the sphere's shadow), eroded by `erode` px."""
-    w, h = window.GetSize()
-    hit, on_floor = rh.surface_points(renderer, window, info)
-    light = np.asarray(info.light.GetPosition())
-    axis = np.asarray(info.light.GetFocalPoint()) - light
-    axis /= np.linalg.norm(axis)
-    to_hit = hit - light
-    r = np.linalg.norm(to_hit, axis=1)
-    in_cone = (to_hit @ axis) / r >= np.cos(np.radians(info.light.GetConeAngle()))
-    (centre, radius), = info.spheres
-    u = to_hit / r[:, None]
-    m = light - np.asarray(centre)
-    b = u @ m
-    disc = b * b - (m @ m - radius * radius)
-    shadowed = (disc > 0) & (-b - np.sqrt(np.maximum(disc, 0)) < r)
-
-    def erode_mask(mask):
-        mask = mask.reshape(h, w)
-        out = mask.copy()
-        for dy in range(-erode, erode + 1):
-            for dx in range(-erode, erode + 1):
-                out &= np.roll(np.roll(mask, dy, 0), dx, 1)
-        return out
-
-    lit = erode_mask(on_floor & in_cone & ~shadowed)
-    dark = erode_mask(on_floor & in_cone & shadowed)
-    return lit, dark
-
-
 def test_shadow_surfaces_agree_with_the_shafts_shadow():
     renderer, window = rh.make_window(320, 240)
     info = scenes.sphere_and_floor(renderer)
@@ -346,7 +316,7 @@ def test_shadow_surfaces_agree_with_the_shafts_shadow():
     window.Render()
     assert shafts.GetLastGLErrorCount() == 0
     pixels = rh.screenshot(window).max(axis=-1)
-    lit, dark = floor_shadow_masks(renderer, window, info)
+    lit, dark = rh.floor_shadow_masks(renderer, window, info)
     assert lit.sum() > 1000 and dark.sum() > 200
     # The floor is dark exactly where the sphere shadows it from the spotlight...
     assert np.mean(pixels[dark] < 8) > 0.99
