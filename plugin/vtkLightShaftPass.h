@@ -572,6 +572,44 @@ public:
   void SetQualityToFinal();
   ///@}
 
+  ///@{
+  /**
+   * Target relative RMS error of the in-scatter against the float64 reference (over the pixels
+   * above 1% of its peak), in [0, 1]; 0 turns it off. When on, each frame the pass computes
+   * what its lights' geometry asks of the sampling (GetLastDepthRangeInBeamWidths and the
+   * other error-model read-outs) and renders with the cheapest setting of its measured ladder
+   * (SLICES, a fixed slice count, jitter, blur, downsampling and shadow-map size) whose
+   * predicted error meets the target, or with the most accurate one when none does; it then
+   * overrides Method, NumberOfSlices, AutomaticSliceCount, Jitter, BlurRadius,
+   * DownsampleFactor, ShadowMapSize and AccumulationPrecision for that frame (the values set
+   * stay, and apply again at 0). The prediction is an upper estimate: on held-out random
+   * scenes at least 90% achieve the target (README "Target error"). Non-finite values are
+   * refused. Default is 0 (off).
+   */
+  void SetTargetError(double error);
+  vtkGetMacro(TargetError, double);
+  ///@}
+
+  ///@{
+  /**
+   * The error model's view of the last frame. The predicted relative RMS error: that of the
+   * setting TargetError chose, or of the parameters set when they equal a setting of the
+   * model's ladder (the presets do); -1 when there was no prediction (another method or
+   * setting, or no lit light). The ladder setting used (-1: none) and its name.
+   */
+  vtkGetMacro(LastPredictedError, double);
+  vtkGetMacro(LastErrorModelSetting, int);
+  static const char* GetErrorModelSettingName(int setting);
+  /// What the first lit light's geometry asks of the sampling: the lit volume's view-depth
+  /// range over the beam's width at its centre, that width in pixels, the medium's optical
+  /// depth over the range, and whether the light projects inside the view (all 0 when no
+  /// light was lit).
+  vtkGetMacro(LastDepthRangeInBeamWidths, double);
+  vtkGetMacro(LastBeamWidthInPixels, double);
+  vtkGetMacro(LastOpticalDepth, double);
+  vtkGetMacro(LastLightInView, bool);
+  ///@}
+
   /**
    * Fill `out` with the last frame's in-scattered radiance L_in: linear float RGB (3
    * components, array "InScatteredRadiance"), one pixel per viewport pixel, row 0 at the bottom
@@ -706,6 +744,7 @@ protected:
   double Weight = 1.0;
   bool RadialJitter = true;
   double RadialGuardBand = 1.0;
+  double TargetError = 0.0;
 
   // Last-frame statistics.
   int LastNumberOfSlicesDrawn = 0;
@@ -726,6 +765,12 @@ protected:
   int LastNumberOfSlabBatches = 0;
   int LastMultiSamples = 0;
   bool LastPlainScene = false;
+  double LastPredictedError = -1.0;
+  int LastErrorModelSetting = -1;
+  double LastDepthRangeInBeamWidths = 0.0;
+  double LastBeamWidthInPixels = 0.0;
+  double LastOpticalDepth = 0.0;
+  bool LastLightInView = false;
 
 private:
   void RenderFrame(const vtkRenderState* s);

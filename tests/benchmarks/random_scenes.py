@@ -67,8 +67,34 @@ SETTINGS = [
     ("RAY_MARCH defaults", dict(Method=vtkLightShaftPass.RAY_MARCH)),
     ("RADIAL_BLUR defaults", dict(Method=vtkLightShaftPass.RADIAL_BLUR)),
     ("ANALYTIC", dict(Method=vtkLightShaftPass.ANALYTIC)),
+    ("Target 5%", dict(TargetError=0.05)),
+    ("Target 2%", dict(TargetError=0.02)),
+    ("Target 1%", dict(TargetError=0.01)),
+    ("Target 0.5%", dict(TargetError=0.005)),
 ]
 SMOKE_SETTINGS = ("Interactive", "Final")
+
+
+def _rung(slices, jitter, blur, downsample, shadow_map):
+    return dict(Method=vtkLightShaftPass.SLICES, AutomaticSliceCount=False,
+                NumberOfSlices=slices, Jitter=jitter, BlurRadius=blur,
+                DownsampleFactor=downsample, ShadowMapSize=shadow_map,
+                AccumulationPrecision=vtkLightShaftPass.ACCUMULATE_FLOAT32)
+
+
+# The SLICES settings the error model is fitted on (--ladder), cheapest first.
+LADDER = [
+    ("S16 j b2 d2 m512", _rung(16, True, 2, 2, 512)),
+    ("S32 j b2 d2 m512", _rung(32, True, 2, 2, 512)),
+    ("S32 j b1 d2 m1024", _rung(32, True, 1, 2, 1024)),
+    ("S32 j b1 d1 m1024", _rung(32, True, 1, 1, 1024)),
+    ("S64 j b2 d1 m1024", _rung(64, True, 2, 1, 1024)),
+    ("S64 j b1 d1 m2048", _rung(64, True, 1, 1, 2048)),
+    ("S128 j b1 d1 m2048", _rung(128, True, 1, 1, 2048)),
+    ("S128 b0 d1 m2048", _rung(128, False, 0, 1, 2048)),
+    ("S256 b0 d1 m2048", _rung(256, False, 0, 1, 2048)),
+    ("S512 b0 d1 m2048", _rung(512, False, 0, 1, 2048)),
+]
 FAMILIES = ("spheres", "boxes", "bars", "isosurface", "props")
 HEIGHTS = (240, 360, 480, 720, 1080)
 # Warnings the pass documents; anything else VTK prints is a finding.
@@ -387,6 +413,19 @@ def light_in_view(renderer, scene):
     return bool(ahead and w > 0 and abs(x / w) <= 1 and abs(y / w) <= 1)
 
 
+def error_model_columns(shafts, scene):
+    """What the pass's error model saw in the last frame (its features of the first lit light)
+    and predicted (-1: no prediction), as CSV columns (tests/benchmarks/fit_error_model.py)."""
+    falling = scene.light_kind != "directional" and any(a != 0 for a in scene.attenuation[1:])
+    return dict(depth_range_in_beam_widths=shafts.GetLastDepthRangeInBeamWidths(),
+                beam_width_in_pixels=shafts.GetLastBeamWidthInPixels(),
+                model_optical_depth=shafts.GetLastOpticalDepth(),
+                model_light_in_view=int(shafts.GetLastLightInView()),
+                falling_attenuation=int(falling), kind=scene.light_kind,
+                predicted_error=shafts.GetLastPredictedError(),
+                model_setting=shafts.GetErrorModelSettingName(shafts.GetLastErrorModelSetting()))
+
+
 def configure(shafts, scene, light, params):
     shafts.SetScatteringCoefficient(*scene.sigma_s)
     shafts.SetAbsorptionCoefficient(*scene.sigma_a)
@@ -426,12 +465,20 @@ def percentile(values, q):
     return float(np.percentile(np.asarray(values, float), q)) if values else float("nan")
 
 
+def _single_frame(window):
+    """One render's wall time, no warm-up (--frames 0: errors only, times indicative)."""
+    start = time.perf_counter()
+    window.Render()
+    window.WaitForCompletion()
+    return time.perf_counter() - start
+
+
 def run_scene(scene, settings, frames, log, keep_pictures):
     """The rows of one scene, or None when its reference has no lit pixel in view."""
     renderer, window = rh.make_window(scene.width, scene.height)
     light = build(renderer, scene)
     log.take()
-    plain = rh.median_frame_time(window, frames)
+    plain = rh.median_frame_time(window, frames) if frames > 0 else _single_frame(window)
     _, unexpected = log.take()
     if unexpected:
         print("\n".join(unexpected), file=sys.stderr)
@@ -452,7 +499,7 @@ def run_scene(scene, settings, frames, log, keep_pictures):
                 return None, None
         renderer.SetPass(shafts)
         start = time.perf_counter()
-        frame = rh.median_frame_time(window, frames)
+        frame = rh.median_frame_time(window, frames) if frames > 0 else _single_frame(window)
         image = rh.in_scatter(shafts)
         expected, unexpected = log.take()
         if label == settings[0][0]:
@@ -465,9 +512,12 @@ def run_scene(scene, settings, frames, log, keep_pictures):
                    camera=scene.camera_kind, parallel=int(scene.parallel),
                    optical_depth=scene.optical_depth, phase=scene.phase,
                    light_in_view=int(in_view),
+                   slice_near=shafts.GetLastSliceDepthRange()[0],
+                   slice_far=shafts.GetLastSliceDepthRange()[1],
                    gl_errors=shafts.GetLastGLErrorCount(), expected_warnings=len(expected),
                    unexpected_warnings=" | ".join(" ".join(m.split()) for m in unexpected),
                    seconds=time.perf_counter() - start,
+                   **error_model_columns(shafts, scene),
                    scene_json=json.dumps(dataclasses.asdict(scene), separators=(",", ":")))
         rows.append(row)
         flag = "  UNEXPECTED: " + row["unexpected_warnings"] if unexpected else ""
@@ -621,14 +671,18 @@ def main():
                         help="redraw a scene with fewer lit pixels (above 1%% of the peak)")
     parser.add_argument("--max-attempts", type=int, default=20)
     parser.add_argument("--smoke", action="store_true")
+    parser.add_argument("--ladder", action="store_true",
+                        help="the error model's SLICES settings instead of the presets")
     args = parser.parse_args()
     settings = SETTINGS
     size = None
     if args.smoke:
         args.scenes, args.frames, size = 3, 2, (96, 72)
         settings = [s for s in SETTINGS if s[0] in SMOKE_SETTINGS]
+    if args.ladder:
+        settings = LADDER
     if args.settings:
-        settings = [s for s in SETTINGS if s[0] in args.settings]
+        settings = [s for s in settings if s[0] in args.settings]
     indices = [args.only_scene] if args.only_scene is not None else range(args.scenes)
     os.makedirs(os.path.join(args.output_dir, "images"), exist_ok=True)
     log = WarningLog()

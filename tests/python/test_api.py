@@ -43,6 +43,8 @@ def test_defaults():
     assert p.GetBlurRadius() == 2
     assert p.GetDownsampleFactor() == 1
     assert p.GetAccumulationPrecision() == vtkLightShaftPass.ACCUMULATE_FLOAT32
+    assert p.GetTargetError() == 0.0
+    assert p.GetLastPredictedError() == -1.0 and p.GetLastErrorModelSetting() == -1
 
 
 @pytest.mark.parametrize("name,value", [
@@ -58,6 +60,7 @@ def test_defaults():
     ("BlurRadius", 5),
     ("DownsampleFactor", 4),
     ("AccumulationPrecision", vtkLightShaftPass.ACCUMULATE_8BIT),
+    ("TargetError", 0.02),
 ])
 def test_scalar_round_trip(name, value):
     p = vtkLightShaftPass()
@@ -110,6 +113,7 @@ def test_boolean_macros():
     ("BlurRadius", -2, 100, 0, 32),
     ("DownsampleFactor", 0, 100, 1, 4),
     ("AccumulationPrecision", -1, 7, 0, 2),
+    ("TargetError", -0.5, 3.0, 0.0, 1.0),
 ])
 def test_scalar_clamping(name, low, high, expect_low, expect_high):
     p = vtkLightShaftPass()
@@ -140,6 +144,7 @@ def test_vector_clamping(name):
     ("NoiseVelocity2", (0.0, -math.inf)),
     ("Time", (math.nan,)),
     ("Time", (math.inf,)),
+    ("TargetError", (math.nan,)),
 ])
 def test_non_finite_refused(messages, name, args):
     p = vtkLightShaftPass()

@@ -428,6 +428,12 @@ void vtkPVLightShaftsView::SetRadialGuardBand(double extent)
 }
 
 //------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetShaftTargetError(double error)
+{
+  this->Impl->Shafts->SetTargetError(error);
+}
+
+//------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetAttenuateScene(bool attenuate)
 {
   this->Impl->Shafts->SetAttenuateScene(attenuate);

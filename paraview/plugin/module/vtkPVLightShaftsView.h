@@ -121,6 +121,12 @@ public:
   void SetRadialGuardBand(double extent);
   ///@}
 
+  /**
+   * The target error (vtkLightShaftPass::SetTargetError; 0, the default, is off): when set
+   * the pass chooses its sampling each frame, over the preset and the sampling properties.
+   */
+  void SetShaftTargetError(double error);
+
   ///@{
   /**
    * Sampling: forwarded to vtkLightShaftPass, unless ShaftQuality is a preset (DRAFT,
