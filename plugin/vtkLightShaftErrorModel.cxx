@@ -1,6 +1,7 @@
 #include "vtkLightShaftErrorModel.h"
 
 #include "vtkLightShaftErrorModelTable.h"
+#include "vtkLightShaftPass.h"
 
 #include <algorithm>
 #include <array>
@@ -118,13 +119,16 @@ const Setting& GetSetting(int index)
   return vtkLightShaftErrorModelTable::Rows[std::clamp(index, 0, NumberOfSettings - 1)].Ladder;
 }
 
-int FindSetting(int slices, bool jitter, int blurRadius, int downsampleFactor, int mapSize)
+int FindSetting(const Setting& setting)
 {
   for (int i = 0; i < NumberOfSettings; ++i)
   {
     const Setting& s = GetSetting(i);
-    if (s.Slices == slices && s.Jitter == jitter && s.BlurRadius == blurRadius &&
-        s.DownsampleFactor == downsampleFactor && s.ShadowMapSize == mapSize)
+    const bool slices = s.Method == vtkLightShaftPass::SLICES;
+    if (s.Method == setting.Method && s.Samples == setting.Samples &&
+      s.BlurRadius == setting.BlurRadius && s.DownsampleFactor == setting.DownsampleFactor &&
+      s.ShadowMapSize == setting.ShadowMapSize &&
+      (slices ? s.Jitter == setting.Jitter : s.InterleaveSize == setting.InterleaveSize))
     {
       return i;
     }

@@ -47,24 +47,26 @@ Features Describe(const vtkLightShaftGeometry::LightFrame& light,
   int width);
 
 /**
- * One setting of the ladder: the SLICES parameters it sets (a fixed slice count, 32-bit float
- * accumulation).
+ * One setting of the ladder: a method (SLICES with a fixed slice count, or RAY_MARCH) and the
+ * parameters it sets (32-bit float accumulation).
  */
 struct Setting
 {
   const char* Name;
-  int Slices;
-  bool Jitter;
+  int Method;  ///< vtkLightShaftPass::SLICES or RAY_MARCH
+  int Samples; ///< slices, or ray-march steps
+  bool Jitter; ///< SLICES
   int BlurRadius;
   int DownsampleFactor;
   int ShadowMapSize;
+  int InterleaveSize; ///< RAY_MARCH
 };
 
 /// The ladder's settings, cheapest first.
 int GetNumberOfSettings();
 const Setting& GetSetting(int index);
-/// The index of the ladder's setting equal to these parameters, else -1.
-int FindSetting(int slices, bool jitter, int blurRadius, int downsampleFactor, int mapSize);
+/// The index of the ladder's setting that `setting` equals (its name aside), else -1.
+int FindSetting(const Setting& setting);
 
 /**
  * The relative RMS error setting `index` is predicted to make on a light with `features`

@@ -710,8 +710,8 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
 
 //------------------------------------------------------------------------------
 // The error model: with a target error, the cheapest setting of its ladder predicted to meet
-// it on every lit light (SLICES, or AUTOMATIC's exact integral where nothing shadows);
-// without one, its prediction for the parameters set when they are one of its settings.
+// it on every lit light (AUTOMATIC keeps its exact integral where nothing shadows); without
+// one, its prediction for the parameters set when they are one of its settings.
 void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
   const std::vector<vtkLightShaftGeometry::LightFrame>& lights)
 {
@@ -739,10 +739,16 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
   {
     setting = model::Choose(p.TargetError, features, predicted);
     const model::Setting& chosen = model::GetSetting(setting);
-    p.Method = p.Method == vtkLightShaftPass::AUTOMATIC ? p.Method : vtkLightShaftPass::SLICES;
+    // AUTOMATIC keeps its exact integral where nothing can shadow; else the chosen method.
+    const bool exact = p.Method == vtkLightShaftPass::AUTOMATIC && p.NoiseAmplitude <= 0.0 &&
+      std::none_of(lights.begin(), lights.end(),
+        [](const vtkLightShaftGeometry::LightFrame& l) { return l.ShadowsPossible; });
+    p.Method = exact ? p.Method : chosen.Method;
     p.AutomaticSliceCount = false;
-    p.NumberOfSlices = chosen.Slices;
+    p.NumberOfSlices = chosen.Method == vtkLightShaftPass::SLICES ? chosen.Samples : p.NumberOfSlices;
+    p.NumberOfSteps = chosen.Method == vtkLightShaftPass::RAY_MARCH ? chosen.Samples : p.NumberOfSteps;
     p.Jitter = chosen.Jitter;
+    p.InterleaveSize = chosen.InterleaveSize;
     p.BlurRadius = chosen.BlurRadius;
     p.DownsampleFactor = chosen.DownsampleFactor;
     p.ShadowMapSize = chosen.ShadowMapSize;
@@ -750,11 +756,14 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
     frame.Reduced[0] = (frame.Size[0] + p.DownsampleFactor - 1) / p.DownsampleFactor;
     frame.Reduced[1] = (frame.Size[1] + p.DownsampleFactor - 1) / p.DownsampleFactor;
   }
-  else if (p.Method == vtkLightShaftPass::SLICES && !p.AutomaticSliceCount &&
-           p.AccumulationPrecision == vtkLightShaftPass::ACCUMULATE_FLOAT32)
+  else if ((p.Method == vtkLightShaftPass::SLICES && !p.AutomaticSliceCount) ||
+    p.Method == vtkLightShaftPass::RAY_MARCH)
   {
-    setting = model::FindSetting(
-      p.NumberOfSlices, p.Jitter, p.BlurRadius, p.DownsampleFactor, p.ShadowMapSize);
+    const bool slices = p.Method == vtkLightShaftPass::SLICES;
+    const model::Setting current{ "", p.Method, slices ? p.NumberOfSlices : p.NumberOfSteps,
+      p.Jitter, p.BlurRadius, p.DownsampleFactor, p.ShadowMapSize, p.InterleaveSize };
+    const bool float32 = p.AccumulationPrecision == vtkLightShaftPass::ACCUMULATE_FLOAT32;
+    setting = float32 ? model::FindSetting(current) : -1;
     predicted = setting >= 0 ? model::Predict(setting, features) : -1.0;
   }
   frame.Statistics.ErrorModelSetting = setting;

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Fit the SLICES error model (vtkLightShaftErrorModel) on a random-scene training run.
+"""Fit the error model of TargetError (vtkLightShaftErrorModel) on a random-scene training run.
 
     # 1. the training run: the ladder's settings on seed 7 (errors; times are single frames)
     PYTHONPATH=build/lib/python3.11/dist-packages \\
@@ -106,6 +106,7 @@ def write_table(path, ladder, fits):
              "#define vtkLightShaftErrorModelTable_h",
              "",
              "#include \"vtkLightShaftErrorModel.h\" // For vtkLightShaftErrorModel::Setting",
+             "#include \"vtkLightShaftPass.h\"       // For the methods",
              "",
              "namespace vtkLightShaftErrorModelTable",
              "{",
@@ -127,8 +128,13 @@ def write_table(path, ladder, fits):
              "// clang-format off",
              "constexpr Row Rows[] = {"]
     for (label, p), (beta, margin) in zip(ladder, fits):
-        setting = (f'"{label}", {p["NumberOfSlices"]}, {str(p["Jitter"]).lower()}, '
-                   f'{p["BlurRadius"]}, {p["DownsampleFactor"]}, {p["ShadowMapSize"]}')
+        march = p["Method"] == rs.vtkLightShaftPass.RAY_MARCH
+        method = "vtkLightShaftPass::RAY_MARCH" if march else "vtkLightShaftPass::SLICES"
+        samples = p["NumberOfSteps"] if march else p["NumberOfSlices"]
+        jitter = "false" if march else str(p["Jitter"]).lower()
+        setting = (f'"{label}", {method}, {samples}, {jitter}, {p["BlurRadius"]}, '
+                   f'{p["DownsampleFactor"]}, {p["ShadowMapSize"]}, '
+                   f'{p["InterleaveSize"] if march else 1}')
         coefficients = ", ".join(f"{b:.6g}" for b in beta)
         lines.append(f"  {{ {{ {setting} }}, {{ {coefficients} }}, {margin:.6g} }},")
     lines += ["};", "// clang-format on", "}", "", "#endif", ""]
@@ -151,7 +157,7 @@ def main():
     if not all(k in rows[0] for k in FEATURES):
         cache = {}
         for row in rows:
-            key = (row["scene"], row["attempt"])
+            key = row["scene_json"]  # the scene, whatever run it came from
             if key not in cache:
                 cache[key] = scene_features(row["scene_json"])
                 print(f"scene {row['scene']}: {cache[key]}", flush=True)

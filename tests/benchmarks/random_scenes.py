@@ -83,7 +83,14 @@ def _rung(slices, jitter, blur, downsample, shadow_map):
                 AccumulationPrecision=vtkLightShaftPass.ACCUMULATE_FLOAT32)
 
 
-# The SLICES settings the error model is fitted on (--ladder), cheapest first by their fill
+def _march(steps, interleave, shadow_map):
+    return dict(Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=steps,
+                InterleaveSize=interleave, BlurRadius=0, DownsampleFactor=1,
+                ShadowMapSize=shadow_map,
+                AccumulationPrecision=vtkLightShaftPass.ACCUMULATE_FLOAT32)
+
+
+# The settings the error model is fitted on (--ladder), cheapest first by their fill
 # (slabs times in-scatter pixels, which dominates the cost).
 LADDER = [
     ("S16 j b2 d2 m512", _rung(16, True, 2, 2, 512)),
@@ -95,9 +102,12 @@ LADDER = [
     ("S64 b0 d1 m1024", _rung(64, False, 0, 1, 1024)),
     ("S64 j b2 d1 m1024", _rung(64, True, 2, 1, 1024)),
     ("S64 j b1 d1 m2048", _rung(64, True, 1, 1, 2048)),
+    ("M32 i2 m2048", _march(32, 2, 2048)),
     ("S128 b0 d1 m2048", _rung(128, False, 0, 1, 2048)),
     ("S128 j b1 d1 m2048", _rung(128, True, 1, 1, 2048)),
+    ("M64 i2 m2048", _march(64, 2, 2048)),
     ("S256 b0 d1 m2048", _rung(256, False, 0, 1, 2048)),
+    ("M256 i1 m2048", _march(256, 1, 2048)),
     ("S512 b0 d1 m2048", _rung(512, False, 0, 1, 2048)),
 ]
 FAMILIES = ("spheres", "boxes", "bars", "isosurface", "props")

@@ -93,19 +93,25 @@ def test_parameters_set_are_kept():
     window.Render()
     chosen = shafts.GetLastErrorModelSetting()
     name = vtkLightShaftPass.GetErrorModelSettingName(chosen)
-    slices = int(re.match(r"S(\d+)", name).group(1))
-    assert shafts.GetLastNumberOfSlicesDrawn() in (slices, slices + 1)  # jitter: one more
+    kind, samples = re.match(r"([SM])(\d+)", name).groups()
+    if kind == "S":  # slices
+        assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES
+        assert shafts.GetLastNumberOfSlicesDrawn() in (int(samples), int(samples) + 1)
+    else:  # ray-march steps
+        assert shafts.GetLastMethod() == vtkLightShaftPass.RAY_MARCH
     assert shafts.GetNumberOfSlices() == 40 and shafts.GetBlurRadius() == 3
     assert not shafts.GetJitter()
     shafts.SetTargetError(0.0)
     window.Render()
     assert shafts.GetLastErrorModelSetting() == -1 and shafts.GetLastPredictedError() == -1.0
+    assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES
     assert shafts.GetLastNumberOfSlicesDrawn() == 40
     np.testing.assert_array_equal(rh.in_scatter(shafts), before)
 
 
 @pytest.mark.parametrize("params", [
-    dict(Method=vtkLightShaftPass.RAY_MARCH),
+    dict(Method=vtkLightShaftPass.RADIAL_BLUR),
+    dict(Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=17),
     dict(NumberOfSlices=63),
     dict(ScatteringCoefficient=0.0, TargetError=0.01),
 ])
