@@ -12,6 +12,7 @@ namespace vtkLightShaftErrorModel
 {
 namespace
 {
+constexpr double ReferenceMapSize = 1024.0; // the map ShadowTexelInPixels is measured for
 constexpr int NumberOfSettings = static_cast<int>(std::size(vtkLightShaftErrorModelTable::Rows));
 
 glm::dvec3 Centroid(const vtkLightShaftGeometry::ConvexPolytope& polytope)
@@ -61,14 +62,22 @@ std::array<double, vtkLightShaftErrorModelTable::NumberOfVariables> Variables(co
   auto logClamped = [](double x) { return std::log(std::clamp(x, 1e-3, 1e6)); };
   const bool point = f.Kind == vtkLightShaftModel::LightKind::Point;
   const bool directional = f.Kind == vtkLightShaftModel::LightKind::Directional;
+  const double inView = f.LightInView ? 1.0 : 0.0;
+  const double depthRange = logClamped(f.DepthRangeInBeamWidths);
+  const double beamPixels = logClamped(f.BeamWidthInPixels);
+  // The light in the picture changes how the error scales (rays pass near the light, where
+  // the beam is narrowest and brightest): its own intercept and slopes.
   return { 1.0,
-    logClamped(f.DepthRangeInBeamWidths),
-    logClamped(f.BeamWidthInPixels),
+    depthRange,
+    beamPixels,
     std::log1p(std::clamp(f.OpticalDepth, 0.0, 1e3)),
     f.LightInView && f.FallingAttenuation ? 1.0 : 0.0,
-    f.LightInView ? 1.0 : 0.0,
+    inView,
     point ? 1.0 : 0.0,
-    directional ? 1.0 : 0.0 };
+    directional ? 1.0 : 0.0,
+    inView * depthRange,
+    inView * beamPixels,
+    f.ShadowTexelInPixels > 0.0 ? logClamped(f.ShadowTexelInPixels) : 0.0 };
 }
 }
 
@@ -105,6 +114,14 @@ Features Describe(const vtkLightShaftGeometry::LightFrame& light,
   f.DepthRangeInBeamWidths = range / beam;
   f.BeamWidthInPixels = beam / pixel;
   f.OpticalDepth = medium.MaximumSigmaT() * range;
+  if (light.ShadowsPossible)
+  {
+    // MapExtent: across one map camera at unit distance (spot, point), or in world units.
+    const double across = f.Kind == vtkLightShaftModel::LightKind::Directional
+      ? light.MapExtent
+      : light.MapExtent * glm::length(centre - light.PositionVC);
+    f.ShadowTexelInPixels = across / ReferenceMapSize / pixel;
+  }
   return f;
 }
 
@@ -119,6 +136,13 @@ const Setting& GetSetting(int index)
   return vtkLightShaftErrorModelTable::Rows[std::clamp(index, 0, NumberOfSettings - 1)].Ladder;
 }
 
+const Setting& GetPreset(Preset preset)
+{
+  const int index[] = { vtkLightShaftErrorModelTable::DraftSetting,
+    vtkLightShaftErrorModelTable::InteractiveSetting, vtkLightShaftErrorModelTable::FinalSetting };
+  return GetSetting(index[static_cast<int>(preset)]);
+}
+
 int FindSetting(const Setting& setting)
 {
   for (int i = 0; i < NumberOfSettings; ++i)
@@ -126,9 +150,9 @@ int FindSetting(const Setting& setting)
     const Setting& s = GetSetting(i);
     const bool slices = s.Method == vtkLightShaftPass::SLICES;
     if (s.Method == setting.Method && s.Samples == setting.Samples &&
-      s.BlurRadius == setting.BlurRadius && s.DownsampleFactor == setting.DownsampleFactor &&
-      s.ShadowMapSize == setting.ShadowMapSize &&
-      (slices ? s.Jitter == setting.Jitter : s.InterleaveSize == setting.InterleaveSize))
+        s.BlurRadius == setting.BlurRadius && s.DownsampleFactor == setting.DownsampleFactor &&
+        s.ShadowMapSize == setting.ShadowMapSize &&
+        (slices ? s.Jitter == setting.Jitter : s.InterleaveSize == setting.InterleaveSize))
     {
       return i;
     }

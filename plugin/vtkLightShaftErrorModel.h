@@ -34,6 +34,9 @@ struct Features
   double BeamWidthInPixels = 0.0;
   /// The medium's largest sigma_t times the depth range.
   double OpticalDepth = 0.0;
+  /// The width of a texel of a 1024^2 shadow map at the lit volume's centre over the width of
+  /// a pixel there (0 when nothing can shadow the light: no map).
+  double ShadowTexelInPixels = 0.0;
   /// The light (a directional light: its direction) projects inside the view, in front.
   bool LightInView = false;
   bool FallingAttenuation = false;
@@ -65,6 +68,16 @@ struct Setting
 /// The ladder's settings, cheapest first.
 int GetNumberOfSettings();
 const Setting& GetSetting(int index);
+/// The quality presets: each the cheapest setting of the ladder whose training 90th-percentile
+/// error meets the preset's aim (Draft 5%, Interactive 2%, Final 0.5%).
+enum class Preset
+{
+  Draft,
+  Interactive,
+  Final
+};
+const Setting& GetPreset(Preset preset);
+
 /// The index of the ladder's setting that `setting` equals (its name aside), else -1.
 int FindSetting(const Setting& setting);
 

@@ -2,6 +2,7 @@
 #include "vtkLightShaftPassInternals.h"
 
 #include "vtkLightShaftComposite.h"
+#include "vtkLightShaftErrorModel.h"
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftGeometry.h"
 #include "vtkLightShaftInScatter.h"
@@ -310,36 +311,43 @@ const char* vtkLightShaftPass::GetMethodName(int method)
 
 namespace
 {
-void ApplyQuality(vtkLightShaftPass* pass,
-  int slices,
-  int shadowMap,
-  bool jitter,
-  int blur,
-  int downsample)
+// A preset is a setting of the error model's ladder, the one its training percentiles chose
+// (tests/benchmarks/fit_error_model.py).
+void ApplyQuality(vtkLightShaftPass* pass, vtkLightShaftErrorModel::Preset preset)
 {
+  const vtkLightShaftErrorModel::Setting& s = vtkLightShaftErrorModel::GetPreset(preset);
+  pass->SetMethod(s.Method);
   pass->SetAutomaticSliceCount(false);
-  pass->SetNumberOfSlices(slices);
-  pass->SetShadowMapSize(shadowMap);
-  pass->SetJitter(jitter);
-  pass->SetBlurRadius(blur);
-  pass->SetDownsampleFactor(downsample);
+  if (s.Method == vtkLightShaftPass::SLICES)
+  {
+    pass->SetNumberOfSlices(s.Samples);
+    pass->SetJitter(s.Jitter);
+  }
+  else
+  {
+    pass->SetNumberOfSteps(s.Samples);
+    pass->SetInterleaveSize(s.InterleaveSize);
+  }
+  pass->SetShadowMapSize(s.ShadowMapSize);
+  pass->SetBlurRadius(s.BlurRadius);
+  pass->SetDownsampleFactor(s.DownsampleFactor);
   pass->SetAccumulationPrecision(vtkLightShaftPass::ACCUMULATE_FLOAT32);
 }
 }
 
 void vtkLightShaftPass::SetQualityToDraft()
 {
-  ApplyQuality(this, 32, 512, true, 2, 2);
+  ApplyQuality(this, vtkLightShaftErrorModel::Preset::Draft);
 }
 
 void vtkLightShaftPass::SetQualityToInteractive()
 {
-  ApplyQuality(this, 64, 1024, true, 2, 1);
+  ApplyQuality(this, vtkLightShaftErrorModel::Preset::Interactive);
 }
 
 void vtkLightShaftPass::SetQualityToFinal()
 {
-  ApplyQuality(this, 512, 2048, false, 0, 1);
+  ApplyQuality(this, vtkLightShaftErrorModel::Preset::Final);
 }
 
 void vtkLightShaftPass::SetDownsampleFactor(int factor)
@@ -740,13 +748,17 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
     setting = model::Choose(p.TargetError, features, predicted);
     const model::Setting& chosen = model::GetSetting(setting);
     // AUTOMATIC keeps its exact integral where nothing can shadow; else the chosen method.
-    const bool exact = p.Method == vtkLightShaftPass::AUTOMATIC && p.NoiseAmplitude <= 0.0 &&
-      std::none_of(lights.begin(), lights.end(),
+    const bool exact =
+      p.Method == vtkLightShaftPass::AUTOMATIC && p.NoiseAmplitude <= 0.0 &&
+      std::none_of(lights.begin(),
+        lights.end(),
         [](const vtkLightShaftGeometry::LightFrame& l) { return l.ShadowsPossible; });
     p.Method = exact ? p.Method : chosen.Method;
     p.AutomaticSliceCount = false;
-    p.NumberOfSlices = chosen.Method == vtkLightShaftPass::SLICES ? chosen.Samples : p.NumberOfSlices;
-    p.NumberOfSteps = chosen.Method == vtkLightShaftPass::RAY_MARCH ? chosen.Samples : p.NumberOfSteps;
+    p.NumberOfSlices =
+      chosen.Method == vtkLightShaftPass::SLICES ? chosen.Samples : p.NumberOfSlices;
+    p.NumberOfSteps =
+      chosen.Method == vtkLightShaftPass::RAY_MARCH ? chosen.Samples : p.NumberOfSteps;
     p.Jitter = chosen.Jitter;
     p.InterleaveSize = chosen.InterleaveSize;
     p.BlurRadius = chosen.BlurRadius;
@@ -757,11 +769,17 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
     frame.Reduced[1] = (frame.Size[1] + p.DownsampleFactor - 1) / p.DownsampleFactor;
   }
   else if ((p.Method == vtkLightShaftPass::SLICES && !p.AutomaticSliceCount) ||
-    p.Method == vtkLightShaftPass::RAY_MARCH)
+           p.Method == vtkLightShaftPass::RAY_MARCH)
   {
     const bool slices = p.Method == vtkLightShaftPass::SLICES;
-    const model::Setting current{ "", p.Method, slices ? p.NumberOfSlices : p.NumberOfSteps,
-      p.Jitter, p.BlurRadius, p.DownsampleFactor, p.ShadowMapSize, p.InterleaveSize };
+    const model::Setting current{ "",
+      p.Method,
+      slices ? p.NumberOfSlices : p.NumberOfSteps,
+      p.Jitter,
+      p.BlurRadius,
+      p.DownsampleFactor,
+      p.ShadowMapSize,
+      p.InterleaveSize };
     const bool float32 = p.AccumulationPrecision == vtkLightShaftPass::ACCUMULATE_FLOAT32;
     setting = float32 ? model::FindSetting(current) : -1;
     predicted = setting >= 0 ? model::Predict(setting, features) : -1.0;

@@ -602,11 +602,13 @@ public:
   static const char* GetErrorModelSettingName(int setting);
   /// What the first lit light's geometry asks of the sampling: the lit volume's view-depth
   /// range over the beam's width at its centre, that width in pixels, the medium's optical
-  /// depth over the range, and whether the light projects inside the view (all 0 when no
-  /// light was lit).
+  /// depth over the range, the width of a 1024^2 shadow map's texel there in pixels (0: no
+  /// caster, no map), and whether the light projects inside the view (all 0 when no light
+  /// was lit).
   vtkGetMacro(LastDepthRangeInBeamWidths, double);
   vtkGetMacro(LastBeamWidthInPixels, double);
   vtkGetMacro(LastOpticalDepth, double);
+  vtkGetMacro(LastShadowTexelInPixels, double);
   vtkGetMacro(LastLightInView, bool);
   ///@}
 
@@ -770,6 +772,7 @@ protected:
   double LastDepthRangeInBeamWidths = 0.0;
   double LastBeamWidthInPixels = 0.0;
   double LastOpticalDepth = 0.0;
+  double LastShadowTexelInPixels = 0.0;
   bool LastLightInView = false;
 
 private:

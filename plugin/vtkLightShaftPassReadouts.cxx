@@ -101,6 +101,7 @@ void vtkLightShaftPass::Internals::Publish(vtkLightShaftPass& self, const vtkLig
   self.LastDepthRangeInBeamWidths = stats.ErrorFeatures.DepthRangeInBeamWidths;
   self.LastBeamWidthInPixels = stats.ErrorFeatures.BeamWidthInPixels;
   self.LastOpticalDepth = stats.ErrorFeatures.OpticalDepth;
+  self.LastShadowTexelInPixels = stats.ErrorFeatures.ShadowTexelInPixels;
   self.LastLightInView = stats.ErrorFeatures.LightInView;
   self.LastMethod = -1;
   self.LastNumberOfSlicesDrawn = 0;

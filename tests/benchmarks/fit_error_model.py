@@ -15,7 +15,8 @@ For every setting of the ladder (random_scenes.LADDER, cheapest first) it fits
 log(relative RMS error) as a linear function of the variables vtkLightShaftErrorModel.cxx
 computes from a frame's geometry (1, log depth range in beam widths, log beam width in pixels,
 log(1 + optical depth), light in view with falling attenuation, light in view, point light,
-directional light), by ridge regression, and adds the 90th percentile of the leave-one-out
+directional light, light in view times each log, log shadow-map texel in pixels), by ridge
+regression, and adds the 90th percentile of the leave-one-out
 residuals as a margin: the prediction is an upper estimate that held-out scenes should meet
 nine times in ten. It writes plugin/vtkLightShaftErrorModelTable.h (the ladder and the
 coefficients), docs/error-model.md (the fit, the presets the training percentiles choose) and
@@ -42,6 +43,7 @@ sys.path.insert(0, HERE)
 import random_scenes as rs  # noqa: E402
 
 FEATURES = ("depth_range_in_beam_widths", "beam_width_in_pixels", "model_optical_depth",
+            "shadow_texel_in_pixels",
             "model_light_in_view", "falling_attenuation", "kind")
 RIDGE = 0.05       # on the slopes only (not the intercept)
 QUANTILE = 90      # of the leave-one-out residuals: the margin
@@ -57,14 +59,20 @@ def variables(row):
     def log_clamped(x):
         return math.log(min(max(float(x), 1e-3), 1e6))
     in_view = int(row["model_light_in_view"])
+    depth_range = log_clamped(row["depth_range_in_beam_widths"])
+    beam_pixels = log_clamped(row["beam_width_in_pixels"])
     return [1.0,
-            log_clamped(row["depth_range_in_beam_widths"]),
-            log_clamped(row["beam_width_in_pixels"]),
+            depth_range,
+            beam_pixels,
             math.log1p(min(max(float(row["model_optical_depth"]), 0.0), 1e3)),
             float(in_view and int(row["falling_attenuation"])),
             float(in_view),
             float(row["kind"] == "point"),
-            float(row["kind"] == "directional")]
+            float(row["kind"] == "directional"),
+            in_view * depth_range,
+            in_view * beam_pixels,
+            log_clamped(row["shadow_texel_in_pixels"]) if float(row["shadow_texel_in_pixels"]) > 0
+            else 0.0]
 
 
 def scene_features(scene_json):
@@ -95,7 +103,7 @@ def fit(x, y):
     return beta, residuals
 
 
-def write_table(path, ladder, fits):
+def write_table(path, ladder, fits, presets):
     lines = ["/**",
              " * @file   vtkLightShaftErrorModelTable.h",
              " * @brief  The error model's ladder and coefficients (private, not installed). "
@@ -113,8 +121,9 @@ def write_table(path, ladder, fits):
              "/// 1, log depth range in beam widths, log beam width in pixels, log(1 + optical "
              "depth),",
              "/// light in view with falling attenuation, light in view, point light, "
-             "directional light.",
-             "constexpr int NumberOfVariables = 8;",
+             "directional light,",
+             "/// light in view times the two logs, log shadow-map texel in pixels (0: no map).",
+             "constexpr int NumberOfVariables = 11;",
              "",
              "struct Row",
              "{",
@@ -137,7 +146,16 @@ def write_table(path, ladder, fits):
                    f'{p["InterleaveSize"] if march else 1}')
         coefficients = ", ".join(f"{b:.6g}" for b in beta)
         lines.append(f"  {{ {{ {setting} }}, {{ {coefficients} }}, {margin:.6g} }},")
-    lines += ["};", "// clang-format on", "}", "", "#endif", ""]
+    lines += ["};", "// clang-format on", "",
+              "/// The presets (Rows' indices): the cheapest setting whose training p90 meets "
+              "each aim."]
+    names = [label for label, _ in ladder]
+    for name, aim, setting in presets:
+        # No setting meets the aim: the most accurate one.
+        index = names.index(setting) if setting else len(names) - 1
+        lines.append(f"constexpr int {name}Setting = {index}; // {names[index]}, aim p90 <= "
+                     f"{100 * aim:g}%")
+    lines += ["}", "", "#endif", ""]
     with open(path, "w") as f:
         f.write("\n".join(lines))
 
@@ -164,6 +182,10 @@ def main():
             row.update(cache[key])
     ladder = [(label, p) for label, p in rs.LADDER
               if any(r["setting"] == label for r in rows)]
+    # Cost: each setting's time ratio over the dearest setting's on the same scene (single
+    # frames of the training run: indicative), median over the scenes.
+    dearest = ladder[-1][0]
+    dear = {r["scene_json"]: float(r["time_ratio"]) for r in rows if r["setting"] == dearest}
     fits, report = [], []
     for label, _ in ladder:
         sub = [r for r in rows if r["setting"] == label]
@@ -177,7 +199,10 @@ def main():
                            p90=float(np.percentile(errors, 90)),
                            spread=float(np.std(y)), residual=float(np.std(residuals)),
                            margin=margin,
-                           ratio=float(np.median([float(r["time_ratio"]) for r in sub]))))
+                           ratio=float(np.median([float(r["time_ratio"]) for r in sub])),
+                           cost=float(np.median([float(r["time_ratio"]) / dear[r["scene_json"]]
+                                                 for r in sub if r["scene_json"] in dear]
+                                                or [math.nan]))))
         print(f"{label:20s} n {len(sub)} p50 {100 * report[-1]['median']:.2f}% p90 "
               f"{100 * report[-1]['p90']:.2f}%  log-sd {report[-1]['spread']:.2f} -> LOO "
               f"{report[-1]['residual']:.2f}, margin {margin:.2f}")
@@ -189,15 +214,15 @@ def main():
         if r["kept"]:
             kept.append(index)
             best = r["p90"]
-    write_table(args.table, [ladder[i] for i in kept], [fits[i] for i in kept])
-    with open(os.path.join(args.docs, "error-model-training.csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        writer.writeheader()
-        writer.writerows(rows)
     presets = []
     for name, aim in AIMS:
         meeting = [r for r in report if r["kept"] and r["p90"] <= aim]
         presets.append((name, aim, meeting[0]["setting"] if meeting else None))
+    write_table(args.table, [ladder[i] for i in kept], [fits[i] for i in kept], presets)
+    with open(os.path.join(args.docs, "error-model-training.csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
     write_markdown(os.path.join(args.docs, "error-model.md"), report, presets, args)
 
 
@@ -209,13 +234,14 @@ def write_markdown(path, report, presets, args):
              "(relative RMS against the float64 reference), the spread of log(error) around "
              "its geometric mean and around the fit (leave-one-out), and the margin added to "
              "the fit (90th percentile of the leave-one-out residuals, log).", "",
-             "| setting | n | median error | p90 error | sd log(error) | sd LOO residual | "
-             "margin | in the ladder |", "|---|---:|---:|---:|---:|---:|---:|---|"]
+             "| setting | n | median error | p90 error | time / dearest's | sd log(error) | "
+             "sd LOO residual | margin | in the ladder |",
+             "|---|---:|---:|---:|---:|---:|---:|---:|---|"]
     for r in report:
         kept = "yes" if r["kept"] else "no: a cheaper setting's p90 is lower"
         lines.append(f"| {r['setting']} | {r['n']} | {100 * r['median']:.2f}% | "
-                     f"{100 * r['p90']:.2f}% | {r['spread']:.2f} | {r['residual']:.2f} | "
-                     f"{r['margin']:.2f} | {kept} |")
+                     f"{100 * r['p90']:.2f}% | {r['cost']:.3f} | {r['spread']:.2f} | "
+                     f"{r['residual']:.2f} | {r['margin']:.2f} | {kept} |")
     lines += ["", "Settings: S = slices, j = jitter, b = blur radius (pixels), d = "
               "downsampling, m = shadow-map size.", "",
               "The cheapest setting whose training p90 meets each preset's aim:", ""]

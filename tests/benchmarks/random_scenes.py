@@ -90,8 +90,9 @@ def _march(steps, interleave, shadow_map):
                 AccumulationPrecision=vtkLightShaftPass.ACCUMULATE_FLOAT32)
 
 
-# The settings the error model is fitted on (--ladder), cheapest first by their fill
-# (slabs times in-scatter pixels, which dominates the cost).
+# The settings the error model is fitted on (--ladder), cheapest first: by their fill (slabs or
+# steps times in-scatter pixels, which dominates the cost), ray-march steps placed by the
+# training run's time ratios (a step costs about 1.7 slabs).
 LADDER = [
     ("S16 j b2 d2 m512", _rung(16, True, 2, 2, 512)),
     ("S32 j b2 d2 m512", _rung(32, True, 2, 2, 512)),
@@ -103,9 +104,11 @@ LADDER = [
     ("S64 j b2 d1 m1024", _rung(64, True, 2, 1, 1024)),
     ("S64 j b1 d1 m2048", _rung(64, True, 1, 1, 2048)),
     ("M32 i2 m2048", _march(32, 2, 2048)),
+    ("M64 i1 m2048", _march(64, 1, 2048)),
+    ("M64 i2 m2048", _march(64, 2, 2048)),
     ("S128 b0 d1 m2048", _rung(128, False, 0, 1, 2048)),
     ("S128 j b1 d1 m2048", _rung(128, True, 1, 1, 2048)),
-    ("M64 i2 m2048", _march(64, 2, 2048)),
+    ("M128 i1 m2048", _march(128, 1, 2048)),
     ("S256 b0 d1 m2048", _rung(256, False, 0, 1, 2048)),
     ("M256 i1 m2048", _march(256, 1, 2048)),
     ("S512 b0 d1 m2048", _rung(512, False, 0, 1, 2048)),
@@ -435,6 +438,7 @@ def error_model_columns(shafts, scene):
     return dict(depth_range_in_beam_widths=shafts.GetLastDepthRangeInBeamWidths(),
                 beam_width_in_pixels=shafts.GetLastBeamWidthInPixels(),
                 model_optical_depth=shafts.GetLastOpticalDepth(),
+                shadow_texel_in_pixels=shafts.GetLastShadowTexelInPixels(),
                 model_light_in_view=int(shafts.GetLastLightInView()),
                 falling_attenuation=int(falling), kind=scene.light_kind,
                 predicted_error=shafts.GetLastPredictedError(),
