@@ -47,7 +47,7 @@ def test_light_kinds_benchmark_smoke(tmp_path):
         assert float(row["time_ratio"]) > 0.0
         lights = 4 if row["lights"].startswith("2 spots") else 2 if "+" in row["lights"] else 1
         assert len(row["gpu_ms_per_light"].split(" / ")) == lights
-        assert 0.0 <= float(row["relative_rmse"]) < 0.2  # Interactive, shadowed, at 96x72
+        assert 0.0 <= float(row["relative_rmse"]) < 0.2  # shadowed, at 96x72
     assert "| lights | setting |" in (tmp_path / "light-kinds.md").read_text()
 
 
