@@ -132,7 +132,8 @@ public:
    * Sampling: forwarded to vtkLightShaftPass, unless ShaftQuality is a preset (DRAFT,
    * INTERACTIVE, FINAL), which then decides slices, jitter, blur, downsampling and shadow-map
    * size (the values set here are kept and come back with CUSTOM). Default is CUSTOM with the
-   * pass's defaults (which are the Interactive preset).
+   * pass's defaults. A preset sets the method too (ShaftMethod, NumberOfSteps and
+   * InterleaveSize apply again with Custom).
    */
   void SetShaftQuality(int quality);
   vtkGetMacro(ShaftQuality, int);
