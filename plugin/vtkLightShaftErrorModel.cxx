@@ -118,8 +118,8 @@ Features Describe(const vtkLightShaftGeometry::LightFrame& light,
   {
     // MapExtent: across one map camera at unit distance (spot, point), or in world units.
     const double across = f.Kind == vtkLightShaftModel::LightKind::Directional
-      ? light.MapExtent
-      : light.MapExtent * glm::length(centre - light.PositionVC);
+                            ? light.MapExtent
+                            : light.MapExtent * glm::length(centre - light.PositionVC);
     f.ShadowTexelInPixels = across / ReferenceMapSize / pixel;
   }
   return f;
@@ -139,7 +139,8 @@ const Setting& GetSetting(int index)
 const Setting& GetPreset(Preset preset)
 {
   const int index[] = { vtkLightShaftErrorModelTable::DraftSetting,
-    vtkLightShaftErrorModelTable::InteractiveSetting, vtkLightShaftErrorModelTable::FinalSetting };
+    vtkLightShaftErrorModelTable::InteractiveSetting,
+    vtkLightShaftErrorModelTable::FinalSetting };
   return GetSetting(index[static_cast<int>(preset)]);
 }
 

@@ -35,12 +35,12 @@ constexpr Row Rows[] = {
   { { "M128 i1 m2048", vtkLightShaftPass::RAY_MARCH, 128, false, 0, 1, 2048, 1 }, { -5.23708, -0.200527, -0.151341, -0.151272, -1.4996, 1.25897, -0.556646, -0.189882, 1.00321, -0.217949, 0.183532 }, 1.66783 },
   { { "M256 i1 m2048", vtkLightShaftPass::RAY_MARCH, 256, false, 0, 1, 2048, 1 }, { -5.86612, -0.142646, -0.0824899, -0.166112, -1.41491, 1.1784, -0.571966, -0.0902672, 1.0979, -0.218366, 0.174355 }, 1.62473 },
 };
-// clang-format on
 
 /// The presets (Rows' indices): the cheapest setting whose training p90 meets each aim.
 constexpr int DraftSetting = 5; // S64 b0 d1 m1024, aim p90 <= 5%
 constexpr int InteractiveSetting = 6; // M64 i1 m2048, aim p90 <= 2%
 constexpr int FinalSetting = 8; // M256 i1 m2048, aim p90 <= 0.5%
+// clang-format on
 }
 
 #endif

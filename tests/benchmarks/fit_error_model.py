@@ -146,7 +146,7 @@ def write_table(path, ladder, fits, presets):
                    f'{p["InterleaveSize"] if march else 1}')
         coefficients = ", ".join(f"{b:.6g}" for b in beta)
         lines.append(f"  {{ {{ {setting} }}, {{ {coefficients} }}, {margin:.6g} }},")
-    lines += ["};", "// clang-format on", "",
+    lines += ["};", "",
               "/// The presets (Rows' indices): the cheapest setting whose training p90 meets "
               "each aim."]
     names = [label for label, _ in ladder]
@@ -155,7 +155,7 @@ def write_table(path, ladder, fits, presets):
         index = names.index(setting) if setting else len(names) - 1
         lines.append(f"constexpr int {name}Setting = {index}; // {names[index]}, aim p90 <= "
                      f"{100 * aim:g}%")
-    lines += ["}", "", "#endif", ""]
+    lines += ["// clang-format on", "}", "", "#endif", ""]
     with open(path, "w") as f:
         f.write("\n".join(lines))
 
