@@ -3,6 +3,7 @@
 set(lightshafts_private_classes
   vtkLightShaftAnalyticMethod
   vtkLightShaftComposite
+  vtkLightShaftErrorModel
   vtkLightShaftGeometry
   vtkLightShaftInScatter
   vtkLightShaftInScatterTarget
@@ -22,8 +23,12 @@ set(lightshafts_private_classes
   vtkLightShaftSlabDrawer
   vtkLightShaftSlicesMethod
   vtkLightShaftSurfaceLight)
-set(lightshafts_private_sources)
-set(lightshafts_private_headers "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftFrame.h")
+# vtkLightShaftPass's read-outs are compiled with it (the public class's second source file).
+set(lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassReadouts.cxx")
+set(lightshafts_private_headers
+  "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftFrame.h"
+  "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftErrorModelTable.h"
+  "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassInternals.h")
 foreach (class IN LISTS lightshafts_private_classes)
   list(APPEND lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/${class}.cxx")
   list(APPEND lightshafts_private_headers "${CMAKE_CURRENT_LIST_DIR}/${class}.h")

@@ -13,9 +13,10 @@
 #ifndef vtkLightShaftFrame_h
 #define vtkLightShaftFrame_h
 
-#include "vtkLightShaftGeometry.h" // For the camera and light frames
-#include "vtkLightShaftLights.h"   // For the per-light statistics
-#include "vtkLightShaftModel.h"    // For the medium
+#include "vtkLightShaftErrorModel.h" // For the error model's features
+#include "vtkLightShaftGeometry.h"   // For the camera and light frames
+#include "vtkLightShaftLights.h"     // For the per-light statistics
+#include "vtkLightShaftModel.h"      // For the medium
 
 #include <string> // For the shader variant
 #include <vector> // For the per-light statistics
@@ -60,6 +61,7 @@ struct vtkLightShaftParameters
   bool RadialJitter{};
   double RadialGuardBand{};
   const double* ShadowCasterBounds = nullptr; ///< set for distributed rendering, else nullptr
+  double TargetError{}; ///< 0: off; else the SLICES parameters above are the ladder's choice
 };
 
 /**
@@ -78,6 +80,11 @@ struct vtkLightShaftStatistics
   double SliceDepthRange[2] = { 0.0, 0.0 }; ///< of the first light whose shafts were computed
   double RadialGuardBand = 0.0;
   std::vector<vtkLightShaftLightStatistics> Lights; ///< one per used light, in order
+  /// The error model: its prediction for the frame's setting (-1: none), the ladder setting
+  /// used (-1: none) and the first lit light's features.
+  double PredictedError = -1.0;
+  int ErrorModelSetting = -1;
+  vtkLightShaftErrorModel::Features ErrorFeatures;
 };
 
 /**

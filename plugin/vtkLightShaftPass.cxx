@@ -1,6 +1,8 @@
 #include "vtkLightShaftPass.h"
+#include "vtkLightShaftPassInternals.h"
 
 #include "vtkLightShaftComposite.h"
+#include "vtkLightShaftErrorModel.h"
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftGeometry.h"
 #include "vtkLightShaftInScatter.h"
@@ -49,54 +51,6 @@ constexpr double MaximumCoefficient = 1.0e6;
 constexpr double MaximumExposure = 1.0e6;
 constexpr double MaximumAnisotropy = 0.99;
 }
-
-/**
- * Everything the pass holds besides its parameters: its components (each owning its GL
- * objects, freed by ReleaseGraphicsResources), the lights, and what the last frame left for
- * the read-outs.
- */
-class vtkLightShaftPass::Internals
-{
-public:
-  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
-  vtkNew<vtkCallbackCommand> WindowDeleted;
-  unsigned long WindowDeletedTag = 0;
-  bool WarnedPointCookie = false;
-  int FrameCounter = 0;
-
-  // The components, in the order a frame uses them.
-  vtkLightShaftLights Lights;
-  vtkLightShaftSceneRenderer Scene;
-  vtkLightShaftLightTextures Textures;
-  vtkLightShaftInScatter InScatter;
-  vtkLightShaftSurfaceLight SurfaceLight;
-  vtkLightShaftComposite Composite;
-
-  // The last frame's L_in (full resolution) when InScatterValid, and what it did per light.
-  vtkTextureObject* FinalInScatter = nullptr;
-  bool InScatterValid = false;
-  std::vector<vtkLightShaftLightStatistics> LastLights;
-  std::string Variants; ///< GetLastShaderVariant's string
-  vtkSmartPointer<vtkOpenGLFramebufferObject> ReadFramebuffer;
-
-  void Track(vtkOpenGLRenderWindow* window);
-  void Untrack();
-  void ReleaseOwnResources(vtkWindow* w);
-
-  static vtkLightShaftParameters Snapshot(vtkLightShaftPass& self);
-  bool BeginFrame(vtkLightShaftPass& self, const vtkRenderState* s, vtkLightShaftFrame& frame);
-  void RenderShafts(vtkLightShaftFrame& frame,
-    vtkRenderPass* delegate,
-    const std::vector<vtkLight*>& lights,
-    bool shadowSurfaces);
-  void RenderLight(vtkLightShaftFrame& frame,
-    vtkRenderPass* delegate,
-    vtkLight* light,
-    vtkTextureObject* cookie,
-    bool shadowSurfaces);
-  static void Publish(vtkLightShaftPass& self, const vtkLightShaftFrame& frame);
-  const vtkLightShaftLightStatistics* LastLight(int index) const;
-};
 
 vtkStandardNewMacro(vtkLightShaftPass);
 
@@ -309,6 +263,18 @@ void vtkLightShaftPass::SetRadialGuardBand(double extent)
   SetClamped(this, "RadialGuardBand", &this->RadialGuardBand, { extent }, 1.0, 4.0);
 }
 
+void vtkLightShaftPass::SetTargetError(double error)
+{
+  SetClamped(this, "TargetError", &this->TargetError, { error }, 0.0, 1.0);
+}
+
+const char* vtkLightShaftPass::GetErrorModelSettingName(int setting)
+{
+  return setting >= 0 && setting < vtkLightShaftErrorModel::GetNumberOfSettings()
+           ? vtkLightShaftErrorModel::GetSetting(setting).Name
+           : "none";
+}
+
 void vtkLightShaftPass::SetDecay(double decay)
 {
   SetClamped(this, "Decay", &this->Decay, { decay }, 0.0, 1.0);
@@ -345,36 +311,43 @@ const char* vtkLightShaftPass::GetMethodName(int method)
 
 namespace
 {
-void ApplyQuality(vtkLightShaftPass* pass,
-  int slices,
-  int shadowMap,
-  bool jitter,
-  int blur,
-  int downsample)
+// A preset is a setting of the error model's ladder, the one its training percentiles chose
+// (tests/benchmarks/fit_error_model.py).
+void ApplyQuality(vtkLightShaftPass* pass, vtkLightShaftErrorModel::Preset preset)
 {
+  const vtkLightShaftErrorModel::Setting& s = vtkLightShaftErrorModel::GetPreset(preset);
+  pass->SetMethod(s.Method);
   pass->SetAutomaticSliceCount(false);
-  pass->SetNumberOfSlices(slices);
-  pass->SetShadowMapSize(shadowMap);
-  pass->SetJitter(jitter);
-  pass->SetBlurRadius(blur);
-  pass->SetDownsampleFactor(downsample);
+  if (s.Method == vtkLightShaftPass::SLICES)
+  {
+    pass->SetNumberOfSlices(s.Samples);
+    pass->SetJitter(s.Jitter);
+  }
+  else
+  {
+    pass->SetNumberOfSteps(s.Samples);
+    pass->SetInterleaveSize(s.InterleaveSize);
+  }
+  pass->SetShadowMapSize(s.ShadowMapSize);
+  pass->SetBlurRadius(s.BlurRadius);
+  pass->SetDownsampleFactor(s.DownsampleFactor);
   pass->SetAccumulationPrecision(vtkLightShaftPass::ACCUMULATE_FLOAT32);
 }
 }
 
 void vtkLightShaftPass::SetQualityToDraft()
 {
-  ApplyQuality(this, 32, 512, true, 2, 2);
+  ApplyQuality(this, vtkLightShaftErrorModel::Preset::Draft);
 }
 
 void vtkLightShaftPass::SetQualityToInteractive()
 {
-  ApplyQuality(this, 64, 1024, true, 2, 1);
+  ApplyQuality(this, vtkLightShaftErrorModel::Preset::Interactive);
 }
 
 void vtkLightShaftPass::SetQualityToFinal()
 {
-  ApplyQuality(this, 512, 2048, false, 0, 1);
+  ApplyQuality(this, vtkLightShaftErrorModel::Preset::Final);
 }
 
 void vtkLightShaftPass::SetDownsampleFactor(int factor)
@@ -432,67 +405,6 @@ vtkLight* vtkLightShaftPass::GetLight()
 vtkLight* vtkLightShaftPass::GetLight(int index)
 {
   return this->Impl->Lights.GetGiven(index);
-}
-
-//------------------------------------------------------------------------------
-// The last frame's lights.
-const vtkLightShaftLightStatistics* vtkLightShaftPass::Internals::LastLight(int index) const
-{
-  return index >= 0 && index < static_cast<int>(this->LastLights.size()) ? &this->LastLights[index]
-                                                                         : nullptr;
-}
-
-int vtkLightShaftPass::GetLastNumberOfUsedLights()
-{
-  return static_cast<int>(this->Impl->LastLights.size());
-}
-
-vtkLight* vtkLightShaftPass::GetLastUsedLight(int index)
-{
-  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
-  return light ? light->Light.Get() : nullptr;
-}
-
-int vtkLightShaftPass::GetLastLightKind(int index)
-{
-  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
-  return light ? light->Kind : -1;
-}
-
-int vtkLightShaftPass::GetLastLightMethod(int index)
-{
-  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
-  return light ? light->Method : -1;
-}
-
-int vtkLightShaftPass::GetLastLightSlicesDrawn(int index)
-{
-  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
-  return light ? light->SlicesDrawn : 0;
-}
-
-bool vtkLightShaftPass::GetLastLightShadowMapRendered(int index)
-{
-  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
-  return light && light->ShadowMapRendered;
-}
-
-bool vtkLightShaftPass::GetLastLightShadowMapReused(int index)
-{
-  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
-  return light && light->ShadowMapReused;
-}
-
-int vtkLightShaftPass::GetLastLightShadowCasters(int index)
-{
-  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
-  return light ? light->ShadowCasters : 0;
-}
-
-double vtkLightShaftPass::GetLastLightTime(int index)
-{
-  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
-  return light ? light->Time : -1.0;
 }
 
 void vtkLightShaftPass::SetCookie(vtkTexture* cookie)
@@ -720,6 +632,7 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
   p.RadialJitter = self.RadialJitter;
   p.RadialGuardBand = self.RadialGuardBand;
   p.ShadowCasterBounds = self.UseShadowCasterBounds ? self.ShadowCasterBounds : nullptr;
+  p.TargetError = self.TargetError;
   return p;
 }
 
@@ -745,6 +658,18 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
   vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
 
+  // Each light's geometry first: with a target error it decides the frame's sampling.
+  std::vector<vtkLightShaftGeometry::LightFrame> lightFrames;
+  for (vtkLight* light : lights)
+  {
+    lightFrames.push_back(
+      vtkLightShaftGeometry::ComputeLightFrame(vtkLightShaftModel::DescribeLight(light),
+        frame.Camera,
+        frame.Renderer->GetViewProps(),
+        frame.Parameters.ShadowCasterBounds));
+  }
+  ApplyErrorModel(frame, lightFrames);
+
   // The scene, with the samples of the target it is composited into (the overlay step held
   // back until the end: on top, unfogged); the cookie and noise decided once.
   frame.Scene.Samples = vtkLightShaftResources::TargetSamples();
@@ -765,7 +690,8 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   for (size_t i = 0; i < lights.size(); ++i)
   {
     frame.LightStatistics = &frame.Statistics.Lights[i];
-    this->RenderLight(frame, delegate, lights[i], cookie, shadowSurfaces);
+    this->RenderLight(
+      frame, delegate, lights[i], std::move(lightFrames[i]), cookie, shadowSurfaces);
   }
   frame.LightStatistics = nullptr;
   this->Scene.RestoreOverlay();
@@ -791,20 +717,90 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
 }
 
 //------------------------------------------------------------------------------
+// The error model: with a target error, the cheapest setting of its ladder predicted to meet
+// it on every lit light (AUTOMATIC keeps its exact integral where nothing shadows); without
+// one, its prediction for the parameters set when they are one of its settings.
+void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
+  const std::vector<vtkLightShaftGeometry::LightFrame>& lights)
+{
+  namespace model = vtkLightShaftErrorModel;
+  std::vector<model::Features> features;
+  for (const vtkLightShaftGeometry::LightFrame& light : lights)
+  {
+    if (light.Model.Radiates())
+    {
+      features.push_back(model::Describe(light, frame.Camera, frame.Medium, frame.Size[0]));
+      if (features.back().Lit && !frame.Statistics.ErrorFeatures.Lit)
+      {
+        frame.Statistics.ErrorFeatures = features.back();
+      }
+    }
+  }
+  vtkLightShaftParameters& p = frame.Parameters;
+  if (!frame.Medium.Scatters() || !frame.Statistics.ErrorFeatures.Lit)
+  {
+    return; // no shafts to predict
+  }
+  int setting = -1;
+  double predicted = -1.0;
+  if (p.TargetError > 0.0)
+  {
+    setting = model::Choose(p.TargetError, features, predicted);
+    const model::Setting& chosen = model::GetSetting(setting);
+    // AUTOMATIC keeps its exact integral where nothing can shadow; else the chosen method.
+    const bool exact =
+      p.Method == vtkLightShaftPass::AUTOMATIC && p.NoiseAmplitude <= 0.0 &&
+      std::none_of(lights.begin(),
+        lights.end(),
+        [](const vtkLightShaftGeometry::LightFrame& l) { return l.ShadowsPossible; });
+    p.Method = exact ? p.Method : chosen.Method;
+    p.AutomaticSliceCount = false;
+    p.NumberOfSlices =
+      chosen.Method == vtkLightShaftPass::SLICES ? chosen.Samples : p.NumberOfSlices;
+    p.NumberOfSteps =
+      chosen.Method == vtkLightShaftPass::RAY_MARCH ? chosen.Samples : p.NumberOfSteps;
+    p.Jitter = chosen.Jitter;
+    p.InterleaveSize = chosen.InterleaveSize;
+    p.BlurRadius = chosen.BlurRadius;
+    p.DownsampleFactor = chosen.DownsampleFactor;
+    p.ShadowMapSize = chosen.ShadowMapSize;
+    p.AccumulationPrecision = vtkLightShaftPass::ACCUMULATE_FLOAT32;
+    frame.Reduced[0] = (frame.Size[0] + p.DownsampleFactor - 1) / p.DownsampleFactor;
+    frame.Reduced[1] = (frame.Size[1] + p.DownsampleFactor - 1) / p.DownsampleFactor;
+  }
+  else if ((p.Method == vtkLightShaftPass::SLICES && !p.AutomaticSliceCount) ||
+           p.Method == vtkLightShaftPass::RAY_MARCH)
+  {
+    const bool slices = p.Method == vtkLightShaftPass::SLICES;
+    const model::Setting current{ "",
+      p.Method,
+      slices ? p.NumberOfSlices : p.NumberOfSteps,
+      p.Jitter,
+      p.BlurRadius,
+      p.DownsampleFactor,
+      p.ShadowMapSize,
+      p.InterleaveSize };
+    const bool float32 = p.AccumulationPrecision == vtkLightShaftPass::ACCUMULATE_FLOAT32;
+    setting = float32 ? model::FindSetting(current) : -1;
+    predicted = setting >= 0 ? model::Predict(setting, features) : -1.0;
+  }
+  frame.Statistics.ErrorModelSetting = setting;
+  frame.Statistics.PredictedError = predicted;
+}
+
+//------------------------------------------------------------------------------
 // One light: its frame (geometry, casters, shadow cameras), its in-scatter and its surface
 // light, timed.
 void vtkLightShaftPass::Internals::RenderLight(vtkLightShaftFrame& frame,
   vtkRenderPass* delegate,
   vtkLight* light,
+  vtkLightShaftGeometry::LightFrame&& lightFrame,
   vtkTextureObject* cookie,
   bool shadowSurfaces)
 {
   vtkLightShaftLightState& state = this->Lights.StateOf(light);
   vtkLightShaftLightStatistics& stats = *frame.LightStatistics;
-  frame.Light = vtkLightShaftGeometry::ComputeLightFrame(vtkLightShaftModel::DescribeLight(light),
-    frame.Camera,
-    frame.Renderer->GetViewProps(),
-    frame.Parameters.ShadowCasterBounds);
+  frame.Light = std::move(lightFrame);
   frame.ShadowMap = &state.ShadowMap;
   stats.Light = light;
   stats.Kind = static_cast<int>(frame.Light.Model.Kind);
@@ -840,108 +836,6 @@ void vtkLightShaftPass::Internals::RenderLight(vtkLightShaftFrame& frame,
     stats.Time = seconds > 0.0 ? 1e3 * seconds : -1.0;
   }
   frame.ShadowMap = nullptr;
-}
-
-//------------------------------------------------------------------------------
-// What the frame did, as the pass's read-outs: per light, and the totals and first light's
-// values the older read-outs report.
-void vtkLightShaftPass::Internals::Publish(vtkLightShaftPass& self, const vtkLightShaftFrame& frame)
-{
-  const vtkLightShaftStatistics& stats = frame.Statistics;
-  self.NumberOfRenderedProps = stats.RenderedProps;
-  self.LastViewportSize[0] = std::max(frame.Size[0], 0);
-  self.LastViewportSize[1] = std::max(frame.Size[1], 0);
-  self.LastNumberOfSlabBatches = stats.SlabBatches;
-  self.LastLatticeResolution = stats.LatticeResolution;
-  self.LastNumberOfPostPasses = stats.PostPasses;
-  self.LastNumberOfSceneRenders = stats.SceneRenders;
-  self.LastMultiSamples = stats.MultiSamples;
-  self.LastPlainScene = stats.PlainScene;
-  self.LastSliceDepthRange[0] = stats.SliceDepthRange[0];
-  self.LastSliceDepthRange[1] = stats.SliceDepthRange[1];
-  self.LastRadialGuardBand = stats.RadialGuardBand;
-  self.LastMethod = -1;
-  self.LastNumberOfSlicesDrawn = 0;
-  self.LastShadowMapRendered = false;
-  self.LastNumberOfShadowCasters = 0;
-  for (const vtkLightShaftLightStatistics& light : stats.Lights)
-  {
-    if (self.LastMethod < 0)
-    {
-      self.LastMethod = light.Method;
-    }
-    self.LastNumberOfSlicesDrawn += light.SlicesDrawn;
-    self.LastNumberOfShadowCasters += light.ShadowCasters;
-    const bool mapped = light.ShadowMapRendered || light.ShadowMapReused;
-    if (mapped && !self.LastShadowMapRendered)
-    {
-      self.LastLightDepthRange[0] = light.LightDepthRange[0];
-      self.LastLightDepthRange[1] = light.LightDepthRange[1];
-      self.LastShadowBias = light.ShadowBias;
-    }
-    self.LastShadowMapRendered = self.LastShadowMapRendered || mapped;
-  }
-  self.Impl->LastLights = stats.Lights;
-}
-
-//------------------------------------------------------------------------------
-bool vtkLightShaftPass::GetInScatteredRadiance(vtkImageData* out)
-{
-  if (!out)
-  {
-    vtkErrorMacro("GetInScatteredRadiance: the output image is nullptr.");
-    return false;
-  }
-  out->Initialize();
-  Internals& impl = *this->Impl;
-  const int w = this->LastViewportSize[0];
-  const int h = this->LastViewportSize[1];
-  if (!impl.Window || w < 1 || h < 1)
-  {
-    vtkErrorMacro("GetInScatteredRadiance: nothing has been rendered yet.");
-    return false;
-  }
-  out->SetDimensions(w, h, 1);
-  vtkNew<vtkFloatArray> radiance;
-  radiance->SetName("InScatteredRadiance");
-  radiance->SetNumberOfComponents(3);
-  radiance->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
-  radiance->Fill(0.0);
-  vtkTextureObject* final = impl.FinalInScatter;
-  if (impl.InScatterValid && final && static_cast<int>(final->GetWidth()) == w &&
-      static_cast<int>(final->GetHeight()) == h)
-  {
-    impl.Window->MakeCurrent();
-    vtkOpenGLState* ostate = impl.Window->GetState();
-    ostate->PushFramebufferBindings();
-    vtkLightShaftResources::BindTargets(
-      vtkLightShaftResources::EnsureFramebuffer(impl.ReadFramebuffer, impl.Window),
-      { final },
-      nullptr,
-      w,
-      h);
-    impl.ReadFramebuffer->ActivateReadBuffer(0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, radiance->GetPointer(0));
-    ostate->PopFramebufferBindings();
-  }
-  out->GetPointData()->SetScalars(radiance);
-  return true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkLightShaftPass::GetLastShadowMap(vtkImageData* depths,
-  vtkMatrix4x4* worldToLightClip,
-  int index)
-{
-  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
-  if (!depths || !worldToLightClip || !light || !light->Light ||
-      !(light->ShadowMapRendered || light->ShadowMapReused))
-  {
-    return false;
-  }
-  return this->Impl->Lights.StateOf(light->Light)
-    .ShadowMap.ReadBack(this->Impl->Window, depths, worldToLightClip);
 }
 
 //------------------------------------------------------------------------------
@@ -987,6 +881,8 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Weight: " << this->Weight << "\n";
   os << indent << "RadialJitter: " << this->RadialJitter << "\n";
   os << indent << "RadialGuardBand: " << this->RadialGuardBand << "\n";
+  os << indent << "TargetError: " << this->TargetError << "\n";
+  os << indent << "LastPredictedError: " << this->LastPredictedError << "\n";
   os << indent << "LastMethod: " << GetMethodName(this->LastMethod) << "\n";
   os << indent << "BlurRadius: " << this->BlurRadius << "\n";
   os << indent << "DownsampleFactor: " << this->DownsampleFactor << "\n";

@@ -560,16 +560,60 @@ public:
 
   ///@{
   /**
-   * Quality presets, chosen from the measured speed/error front (docs/benchmark.md):
-   * - Draft: 32 slices, jitter, blur radius 2, half-resolution in-scatter, 512^2 shadow map;
-   * - Interactive: 64 slices, jitter, blur radius 2, 1024^2 shadow map, full resolution (the
-   *   defaults);
-   * - Final: 512 slices, 2048^2 shadow map, full resolution.
-   * All use 32-bit float accumulation and a fixed slice count; other parameters are unchanged.
+   * Quality presets: each the cheapest setting of the error model's ladder whose 90th-percentile
+   * error on random training scenes meets its aim (Draft 5%, Interactive 2%, Final 0.5%, the
+   * most accurate setting when none does; docs/error-model.md, validated on other seeds in
+   * docs/random-scenes.md):
+   * - Draft: SLICES, 64 plain slabs (no jitter, no blur), 1024^2 shadow map;
+   * - Interactive: RAY_MARCH, 64 equiangular steps, no interleaving, 2048^2 shadow map;
+   * - Final: RAY_MARCH, 256 steps, no interleaving, 2048^2 shadow map.
+   * They set the method, its sampling, blur 0, full resolution, 32-bit float accumulation and
+   * a fixed slice count; other parameters are unchanged. The defaults (64 jittered slabs, blur
+   * 2) are none of them: smooth and cheap, but they spread a light seen in the picture.
    */
   void SetQualityToDraft();
   void SetQualityToInteractive();
   void SetQualityToFinal();
+  ///@}
+
+  ///@{
+  /**
+   * Target relative RMS error of the in-scatter against the float64 reference (over the pixels
+   * above 1% of its peak), in [0, 1]; 0 turns it off. When on, each frame the pass computes
+   * what its lights' geometry asks of the sampling (GetLastDepthRangeInBeamWidths and the
+   * other error-model read-outs) and renders with the cheapest setting of its measured ladder
+   * (SLICES, a fixed slice count, jitter, blur, downsampling and shadow-map size) whose
+   * predicted error meets the target, or with the most accurate one when none does; it then
+   * overrides Method, NumberOfSlices, AutomaticSliceCount, Jitter, BlurRadius,
+   * DownsampleFactor, ShadowMapSize and AccumulationPrecision for that frame (the values set
+   * stay, and apply again at 0). The prediction is an upper estimate: on held-out random
+   * scenes at least 90% achieve the target (README "Target error"). Non-finite values are
+   * refused. Default is 0 (off).
+   */
+  void SetTargetError(double error);
+  vtkGetMacro(TargetError, double);
+  ///@}
+
+  ///@{
+  /**
+   * The error model's view of the last frame. The predicted relative RMS error: that of the
+   * setting TargetError chose, or of the parameters set when they equal a setting of the
+   * model's ladder (the presets do); -1 when there was no prediction (another method or
+   * setting, or no lit light). The ladder setting used (-1: none) and its name.
+   */
+  vtkGetMacro(LastPredictedError, double);
+  vtkGetMacro(LastErrorModelSetting, int);
+  static const char* GetErrorModelSettingName(int setting);
+  /// What the first lit light's geometry asks of the sampling: the lit volume's view-depth
+  /// range over the beam's width at its centre, that width in pixels, the medium's optical
+  /// depth over the range, the width of a 1024^2 shadow map's texel there in pixels (0: no
+  /// caster, no map), and whether the light projects inside the view (all 0 when no light
+  /// was lit).
+  vtkGetMacro(LastDepthRangeInBeamWidths, double);
+  vtkGetMacro(LastBeamWidthInPixels, double);
+  vtkGetMacro(LastOpticalDepth, double);
+  vtkGetMacro(LastShadowTexelInPixels, double);
+  vtkGetMacro(LastLightInView, bool);
   ///@}
 
   /**
@@ -706,6 +750,7 @@ protected:
   double Weight = 1.0;
   bool RadialJitter = true;
   double RadialGuardBand = 1.0;
+  double TargetError = 0.0;
 
   // Last-frame statistics.
   int LastNumberOfSlicesDrawn = 0;
@@ -726,6 +771,13 @@ protected:
   int LastNumberOfSlabBatches = 0;
   int LastMultiSamples = 0;
   bool LastPlainScene = false;
+  double LastPredictedError = -1.0;
+  int LastErrorModelSetting = -1;
+  double LastDepthRangeInBeamWidths = 0.0;
+  double LastBeamWidthInPixels = 0.0;
+  double LastOpticalDepth = 0.0;
+  double LastShadowTexelInPixels = 0.0;
+  bool LastLightInView = false;
 
 private:
   void RenderFrame(const vtkRenderState* s);

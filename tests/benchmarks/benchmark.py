@@ -92,6 +92,12 @@ SETTINGS = [
     ("lattice", "64 slices, lattice 16", dict(NumberOfSlices=64, LatticeResolution=16)),
     ("lattice", "128 slices, lattice 16", dict(NumberOfSlices=128, LatticeResolution=16)),
     ("lattice", "128 slices, lattice 32", dict(NumberOfSlices=128, LatticeResolution=32)),
+    # The presets of earlier releases, by their settings (what docs/benchmark.md measured).
+    ("former presets", "32 slices, jitter, blur 2, half resolution, 512 map",
+     dict(NumberOfSlices=32, Jitter=True, BlurRadius=2, DownsampleFactor=2, ShadowMapSize=512)),
+    ("former presets", "64 slices, jitter, blur 2 (defaults)",
+     dict(NumberOfSlices=64, Jitter=True, BlurRadius=2)),
+    ("former presets", "512 slices, 2048 map", dict(NumberOfSlices=512, ShadowMapSize=2048)),
     ("presets", "Draft", dict(Quality="Draft")),
     ("presets", "Interactive", dict(Quality="Interactive")),
     ("presets", "Final", dict(Quality="Final")),

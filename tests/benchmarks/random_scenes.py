@@ -15,7 +15,8 @@ optical depth along the lit region is 0.01-3 (log-uniform), a phase function (is
 Henyey-Greenstein with g in [-0.5, 0.8], Rayleigh), a camera outside, grazing or inside the beam,
 perspective or parallel, and a resolution from 240p to 1080p (--max-height caps it). A scene
 whose reference has no lit pixel in view (peak 0, or fewer than --min-lit-fraction of the pixels
-above 1% of the peak) is drawn again (next attempt), not reported.
+above 1% of the peak), or whose view holds nothing (every prop behind the camera: VTK's clipping
+range collapses), is drawn again (next attempt), not reported.
 
 For every scene and setting (the Draft, Interactive and Final presets; the defaults of
 RAY_MARCH, RADIAL_BLUR and ANALYTIC): the relative RMS error of the pass's in-scatter against
@@ -26,8 +27,9 @@ scene without it, measured in the same run (--frames frames after a warm-up fram
 Writes random-scenes.csv (one row per scene and setting, the scene as JSON), random-scenes.md
 (median and 90th percentile per setting, the worst scenes), images/random-pareto.png and
 images/random-worst-K.png (the three worst scenes of the Interactive preset) into --output-dir.
---only-scene K re-runs scene K of --seed alone. --smoke: 3 scenes at 96x72, 2 settings,
-2 frames.
+--only-scene K re-runs scene K of --seed alone. --smoke: 3 scenes at 96x72, 3 settings,
+2 frames. --ladder: the settings tests/benchmarks/fit_error_model.py fits the TargetError model
+on (with --smoke its cheapest and dearest), instead of the presets, methods and targets.
 
 VTK warnings and errors are captured per setting; the pass's documented warnings (ANALYTIC
 ignoring shadows) are counted as expected, anything else is listed as unexpected.
@@ -67,8 +69,51 @@ SETTINGS = [
     ("RAY_MARCH defaults", dict(Method=vtkLightShaftPass.RAY_MARCH)),
     ("RADIAL_BLUR defaults", dict(Method=vtkLightShaftPass.RADIAL_BLUR)),
     ("ANALYTIC", dict(Method=vtkLightShaftPass.ANALYTIC)),
+    ("Target 5%", dict(TargetError=0.05)),
+    ("Target 2%", dict(TargetError=0.02)),
+    ("Target 1%", dict(TargetError=0.01)),
+    ("Target 0.5%", dict(TargetError=0.005)),
 ]
-SMOKE_SETTINGS = ("Interactive", "Final")
+SMOKE_SETTINGS = ("Interactive", "Final", "Target 2%")
+
+
+def _rung(slices, jitter, blur, downsample, shadow_map):
+    return dict(Method=vtkLightShaftPass.SLICES, AutomaticSliceCount=False,
+                NumberOfSlices=slices, Jitter=jitter, BlurRadius=blur,
+                DownsampleFactor=downsample, ShadowMapSize=shadow_map,
+                AccumulationPrecision=vtkLightShaftPass.ACCUMULATE_FLOAT32)
+
+
+def _march(steps, interleave, shadow_map):
+    return dict(Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=steps,
+                InterleaveSize=interleave, BlurRadius=0, DownsampleFactor=1,
+                ShadowMapSize=shadow_map,
+                AccumulationPrecision=vtkLightShaftPass.ACCUMULATE_FLOAT32)
+
+
+# The settings the error model is fitted on (--ladder), cheapest first: by their fill (slabs or
+# steps times in-scatter pixels, which dominates the cost), ray-march steps placed by the
+# training run's time ratios (a step costs about 1.7 slabs).
+LADDER = [
+    ("S16 j b2 d2 m512", _rung(16, True, 2, 2, 512)),
+    ("S32 j b2 d2 m512", _rung(32, True, 2, 2, 512)),
+    ("S32 j b1 d2 m1024", _rung(32, True, 1, 2, 1024)),
+    ("S64 b0 d2 m1024", _rung(64, False, 0, 2, 1024)),
+    ("S32 b0 d1 m1024", _rung(32, False, 0, 1, 1024)),
+    ("S32 j b1 d1 m1024", _rung(32, True, 1, 1, 1024)),
+    ("S64 b0 d1 m1024", _rung(64, False, 0, 1, 1024)),
+    ("S64 j b2 d1 m1024", _rung(64, True, 2, 1, 1024)),
+    ("S64 j b1 d1 m2048", _rung(64, True, 1, 1, 2048)),
+    ("M32 i2 m2048", _march(32, 2, 2048)),
+    ("M64 i1 m2048", _march(64, 1, 2048)),
+    ("M64 i2 m2048", _march(64, 2, 2048)),
+    ("S128 b0 d1 m2048", _rung(128, False, 0, 1, 2048)),
+    ("S128 j b1 d1 m2048", _rung(128, True, 1, 1, 2048)),
+    ("M128 i1 m2048", _march(128, 1, 2048)),
+    ("S256 b0 d1 m2048", _rung(256, False, 0, 1, 2048)),
+    ("M256 i1 m2048", _march(256, 1, 2048)),
+    ("S512 b0 d1 m2048", _rung(512, False, 0, 1, 2048)),
+]
 FAMILIES = ("spheres", "boxes", "bars", "isosurface", "props")
 HEIGHTS = (240, 360, 480, 720, 1080)
 # Warnings the pass documents; anything else VTK prints is a finding.
@@ -387,6 +432,20 @@ def light_in_view(renderer, scene):
     return bool(ahead and w > 0 and abs(x / w) <= 1 and abs(y / w) <= 1)
 
 
+def error_model_columns(shafts, scene):
+    """What the pass's error model saw in the last frame (its features of the first lit light)
+    and predicted (-1: no prediction), as CSV columns (tests/benchmarks/fit_error_model.py)."""
+    falling = scene.light_kind != "directional" and any(a != 0 for a in scene.attenuation[1:])
+    return dict(depth_range_in_beam_widths=shafts.GetLastDepthRangeInBeamWidths(),
+                beam_width_in_pixels=shafts.GetLastBeamWidthInPixels(),
+                model_optical_depth=shafts.GetLastOpticalDepth(),
+                shadow_texel_in_pixels=shafts.GetLastShadowTexelInPixels(),
+                model_light_in_view=int(shafts.GetLastLightInView()),
+                falling_attenuation=int(falling), kind=scene.light_kind,
+                predicted_error=shafts.GetLastPredictedError(),
+                model_setting=shafts.GetErrorModelSettingName(shafts.GetLastErrorModelSetting()))
+
+
 def configure(shafts, scene, light, params):
     shafts.SetScatteringCoefficient(*scene.sigma_s)
     shafts.SetAbsorptionCoefficient(*scene.sigma_a)
@@ -426,12 +485,25 @@ def percentile(values, q):
     return float(np.percentile(np.asarray(values, float), q)) if values else float("nan")
 
 
+def _single_frame(window):
+    """One render's wall time, no warm-up (--frames 0: errors only, times indicative)."""
+    start = time.perf_counter()
+    window.Render()
+    window.WaitForCompletion()
+    return time.perf_counter() - start
+
+
 def run_scene(scene, settings, frames, log, keep_pictures):
     """The rows of one scene, or None when its reference has no lit pixel in view."""
     renderer, window = rh.make_window(scene.width, scene.height)
     light = build(renderer, scene)
+    camera = renderer.GetActiveCamera()
+    if camera.GetClippingRange()[1] < 1e-6 * camera.GetDistance():
+        # Every prop behind the camera: VTK's clipping range collapses (far ~1e-18) and the
+        # view holds no medium, only rounding (the reference's peak was 1e-22 in one such scene).
+        return None, None
     log.take()
-    plain = rh.median_frame_time(window, frames)
+    plain = rh.median_frame_time(window, frames) if frames > 0 else _single_frame(window)
     _, unexpected = log.take()
     if unexpected:
         print("\n".join(unexpected), file=sys.stderr)
@@ -452,7 +524,7 @@ def run_scene(scene, settings, frames, log, keep_pictures):
                 return None, None
         renderer.SetPass(shafts)
         start = time.perf_counter()
-        frame = rh.median_frame_time(window, frames)
+        frame = rh.median_frame_time(window, frames) if frames > 0 else _single_frame(window)
         image = rh.in_scatter(shafts)
         expected, unexpected = log.take()
         if label == settings[0][0]:
@@ -465,9 +537,12 @@ def run_scene(scene, settings, frames, log, keep_pictures):
                    camera=scene.camera_kind, parallel=int(scene.parallel),
                    optical_depth=scene.optical_depth, phase=scene.phase,
                    light_in_view=int(in_view),
+                   slice_near=shafts.GetLastSliceDepthRange()[0],
+                   slice_far=shafts.GetLastSliceDepthRange()[1],
                    gl_errors=shafts.GetLastGLErrorCount(), expected_warnings=len(expected),
                    unexpected_warnings=" | ".join(" ".join(m.split()) for m in unexpected),
                    seconds=time.perf_counter() - start,
+                   **error_model_columns(shafts, scene),
                    scene_json=json.dumps(dataclasses.asdict(scene), separators=(",", ":")))
         rows.append(row)
         flag = "  UNEXPECTED: " + row["unexpected_warnings"] if unexpected else ""
@@ -554,6 +629,68 @@ def pareto_plot(table, path):
     plt.close(figure)
 
 
+PRESET_AIMS = (("Draft", 0.05), ("Interactive", 0.02), ("Final", 0.005))
+FIXED_SETTINGS = ("Draft", "Interactive", "Final")
+
+
+def target_validation(rows):
+    """Per TargetError setting: the share of scenes meeting the target, the errors, the cost,
+    and the cheapest fixed preset that meets the same target on 90% of the scenes."""
+    table = []
+    for label in sorted({r["setting"] for r in rows if r["setting"].startswith("Target ")},
+                        key=lambda label: -float(label.split()[1].rstrip("%"))):
+        target = float(label.split()[1].rstrip("%")) / 100
+        sub = [r for r in rows if r["setting"] == label]
+        errors = [r["relative_rmse"] for r in sub]
+        fixed = []
+        for preset in FIXED_SETTINGS:
+            preset_rows = [r for r in rows if r["setting"] == preset]
+            if preset_rows and np.mean([r["relative_rmse"] <= target
+                                        for r in preset_rows]) >= 0.9:
+                fixed.append((percentile([r["time_ratio"] for r in preset_rows], 50), preset))
+        best = min(fixed) if fixed else None
+        table.append(dict(setting=label, target=target, n=len(sub),
+                          met=float(np.mean([e <= target for e in errors])),
+                          error_median=percentile(errors, 50), error_p90=percentile(errors, 90),
+                          predicted_median=percentile([r["predicted_error"] for r in sub], 50),
+                          ratio_median=percentile([r["time_ratio"] for r in sub], 50),
+                          best_fixed=best[1] if best else None,
+                          best_fixed_ratio=best[0] if best else float("nan")))
+    return table
+
+
+def validation_lines(rows):
+    lines = []
+    presets = [(name, aim, [r["relative_rmse"] for r in rows if r["setting"] == name])
+               for name, aim in PRESET_AIMS]
+    presets = [p for p in presets if p[2]]
+    if presets:
+        lines += ["## The presets against their aims", "",
+                  "| preset | aim (p90) | p90 error | scenes within the aim | met |",
+                  "|---|---:|---:|---:|---|"]
+        for name, aim, errors in presets:
+            p90 = percentile(errors, 90)
+            within = np.mean([e <= aim for e in errors])
+            lines.append(f"| {name} | {100 * aim:g}% | {100 * p90:.2f}% | {100 * within:.0f}% | "
+                         f"{'yes' if p90 <= aim else 'no'} |")
+        lines.append("")
+    targets = target_validation(rows)
+    if targets:
+        lines += ["## TargetError validation", "",
+                  "| target | scenes | achieved <= target | median error | p90 error | median "
+                  "prediction | median time ratio | cheapest preset meeting it on 90% | its "
+                  "median time ratio |", "|---|---:|---:|---:|---:|---:|---:|---|---:|"]
+        for t in targets:
+            best = (f"{t['best_fixed']} | {t['best_fixed_ratio']:.1f}" if t["best_fixed"]
+                    else "none | -")
+            lines.append(f"| {100 * t['target']:g}% | {t['n']} | {100 * t['met']:.0f}% | "
+                         f"{100 * t['error_median']:.2f}% | {100 * t['error_p90']:.2f}% | "
+                         f"{100 * t['predicted_median']:.2f}% | {t['ratio_median']:.1f} | "
+                         f"{best} |")
+        lines.append("")
+    return lines
+
+
 def write_markdown(path, rows, table, scenes_by_index, args, command, worst):
     lines = ["# Randomised scene benchmark", "",
              __doc__.split("\n\n")[2].replace("\n", " "), "",
@@ -578,7 +715,8 @@ def write_markdown(path, rows, table, scenes_by_index, args, command, worst):
         for t in summarise(hidden, [(t["setting"], None) for t in table]):
             lines.append(f"| {t['setting']} | {t['n']} | {100 * t['error_median']:.2f}% | "
                          f"{100 * t['error_p90']:.2f}% | {100 * t['error_max']:.2f}% |")
-    lines += ["", "## Worst scenes per setting", ""]
+    lines += [""] + validation_lines(rows)
+    lines += ["## Worst scenes per setting", ""]
     for t in table:
         sub = sorted((r for r in rows if r["setting"] == t["setting"]),
                      key=lambda r: -r["relative_rmse"])[:5]
@@ -621,14 +759,18 @@ def main():
                         help="redraw a scene with fewer lit pixels (above 1%% of the peak)")
     parser.add_argument("--max-attempts", type=int, default=20)
     parser.add_argument("--smoke", action="store_true")
+    parser.add_argument("--ladder", action="store_true",
+                        help="the error model's SLICES settings instead of the presets")
     args = parser.parse_args()
     settings = SETTINGS
     size = None
     if args.smoke:
         args.scenes, args.frames, size = 3, 2, (96, 72)
         settings = [s for s in SETTINGS if s[0] in SMOKE_SETTINGS]
+    if args.ladder:
+        settings = [LADDER[0], LADDER[-1]] if args.smoke else LADDER
     if args.settings:
-        settings = [s for s in SETTINGS if s[0] in args.settings]
+        settings = [s for s in settings if s[0] in args.settings]
     indices = [args.only_scene] if args.only_scene is not None else range(args.scenes)
     os.makedirs(os.path.join(args.output_dir, "images"), exist_ok=True)
     log = WarningLog()
@@ -642,8 +784,8 @@ def main():
             scene_rows, scene_pictures = run_scene(scene, settings, args.frames, log, keep)
             if scene_rows is not None:
                 break
-            print(f"scene {index}: attempt {attempt} has no lit pixel in view, drawn again",
-                  flush=True)
+            print(f"scene {index}: attempt {attempt} has no lit pixel in view (or no view), "
+                  "drawn again", flush=True)
         else:
             raise RuntimeError(f"scene {index}: no lit view in {args.max_attempts} attempts")
         rows += scene_rows
@@ -673,6 +815,7 @@ def main():
         print(f"{t['setting']:22s} n {t['n']:3d} error median {100 * t['error_median']:6.2f}% "
               f"p90 {100 * t['error_p90']:6.2f}%  ratio median {t['ratio_median']:6.2f} "
               f"p90 {t['ratio_p90']:6.2f}")
+    print("\n".join(validation_lines(rows)))
 
 
 if __name__ == "__main__":

@@ -19,7 +19,7 @@ import sys
 import time
 
 CORNERS = [
-    ("defaults (Interactive)", {}),
+    ("defaults (64 slices, jitter, blur 2)", {}),
     ("NumberOfSlices 4096", {"NumberOfSlices": 4096}),
     ("AutomaticSliceCount, MaximumNumberOfSlices 4096",
      {"AutomaticSliceCount": 1, "MaximumNumberOfSlices": 4096}),
@@ -36,14 +36,16 @@ CORNERS = [
     ("4096 slices, 8-bit, DownsampleFactor 4, BlurRadius 32",
      {"NumberOfSlices": 4096, "AccumulationPrecision": 2, "DownsampleFactor": 4,
       "BlurRadius": 32}),
-    ("Final preset, cookie, noise, window MultiSamples 8",
-     {"QualityToFinal": None, "NoiseAmplitude": 1.0, "cookie": True, "multisamples": 8}),
+    ("512 plain slices, 2048^2 map, cookie, noise, window MultiSamples 8",
+     {"NumberOfSlices": 512, "ShadowMapSize": 2048, "Jitter": 0, "BlurRadius": 0,
+      "NoiseAmplitude": 1.0, "cookie": True, "multisamples": 8}),
     ("point light, ShadowMapSize 16384 (faces 5461)", {"kind": "point", "ShadowMapSize": 16384}),
     ("point light, ShadowMapSize 16384, ShadowSurfaces",
      {"kind": "point", "ShadowMapSize": 16384, "ShadowSurfaces": 1}),
     ("directional light, ShadowMapSize 16384", {"kind": "directional", "ShadowMapSize": 16384}),
-    ("8 lights (4 spots, 4 points), Final preset, ShadowSurfaces",
-     {"kind": "eight", "QualityToFinal": None, "ShadowSurfaces": 1}),
+    ("8 lights (4 spots, 4 points), 512 plain slices, 2048^2 maps, ShadowSurfaces",
+     {"kind": "eight", "NumberOfSlices": 512, "ShadowMapSize": 2048, "Jitter": 0,
+      "BlurRadius": 0, "ShadowSurfaces": 1}),
 ]
 
 

@@ -20,6 +20,7 @@ VALUES = {
     "ShaftExposure": 7.5,
     "AttenuateScene": 0,
     "ShaftQuality": 3,
+    "ShaftTargetError": 0.02,
     "NumberOfSlices": 96,
     "ShadowMapSize": 512,
     "AutomaticSliceCount": 1,

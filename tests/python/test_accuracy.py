@@ -163,7 +163,7 @@ def test_no_scattering_gives_no_in_scatter():
 
 
 def test_default_quality_meets_its_bound():
-    # The defaults (the Interactive preset: 64 slices, jitter, blur 2) on the same scene.
+    # The defaults (64 slices, jitter, blur 2) on the same scene.
     renderer, window = rh.make_window(320, 240)
     info = scenes.sphere_and_floor(renderer)
     shafts = vtkLightShaftPass()

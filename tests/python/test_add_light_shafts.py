@@ -21,7 +21,9 @@ def test_one_line_renders_the_same_as_the_pass_set_up_by_hand():
     assert renderer.GetPass() is shafts
     assert shafts.GetLight() is info.light
     assert shafts.GetMethod() == vtkLightShaftPass.RAY_MARCH
-    assert shafts.GetNumberOfSlices() == 512  # the Final preset, applied before the keywords
+    # The Final preset (256 ray-march steps, no interleaving, 2048^2 map), applied before the
+    # keywords: they override its steps.
+    assert (shafts.GetInterleaveSize(), shafts.GetShadowMapSize()) == (1, 2048)
     assert shafts.GetScatteringCoefficient() == (0.05, 0.04, 0.03)
     assert (shafts.GetExposure(), shafts.GetNumberOfSteps(), shafts.GetJitter()) == (30, 64, 0)
     window.Render()

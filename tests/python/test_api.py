@@ -43,6 +43,8 @@ def test_defaults():
     assert p.GetBlurRadius() == 2
     assert p.GetDownsampleFactor() == 1
     assert p.GetAccumulationPrecision() == vtkLightShaftPass.ACCUMULATE_FLOAT32
+    assert p.GetTargetError() == 0.0
+    assert p.GetLastPredictedError() == -1.0 and p.GetLastErrorModelSetting() == -1
 
 
 @pytest.mark.parametrize("name,value", [
@@ -58,6 +60,7 @@ def test_defaults():
     ("BlurRadius", 5),
     ("DownsampleFactor", 4),
     ("AccumulationPrecision", vtkLightShaftPass.ACCUMULATE_8BIT),
+    ("TargetError", 0.02),
 ])
 def test_scalar_round_trip(name, value):
     p = vtkLightShaftPass()
@@ -110,6 +113,7 @@ def test_boolean_macros():
     ("BlurRadius", -2, 100, 0, 32),
     ("DownsampleFactor", 0, 100, 1, 4),
     ("AccumulationPrecision", -1, 7, 0, 2),
+    ("TargetError", -0.5, 3.0, 0.0, 1.0),
 ])
 def test_scalar_clamping(name, low, high, expect_low, expect_high):
     p = vtkLightShaftPass()
@@ -140,6 +144,7 @@ def test_vector_clamping(name):
     ("NoiseVelocity2", (0.0, -math.inf)),
     ("Time", (math.nan,)),
     ("Time", (math.inf,)),
+    ("TargetError", (math.nan,)),
 ])
 def test_non_finite_refused(messages, name, args):
     p = vtkLightShaftPass()
@@ -225,20 +230,38 @@ def test_named_precision_setters_and_booleans():
     assert not p.GetJitter() and not p.GetAutomaticSliceCount()
 
 
+def _table_presets():
+    """The presets the fitted table names: {"Draft": "S64 b0 d1 m1024", ...}."""
+    import os
+    import re
+    path = os.path.join(os.path.dirname(__file__), "..", "..", "plugin",
+                        "vtkLightShaftErrorModelTable.h")
+    return dict(re.findall(r"constexpr int (\w+)Setting = \d+; // (.+), aim", open(path).read()))
+
+
+def _setting_of(p):
+    """The ladder's name of the pass's parameters (tests/benchmarks/random_scenes.LADDER)."""
+    if p.GetMethod() == vtkLightShaftPass.RAY_MARCH:
+        return f"M{p.GetNumberOfSteps()} i{p.GetInterleaveSize()} m{p.GetShadowMapSize()}"
+    jitter = " j" if p.GetJitter() else ""
+    return (f"S{p.GetNumberOfSlices()}{jitter} b{p.GetBlurRadius()} d{p.GetDownsampleFactor()} "
+            f"m{p.GetShadowMapSize()}")
+
+
 def test_quality_presets():
+    # Each preset is the setting of the error model's ladder that the fit chose for it, with a
+    # fixed count and 32-bit float accumulation; the defaults are not a preset.
+    presets = _table_presets()
+    assert set(presets) == {"Draft", "Interactive", "Final"}
     p = vtkLightShaftPass()
-    defaults = (p.GetNumberOfSlices(), p.GetShadowMapSize(), p.GetJitter(), p.GetBlurRadius(),
-                p.GetDownsampleFactor(), p.GetAccumulationPrecision(), p.GetAutomaticSliceCount())
-    p.SetQualityToDraft()
-    assert (p.GetNumberOfSlices(), p.GetShadowMapSize(), bool(p.GetJitter()), p.GetBlurRadius(),
-            p.GetDownsampleFactor()) == (32, 512, True, 2, 2)
-    p.SetQualityToFinal()
-    assert (p.GetNumberOfSlices(), p.GetShadowMapSize(), bool(p.GetJitter()), p.GetBlurRadius(),
-            p.GetDownsampleFactor()) == (512, 2048, False, 0, 1)
-    p.SetQualityToInteractive()
-    assert (p.GetNumberOfSlices(), p.GetShadowMapSize(), p.GetJitter(), p.GetBlurRadius(),
-            p.GetDownsampleFactor(), p.GetAccumulationPrecision(),
-            p.GetAutomaticSliceCount()) == defaults
+    assert _setting_of(p) == "S64 j b2 d1 m1024"  # the defaults
+    for name in ("Final", "Draft", "Interactive"):
+        p.SetAutomaticSliceCount(True)
+        p.SetAccumulationPrecision(vtkLightShaftPass.ACCUMULATE_8BIT)
+        getattr(p, "SetQualityTo" + name)()
+        assert _setting_of(p) == presets[name], name
+        assert not p.GetAutomaticSliceCount()
+        assert p.GetAccumulationPrecision() == vtkLightShaftPass.ACCUMULATE_FLOAT32
 
 
 def test_reference_parameters(messages, vtk_messages):

@@ -159,15 +159,17 @@ def test_cookie_and_noise_against_the_pass():
     assert error < 0.05
 
 
-def test_shadow_map_visibility_separates_shadow_map_error():
-    # A coarse shadow map (16^2): the pass is far from the exact reference near the sphere's
-    # shadow (3.3% measured), close to the reference that uses its own shadow map (0.08%: the
-    # integration error, the same as with a 2048^2 map).
+@pytest.mark.parametrize("size", [16, 32, 64, 2048])
+def test_shadow_map_visibility_separates_shadow_map_error(size):
+    # The pass against the exact reference and against the reference that uses the pass's own
+    # shadow map: a coarse map (16^2) is far from the exact one near the sphere's shadow (3.3%
+    # measured), close to its own (0.08%: the integration error, the same for every size;
+    # README "The float64 reference in C++" quotes what this prints).
     renderer, window, info, shafts = scene(200, 150)
     shafts.SetNumberOfSlices(512)
     shafts.JitterOff()
     shafts.SetBlurRadius(0)
-    shafts.SetShadowMapSize(16)
+    shafts.SetShadowMapSize(size)
     window.Render()
     assert shafts.GetLastShadowMapRendered()
     measured = rh.in_scatter(shafts)
@@ -177,9 +179,12 @@ def test_shadow_map_visibility_separates_shadow_map_error():
     assert reference.GetVisibilityMode() == vtkLightShaftReference.SHADOW_MAP
     error_exact, _ = ref.relative_rms_error(measured, exact)
     error_same_map, _ = ref.relative_rms_error(measured, same_map)
-    assert error_exact > 0.02
-    assert error_same_map < 0.1 * error_exact
+    print(f"{size}^2 map: {error_exact:.3%} against the exact reference, {error_same_map:.3%} "
+          "against the one using the pass's map")
     assert error_same_map < 0.005
+    if size == 16:
+        assert error_exact > 0.02
+        assert error_same_map < 0.1 * error_exact
 
 
 def test_shadow_map_visibility_needs_a_shadow_map(messages, vtk_messages):

@@ -47,6 +47,10 @@ public:
   int BlurRadius = this->Shafts->GetBlurRadius();
   int DownsampleFactor = this->Shafts->GetDownsampleFactor();
   int AccumulationPrecision = this->Shafts->GetAccumulationPrecision();
+  // A preset may choose the method (the ray march's steps and interleaving) too.
+  int Method = this->Shafts->GetMethod();
+  int NumberOfSteps = this->Shafts->GetNumberOfSteps();
+  int InterleaveSize = this->Shafts->GetInterleaveSize();
 
   std::string CookieFileName;
   double ViewTime = 0.0;
@@ -370,7 +374,8 @@ void vtkPVLightShaftsView::SetShaftExposure(double exposure)
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetShaftMethod(int method)
 {
-  this->Impl->Shafts->SetMethod(method);
+  this->Impl->Method = method;
+  this->UpdateQuality();
 }
 
 //------------------------------------------------------------------------------
@@ -382,13 +387,15 @@ void vtkPVLightShaftsView::SetLatticeResolution(int resolution)
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetNumberOfSteps(int steps)
 {
-  this->Impl->Shafts->SetNumberOfSteps(steps);
+  this->Impl->NumberOfSteps = steps;
+  this->UpdateQuality();
 }
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetInterleaveSize(int size)
 {
-  this->Impl->Shafts->SetInterleaveSize(size);
+  this->Impl->InterleaveSize = size;
+  this->UpdateQuality();
 }
 
 //------------------------------------------------------------------------------
@@ -428,6 +435,12 @@ void vtkPVLightShaftsView::SetRadialGuardBand(double extent)
 }
 
 //------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetShaftTargetError(double error)
+{
+  this->Impl->Shafts->SetTargetError(error);
+}
+
+//------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetAttenuateScene(bool attenuate)
 {
   this->Impl->Shafts->SetAttenuateScene(attenuate);
@@ -446,6 +459,9 @@ void vtkPVLightShaftsView::UpdateQuality()
   shafts->SetBlurRadius(impl.BlurRadius);
   shafts->SetDownsampleFactor(impl.DownsampleFactor);
   shafts->SetAccumulationPrecision(impl.AccumulationPrecision);
+  shafts->SetMethod(impl.Method);
+  shafts->SetNumberOfSteps(impl.NumberOfSteps);
+  shafts->SetInterleaveSize(impl.InterleaveSize);
   switch (this->ShaftQuality)
   {
     case DRAFT:

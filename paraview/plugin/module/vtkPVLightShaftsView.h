@@ -121,12 +121,19 @@ public:
   void SetRadialGuardBand(double extent);
   ///@}
 
+  /**
+   * The target error (vtkLightShaftPass::SetTargetError; 0, the default, is off): when set
+   * the pass chooses its sampling each frame, over the preset and the sampling properties.
+   */
+  void SetShaftTargetError(double error);
+
   ///@{
   /**
    * Sampling: forwarded to vtkLightShaftPass, unless ShaftQuality is a preset (DRAFT,
    * INTERACTIVE, FINAL), which then decides slices, jitter, blur, downsampling and shadow-map
    * size (the values set here are kept and come back with CUSTOM). Default is CUSTOM with the
-   * pass's defaults (which are the Interactive preset).
+   * pass's defaults. A preset sets the method too (ShaftMethod, NumberOfSteps and
+   * InterleaveSize apply again with Custom).
    */
   void SetShaftQuality(int quality);
   vtkGetMacro(ShaftQuality, int);

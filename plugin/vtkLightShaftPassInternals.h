@@ -1,0 +1,82 @@
+/**
+ * @file   vtkLightShaftPassInternals.h
+ * @brief  What vtkLightShaftPass holds besides its parameters (private, not installed), shared
+ *         by its two source files: vtkLightShaftPass.cxx (parameters and the frame's recipe) and
+ *         vtkLightShaftPassReadouts.cxx (what the last frame did).
+ */
+#ifndef vtkLightShaftPassInternals_h
+#define vtkLightShaftPassInternals_h
+
+#include "vtkLightShaftPass.h"
+
+#include "vtkLightShaftComposite.h"     // For the composite
+#include "vtkLightShaftErrorModel.h"    // For the error model's features
+#include "vtkLightShaftFrame.h"         // For the frame
+#include "vtkLightShaftInScatter.h"     // For the in-scatter
+#include "vtkLightShaftLightTextures.h" // For the cookie and noise
+#include "vtkLightShaftLights.h"        // For the lights
+#include "vtkLightShaftSceneRenderer.h" // For the scene
+#include "vtkLightShaftSurfaceLight.h"  // For the surface light
+
+#include "vtkCallbackCommand.h"         // For the window's deletion
+#include "vtkNew.h"                     // For vtkNew
+#include "vtkOpenGLFramebufferObject.h" // For the read-back framebuffer
+#include "vtkOpenGLRenderWindow.h"      // For the window
+#include "vtkSmartPointer.h"            // For vtkSmartPointer
+#include "vtkWeakPointer.h"             // For vtkWeakPointer
+
+#include <string> // For the shader variants
+#include <vector> // For the lights
+
+/**
+ * Everything the pass holds besides its parameters: its components (each owning its GL
+ * objects, freed by ReleaseGraphicsResources), the lights, and what the last frame left for
+ * the read-outs.
+ */
+class vtkLightShaftPass::Internals
+{
+public:
+  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
+  vtkNew<vtkCallbackCommand> WindowDeleted;
+  unsigned long WindowDeletedTag = 0;
+  bool WarnedPointCookie = false;
+  int FrameCounter = 0;
+
+  // The components, in the order a frame uses them.
+  vtkLightShaftLights Lights;
+  vtkLightShaftSceneRenderer Scene;
+  vtkLightShaftLightTextures Textures;
+  vtkLightShaftInScatter InScatter;
+  vtkLightShaftSurfaceLight SurfaceLight;
+  vtkLightShaftComposite Composite;
+
+  // The last frame's L_in (full resolution) when InScatterValid, and what it did per light.
+  vtkTextureObject* FinalInScatter = nullptr;
+  bool InScatterValid = false;
+  std::vector<vtkLightShaftLightStatistics> LastLights;
+  std::string Variants; ///< GetLastShaderVariant's string
+  vtkSmartPointer<vtkOpenGLFramebufferObject> ReadFramebuffer;
+
+  void Track(vtkOpenGLRenderWindow* window);
+  void Untrack();
+  void ReleaseOwnResources(vtkWindow* w);
+
+  static vtkLightShaftParameters Snapshot(vtkLightShaftPass& self);
+  bool BeginFrame(vtkLightShaftPass& self, const vtkRenderState* s, vtkLightShaftFrame& frame);
+  void RenderShafts(vtkLightShaftFrame& frame,
+    vtkRenderPass* delegate,
+    const std::vector<vtkLight*>& lights,
+    bool shadowSurfaces);
+  static void ApplyErrorModel(vtkLightShaftFrame& frame,
+    const std::vector<vtkLightShaftGeometry::LightFrame>& lights);
+  void RenderLight(vtkLightShaftFrame& frame,
+    vtkRenderPass* delegate,
+    vtkLight* light,
+    vtkLightShaftGeometry::LightFrame&& lightFrame,
+    vtkTextureObject* cookie,
+    bool shadowSurfaces);
+  static void Publish(vtkLightShaftPass& self, const vtkLightShaftFrame& frame);
+  const vtkLightShaftLightStatistics* LastLight(int index) const;
+};
+
+#endif

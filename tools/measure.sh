@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Reproduces a measured figure of the README: runs one of the measurement scripts offscreen
+# (Xvfb) against the build in build/, writing into docs/ unless told otherwise.
+#
+#   tools/measure.sh accuracy          # slices vs the float64 reference (docs/accuracy.md)
+#   tools/measure.sh quality-controls  # each speed/error control (docs/quality-controls.md)
+#   tools/measure.sh benchmark         # every method's settings, three scenes (docs/benchmark.md)
+#   tools/measure.sh light-kinds       # per light kind and several lights (docs/light-kinds.md)
+#   tools/measure.sh worst-corners     # the slider corners (docs/robustness.md)
+#   tools/measure.sh random-scenes     # 50 random scenes: presets, methods, targets
+#                                      # (docs/random-scenes.md; about an hour on 2 cores)
+#   tools/measure.sh error-model       # the TargetError model's training run and fit
+#                                      # (docs/error-model.md, plugin/vtkLightShaftErrorModelTable.h)
+#   tools/measure.sh pytest TEST...    # a test, printing what it measured (-s)
+#
+# Extra arguments go to the script (e.g. tools/measure.sh random-scenes --scenes 5).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+if [ ! -f build/CMakeCache.txt ]; then
+  echo "build/ not found: run tools/quickstart.sh first" >&2
+  exit 2
+fi
+python_dir=$(sed -n 's/^LIGHTSHAFTS_PYTHON_DESTINATION:STRING=//p' build/CMakeCache.txt)
+export PYTHONPATH="$PWD/build/$python_dir${PYTHONPATH:+:$PYTHONPATH}"
+run() {
+  xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" /usr/bin/python3 "$@"
+}
+what=${1:-}
+shift || true
+case "$what" in
+  accuracy) run tests/measure_accuracy.py --output docs/accuracy.md "$@" ;;
+  quality-controls) run tests/benchmarks/quality_controls.py --output docs/quality-controls.md "$@" ;;
+  benchmark) run tests/benchmarks/benchmark.py --output-dir docs "$@" ;;
+  light-kinds) run tests/benchmarks/light_kinds.py --output-dir docs "$@" ;;
+  worst-corners) run tests/benchmarks/worst_corners.py "$@" ;;
+  random-scenes)
+    run tests/benchmarks/random_scenes.py --seed 0 --scenes 50 --max-height 720 --frames 1 \
+      --output-dir docs "$@" ;;
+  error-model)
+    # Training seeds 8 and 9 (the validation above is seed 0), then the fit and a rebuild.
+    training=$(mktemp -d)
+    mkdir -p "$training/8" "$training/9"
+    run tests/benchmarks/random_scenes.py --ladder --seed 8 --scenes 30 --max-height 720 \
+      --frames 0 --output-dir "$training/8" "$@"
+    run tests/benchmarks/random_scenes.py --ladder --seed 9 --scenes 25 --max-height 720 \
+      --frames 0 --output-dir "$training/9" "$@"
+    run tests/benchmarks/fit_error_model.py "$training/8/random-scenes.csv" \
+      "$training/9/random-scenes.csv"
+    cmake --build build > /dev/null ;;
+  pytest) run -m pytest -p no:cacheprovider -q -s "$@" ;;
+  *)
+    sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'
+    exit 2 ;;
+esac
