@@ -55,8 +55,8 @@ bool InView(const vtkLightShaftGeometry::LightFrame& light,
   return ahead && clip.w > 0.0 && std::abs(clip.x) <= clip.w && std::abs(clip.y) <= clip.w;
 }
 
-// The features as the fit's variables: log-scaled and clamped so that no geometry, however
-// extreme, takes the linear model far outside the range it was fitted on.
+// The features as the fit's variables (fit_error_model.variables computes the same): log-scaled,
+// clamped so that degenerate geometry (a zero width, an unbounded range) stays finite.
 std::array<double, vtkLightShaftErrorModelTable::NumberOfVariables> Variables(const Features& f)
 {
   auto logClamped = [](double x) { return std::log(std::clamp(x, 1e-3, 1e6)); };
