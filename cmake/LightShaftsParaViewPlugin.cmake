@@ -1,6 +1,8 @@
-# The ParaView plugin (paraview/), built as a separate CMake project: ParaView 5.11 brings its
-# own VTK (9.2-based), whose targets have the same names as Debian's VTK 9.1 that the VTK module
-# uses, so the two must never be found in one configure (nor loaded in one process).
+# The ParaView plugin (paraview/), built as a separate CMake project: ParaView may bring its own
+# VTK (Debian 12's ParaView 5.11: VTK 9.2-based; Debian 13's 5.13: VTK 9.3.20240617), whose
+# targets have the same names as the system VTK that the VTK module uses, so the two must never
+# be found in one configure (nor loaded in one process). (Debian unstable's ParaView 6.1 uses the
+# system VTK 9.6 itself.)
 #
 # LIGHTSHAFTS_BUILD_PARAVIEW_PLUGIN: AUTO (default) builds it when ParaView's CMake package is
 # found, ON requires it, OFF skips it. The plugin's build tree is <build>/paraview-plugin; the
@@ -12,18 +14,11 @@ set_property(CACHE LIGHTSHAFTS_BUILD_PARAVIEW_PLUGIN PROPERTY STRINGS AUTO ON OF
 set(LIGHTSHAFTS_PYTHON3_PARAVIEW_ROOT "/usr/local/lib/lightshafts/python3-paraview"
   CACHE PATH "Where python3-paraview is unpacked (dpkg -x; tools/quickstart.sh does it)")
 
+include("${CMAKE_CURRENT_LIST_DIR}/LightShaftsFindParaView.cmake")
 set(LIGHTSHAFTS_PARAVIEW_PLUGIN_BUILT FALSE)
 if (NOT LIGHTSHAFTS_BUILD_PARAVIEW_PLUGIN STREQUAL "OFF")
   # Only locate the package here (find_package(ParaView) would import ParaView's VTK targets).
-  find_path(LIGHTSHAFTS_PARAVIEW_DIR
-    NAMES paraview-config.cmake ParaViewConfig.cmake
-    HINTS "${ParaView_DIR}"
-    PATH_SUFFIXES
-      "lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/paraview-5.11"
-      "lib/cmake/paraview-5.11"
-      "lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/paraview-5.10"
-      "lib/cmake/paraview-5.10"
-    DOC "ParaView's CMake package directory (for the plugin)")
+  lightshafts_find_paraview_dir(LIGHTSHAFTS_PARAVIEW_DIR)
   if (LIGHTSHAFTS_PARAVIEW_DIR)
     message(STATUS "ParaView found (${LIGHTSHAFTS_PARAVIEW_DIR}): building the LightShafts "
       "ParaView plugin in ${CMAKE_BINARY_DIR}/paraview-plugin")

@@ -28,6 +28,7 @@ set(lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassRead
 set(lightshafts_private_headers
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftFrame.h"
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftErrorModelTable.h"
+  "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftOpenGL.h"
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassInternals.h")
 foreach (class IN LISTS lightshafts_private_classes)
   list(APPEND lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/${class}.cxx")

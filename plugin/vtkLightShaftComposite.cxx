@@ -3,6 +3,7 @@
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftShaders.h"
 
+#include "vtkLightShaftOpenGL.h"
 #include "vtkObject.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -10,7 +11,6 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include "vtkLightShaftCompositeFS.h"
 

@@ -1,5 +1,6 @@
 #include "vtkLightShaftFetchFloor.h"
 
+#include "vtkLightShaftOpenGL.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -9,7 +10,6 @@
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include "vtkLightShaftFetchFloorFS.h"
 

@@ -2,12 +2,12 @@
 
 #include "vtkLightShaftFrame.h"
 
+#include "vtkLightShaftOpenGL.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include "vtkLightShaftAddFS.h"
 #include "vtkLightShaftDepthDownsampleFS.h"

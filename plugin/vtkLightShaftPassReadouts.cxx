@@ -9,11 +9,11 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
+#include "vtkLightShaftOpenGL.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLState.h"
 #include "vtkPointData.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 
@@ -93,6 +93,7 @@ void vtkLightShaftPass::Internals::Publish(vtkLightShaftPass& self, const vtkLig
   self.LastNumberOfSceneRenders = stats.SceneRenders;
   self.LastMultiSamples = stats.MultiSamples;
   self.LastPlainScene = stats.PlainScene;
+  self.LastRendererFXAA = stats.RendererFXAA;
   self.LastSliceDepthRange[0] = stats.SliceDepthRange[0];
   self.LastSliceDepthRange[1] = stats.SliceDepthRange[1];
   self.LastRadialGuardBand = stats.RadialGuardBand;

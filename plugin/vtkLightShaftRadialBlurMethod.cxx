@@ -7,6 +7,7 @@
 #include "vtkLightShaftShadowMap.h"
 
 #include "vtkCamera.h"
+#include "vtkLightShaftOpenGL.h"
 #include "vtkMath.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -14,7 +15,6 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include "vtkLightShaftOcclusionFS.h"
 #include "vtkLightShaftRadialBlurFS.h"

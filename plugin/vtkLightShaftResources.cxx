@@ -2,13 +2,13 @@
 
 #include "vtkLightShaftShaders.h"
 
+#include "vtkLightShaftOpenGL.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>

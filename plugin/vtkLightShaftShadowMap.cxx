@@ -8,6 +8,7 @@
 #include "vtkCameraPass.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkLightShaftOpenGL.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObject.h"
 #include "vtkOpaquePass.h"
@@ -20,7 +21,6 @@
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
 #include "vtkVersionMacros.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 

@@ -3,13 +3,13 @@
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftShaders.h"
 
+#include "vtkLightShaftOpenGL.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 //------------------------------------------------------------------------------
 vtkLightShaftSlabDrawer::vtkLightShaftSlabDrawer() = default;

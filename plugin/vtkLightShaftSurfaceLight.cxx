@@ -4,13 +4,13 @@
 #include "vtkLightShaftSceneRenderer.h"
 #include "vtkLightShaftShaders.h"
 
+#include "vtkLightShaftOpenGL.h"
 #include "vtkObject.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include "vtkLightShaftSurfaceLightFS.h"
 

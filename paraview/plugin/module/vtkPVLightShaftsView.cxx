@@ -6,6 +6,7 @@
 #include "vtkImageReader2.h"
 #include "vtkImageReader2Factory.h"
 #include "vtkLight.h"
+#include "vtkLightShaftOpenGL.h"
 #include "vtkLightShaftPass.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
@@ -17,7 +18,6 @@
 #include "vtkTextureObject.h"
 #include "vtkToneMappingPass.h"
 #include "vtkWeakPointer.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <string>
