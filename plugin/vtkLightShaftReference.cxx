@@ -17,7 +17,6 @@
 #include "vtkPointData.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
-#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -317,18 +316,14 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
     closedForms.push_back(this->UseClosedForms && model.ClosedFormsHold());
   }
   std::atomic<vtkIdType> closedFormPixels(0);
-  vtkSMPThreadLocal<std::shared_ptr<vtkLightShaftReferenceScene::Tracer>> tracers;
+  vtkLightShaftReferenceScene::TracerPool tracers(scene);
   double* radianceOut = radiance->GetPointer(0);
   double* errorOut = errors->GetPointer(0);
   vtkSMPTools::For(0,
     vtkIdType(width) * height,
     [&](vtkIdType first, vtkIdType last)
     {
-      std::shared_ptr<vtkLightShaftReferenceScene::Tracer>& tracer = tracers.Local();
-      if (!tracer)
-      {
-        tracer = std::make_shared<vtkLightShaftReferenceScene::Tracer>(scene);
-      }
+      std::unique_ptr<vtkLightShaftReferenceScene::Tracer> tracer = tracers.Take();
       vtkIdType closedHere = 0;
       for (vtkIdType pixel = first; pixel < last; ++pixel)
       {
@@ -371,6 +366,7 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
         closedHere += closed ? 1 : 0;
       }
       closedFormPixels += closedHere;
+      tracers.Give(std::move(tracer));
     });
   this->LastClosedFormPixels = closedFormPixels;
   return 1;

@@ -180,6 +180,34 @@ vtkLightShaftReferenceScene::Tracer::Tracer(const vtkLightShaftReferenceScene& s
 vtkLightShaftReferenceScene::Tracer::~Tracer() = default;
 
 //------------------------------------------------------------------------------
+vtkLightShaftReferenceScene::TracerPool::TracerPool(const vtkLightShaftReferenceScene& scene)
+  : Scene(scene)
+{
+}
+
+vtkLightShaftReferenceScene::TracerPool::~TracerPool() = default;
+
+std::unique_ptr<vtkLightShaftReferenceScene::Tracer> vtkLightShaftReferenceScene::TracerPool::Take()
+{
+  {
+    std::lock_guard<std::mutex> lock(this->Mutex);
+    if (!this->Free.empty())
+    {
+      std::unique_ptr<Tracer> tracer = std::move(this->Free.back());
+      this->Free.pop_back();
+      return tracer;
+    }
+  }
+  return std::unique_ptr<Tracer>(new Tracer(this->Scene));
+}
+
+void vtkLightShaftReferenceScene::TracerPool::Give(std::unique_ptr<Tracer> tracer)
+{
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  this->Free.push_back(std::move(tracer));
+}
+
+//------------------------------------------------------------------------------
 bool vtkLightShaftReferenceScene::Tracer::FirstHit(const Vec& from, const Vec& to, double& nearest)
 {
   bool any = false;

@@ -11,6 +11,8 @@
 #include "vtkNew.h"                     // For the shadow map's copies
 #include "vtkSmartPointer.h"            // For the meshes and locators
 
+#include <memory> // For the pool's tracers
+#include <mutex>  // For the pool
 #include <vector> // For the occluders and locators
 
 class vtkGenericCell;
@@ -31,8 +33,8 @@ class vtkRenderer;
  * unobstructed; for a directional light, the segment from x back along the light's direction
  * to its plane (geometry before the plane casts nothing).
  *
- * Queries go through a Tracer, one per thread: VTK 9.1's vtkModifiedBSPTree keeps a scratch
- * cell per tree (shared trees gave non-deterministic results across threads).
+ * Queries go through a Tracer, one per thread (from a TracerPool): VTK 9.1's vtkModifiedBSPTree
+ * keeps a scratch cell per tree (shared trees gave non-deterministic results across threads).
  */
 class vtkLightShaftReferenceScene
 {
@@ -74,6 +76,26 @@ public:
     const vtkLightShaftReferenceScene& Scene;
     std::vector<vtkSmartPointer<vtkModifiedBSPTree>> Locators;
     vtkSmartPointer<vtkGenericCell> Cell;
+  };
+
+  /**
+   * Tracers for the threads of one vtkSMPTools::For: a chunk takes one (made when none is
+   * free) and gives it back, so that there are as many as chunks run at once and each is used
+   * by one thread at a time. (Not vtkSMPThreadLocal: GCC 14 warns, wrongly, about the
+   * std::vector<bool> its sequential backend resizes, -Wstringop-overflow.)
+   */
+  class TracerPool
+  {
+  public:
+    explicit TracerPool(const vtkLightShaftReferenceScene& scene);
+    ~TracerPool();
+    std::unique_ptr<Tracer> Take();
+    void Give(std::unique_ptr<Tracer> tracer);
+
+  private:
+    const vtkLightShaftReferenceScene& Scene;
+    std::mutex Mutex;
+    std::vector<std::unique_ptr<Tracer>> Free;
   };
 
 private:
