@@ -77,6 +77,7 @@ struct vtkLightShaftStatistics
   int RenderedProps = 0;
   int MultiSamples = 0;
   bool PlainScene = false;
+  bool RendererFXAA = false;
   double SliceDepthRange[2] = { 0.0, 0.0 }; ///< of the first light whose shafts were computed
   double RadialGuardBand = 0.0;
   std::vector<vtkLightShaftLightStatistics> Lights; ///< one per used light, in order

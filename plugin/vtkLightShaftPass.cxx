@@ -18,6 +18,7 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
+#include "vtkLightShaftOpenGL.h"
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
@@ -36,7 +37,6 @@
 #include "vtkTexture.h"
 #include "vtkTextureObject.h"
 #include "vtkWeakPointer.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <array>
@@ -76,6 +76,16 @@ vtkLightShaftPass::~vtkLightShaftPass()
 //------------------------------------------------------------------------------
 void vtkLightShaftPass::ReleaseGraphicsResources(vtkWindow* w)
 {
+  // VTK's passes require a window (vtkRenderPass asserts one, in a VTK built with assertions).
+  if (!w)
+  {
+    w = this->Impl->Window;
+    if (!w)
+    {
+      return;
+    }
+    w->MakeCurrent();
+  }
   this->Superclass::ReleaseGraphicsResources(w);
   this->Impl->ReleaseOwnResources(w);
 }
@@ -549,6 +559,7 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   const std::vector<vtkLight*> lights = impl.Lights.Choose(this, frame.Renderer);
   impl.Lights.KeepOnly(lights, frame.Window);
   const bool medium = frame.Medium.Scatters() || frame.Medium.Extinguishes();
+  impl.Scene.HoldOverlay(delegate);
   if (lights.empty() || !(medium || this->ShadowSurfaces) || frame.Size[0] < 1 || frame.Size[1] < 1)
   {
     impl.Scene.RenderUnchanged(frame, delegate); // nothing to add: the delegate's image
@@ -557,6 +568,7 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   {
     impl.RenderShafts(frame, delegate, lights, this->ShadowSurfaces);
   }
+  impl.Scene.FinishFrame(frame);
   Internals::Publish(*this, frame);
 }
 
@@ -670,8 +682,8 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   }
   ApplyErrorModel(frame, lightFrames);
 
-  // The scene, with the samples of the target it is composited into (the overlay step held
-  // back until the end: on top, unfogged); the cookie and noise decided once.
+  // The scene, with the samples of the target it is composited into; the cookie and noise
+  // decided once.
   frame.Scene.Samples = vtkLightShaftResources::TargetSamples();
   frame.Statistics.MultiSamples = frame.Scene.Samples;
   vtkTextureObject* cookie = this->Textures.ReadyCookie(frame.Window, frame.Owner);
@@ -679,7 +691,6 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   {
     frame.Noise = this->Textures.ReadyNoise(frame.Window, frame.Owner);
   }
-  vtkSmartPointer<vtkRenderPass> overlay = this->Scene.HoldOverlay(delegate);
   ostate->PushFramebufferBindings();
   this->Scene.Render(frame, delegate);
 
@@ -694,7 +705,6 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
       frame, delegate, lights[i], std::move(lightFrames[i]), cookie, shadowSurfaces);
   }
   frame.LightStatistics = nullptr;
-  this->Scene.RestoreOverlay();
   bool computed = false;
   vtkTextureObject* inScatter = this->InScatter.Finish(frame, computed);
   this->FinalInScatter = inScatter;
@@ -707,13 +717,6 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   ostate->vtkglEnable(GL_SCISSOR_TEST);
   ostate->vtkglScissor(origin[0], origin[1], frame.Size[0], frame.Size[1]);
   this->Composite.Render(frame, inScatter);
-
-  if (overlay)
-  {
-    // 2D overlays after compositing: on top, unfogged.
-    overlay->Render(frame.State);
-    frame.Statistics.RenderedProps += overlay->GetNumberOfRenderedProps();
-  }
 }
 
 //------------------------------------------------------------------------------

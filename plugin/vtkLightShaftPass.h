@@ -132,7 +132,9 @@ public:
 
   /**
    * Free every GL object the pass (and its internal passes) hold. Safe to call more than once
-   * and with any window; the pass rebuilds what it needs on the next Render().
+   * and with any window; the pass rebuilds what it needs on the next Render(). nullptr stands
+   * for the window the pass last rendered in (made current first), and does nothing when there
+   * is none: no GL object exists then.
    */
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
@@ -653,6 +655,10 @@ public:
   /// renders the props with its own shaders (a shadow-map baker, a value pass) or by their
   /// keys, or into a target without colour; the shafts come back on the next frame.
   vtkGetMacro(LastPlainScene, bool);
+  /// Whether the pass applied the renderer's FXAA (vtkRenderer::UseFXAA) to its picture, as
+  /// VTK's own render does with no pass: on, into a single-sampled target, and not a plain
+  /// render (an enclosing pass or a selector decides there).
+  vtkGetMacro(LastRendererFXAA, bool);
   /// The viewport's size in pixels.
   vtkGetVector2Macro(LastViewportSize, int);
   /// OpenGL errors raised while the frame rendered (the pass, its delegate and its internal
@@ -771,6 +777,7 @@ protected:
   int LastNumberOfSlabBatches = 0;
   int LastMultiSamples = 0;
   bool LastPlainScene = false;
+  bool LastRendererFXAA = false;
   double LastPredictedError = -1.0;
   int LastErrorModelSetting = -1;
   double LastDepthRangeInBeamWidths = 0.0;

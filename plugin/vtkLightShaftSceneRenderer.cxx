@@ -2,19 +2,26 @@
 
 #include "vtkLightShaftFrame.h"
 
+#include "vtkCameraPass.h"
+#include "vtkFXAAOptions.h"
+#include "vtkImageProcessingPass.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
+#include "vtkLightShaftOpenGL.h"
+#include "vtkOpenGLFXAAFilter.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
 #include "vtkProp.h"
+#include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
+#include "vtkSequencePass.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include "vtkLightShaftDepthResolveFS.h"
 
@@ -83,24 +90,95 @@ void vtkLightShaftSceneRenderer::RenderUnchanged(vtkLightShaftFrame& frame, vtkR
 }
 
 //------------------------------------------------------------------------------
-vtkRenderPass* vtkLightShaftSceneRenderer::HoldOverlay(vtkRenderPass* delegate)
+namespace
 {
-  this->OverlayOwner = vtkRenderStepsPass::SafeDownCast(delegate);
+// The first vtkRenderStepsPass in `pass`, through the passes that render the scene with a
+// delegate or a sequence.
+vtkRenderStepsPass* FindSceneSteps(vtkRenderPass* pass, int depth = 0)
+{
+  if (!pass || depth > 16)
+  {
+    return nullptr;
+  }
+  if (auto* steps = vtkRenderStepsPass::SafeDownCast(pass))
+  {
+    return steps;
+  }
+  if (auto* camera = vtkCameraPass::SafeDownCast(pass))
+  {
+    return FindSceneSteps(camera->GetDelegatePass(), depth + 1);
+  }
+  if (auto* processing = vtkImageProcessingPass::SafeDownCast(pass))
+  {
+    return FindSceneSteps(processing->GetDelegatePass(), depth + 1);
+  }
+  if (auto* sequence = vtkSequencePass::SafeDownCast(pass))
+  {
+    vtkRenderPassCollection* passes = sequence->GetPasses();
+    if (!passes)
+    {
+      return nullptr;
+    }
+    vtkCollectionSimpleIterator it;
+    passes->InitTraversal(it);
+    while (vtkRenderPass* item = passes->GetNextRenderPass(it))
+    {
+      if (vtkRenderStepsPass* steps = FindSceneSteps(item, depth + 1))
+      {
+        return steps;
+      }
+    }
+  }
+  return nullptr;
+}
+}
+
+void vtkLightShaftSceneRenderer::HoldOverlay(vtkRenderPass* delegate)
+{
+  this->OverlayOwner = FindSceneSteps(delegate);
   this->HeldOverlay = this->OverlayOwner ? this->OverlayOwner->GetOverlayPass() : nullptr;
   if (this->HeldOverlay)
   {
     this->OverlayOwner->SetOverlayPass(nullptr);
   }
-  return this->HeldOverlay;
 }
 
-void vtkLightShaftSceneRenderer::RestoreOverlay()
+void vtkLightShaftSceneRenderer::FinishFrame(vtkLightShaftFrame& frame)
 {
   if (this->HeldOverlay)
   {
     this->OverlayOwner->SetOverlayPass(this->HeldOverlay);
   }
+  auto* renderer = vtkOpenGLRenderer::SafeDownCast(frame.Renderer);
+  GLint samples = 0; // of the target: FXAA copies it into a texture, which needs one sample
+  glGetIntegerv(GL_SAMPLES, &samples);
+  if (renderer && renderer->GetUseFXAA() && samples <= 1)
+  {
+    if (!this->FXAA)
+    {
+      this->FXAA = vtkSmartPointer<vtkOpenGLFXAAFilter>::New();
+    }
+    if (vtkFXAAOptions* options = renderer->GetFXAAOptions())
+    {
+      this->FXAA->UpdateConfiguration(options);
+    }
+    this->FXAA->Execute(renderer);
+    frame.Statistics.RendererFXAA = true;
+  }
+  if (this->HeldOverlay)
+  {
+    // 2D overlays after compositing: on top, unfogged; in the renderer's viewport, as its
+    // steps would have drawn them (the pass's own draws changed it).
+    vtkOpenGLState* ostate = frame.Window->GetState();
+    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+    ostate->vtkglViewport(frame.Origin[0], frame.Origin[1], frame.Size[0], frame.Size[1]);
+    ostate->vtkglScissor(frame.Origin[0], frame.Origin[1], frame.Size[0], frame.Size[1]);
+    this->HeldOverlay->Render(frame.State);
+    frame.Statistics.RenderedProps += this->HeldOverlay->GetNumberOfRenderedProps();
+  }
   this->OverlayOwner = nullptr;
+  this->HeldOverlay = nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -206,6 +284,10 @@ vtkTextureObject* vtkLightShaftSceneRenderer::ResolveDepth(vtkLightShaftFrame& f
 void vtkLightShaftSceneRenderer::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->DefaultDelegate->ReleaseGraphicsResources(window);
+  if (this->FXAA)
+  {
+    this->FXAA->ReleaseGraphicsResources();
+  }
   for (auto* texture :
     { &this->Color, &this->ColorUnlit, &this->Depth, &this->DepthUnlit, &this->ResolvedDepth })
   {

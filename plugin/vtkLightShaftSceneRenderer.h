@@ -11,6 +11,7 @@
 #include "vtkSmartPointer.h"        // For the framebuffers held
 
 class vtkLight;
+class vtkOpenGLFXAAFilter;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkRenderPass;
@@ -27,8 +28,9 @@ struct vtkLightShaftFrame;
  *          and, for the surface light of a shadowed or cookie-shaped light, without that light;
  *          and the renders that must stay plain (selection, enclosing passes).
  *
- * The 2D overlay step of a vtkRenderStepsPass delegate is held back while the scene renders,
- * so that the pass can draw it after compositing (on top, unfogged).
+ * The 2D overlay step of the delegate's vtkRenderStepsPass is held back while the scene renders,
+ * so that the pass can draw it after compositing (on top, unfogged); the renderer's FXAA is
+ * applied before it, as VTK's own render does.
  */
 class vtkLightShaftSceneRenderer
 {
@@ -59,11 +61,18 @@ public:
   void RenderUnchanged(vtkLightShaftFrame& frame, vtkRenderPass* delegate);
 
   /**
-   * Take the overlay step out of `delegate` (a vtkRenderStepsPass) until RestoreOverlay;
-   * returns it (nullptr when the delegate has none).
+   * Take the overlay step out of the scene's steps until FinishFrame: of `delegate` when it is
+   * a vtkRenderStepsPass, else of the first one inside it (through camera, sequence and image
+   * processing passes: PyVista's chain, for one). Nothing when there is none.
    */
-  vtkRenderPass* HoldOverlay(vtkRenderPass* delegate);
-  void RestoreOverlay();
+  void HoldOverlay(vtkRenderPass* delegate);
+
+  /**
+   * What VTK's own render does after the geometry, on the picture the pass made: the
+   * renderer's FXAA (vtkRenderer::UseFXAA; a multisampled target is antialiased already), then
+   * the overlay step held back (on top, unfogged). The overlay is given back to its steps.
+   */
+  void FinishFrame(vtkLightShaftFrame& frame);
 
   /**
    * Render the scene into the frame's scene image (frame.Scene: colour, depth and the depth the
@@ -95,6 +104,7 @@ private:
   vtkNew<vtkRenderStepsPass> DefaultDelegate;
   vtkRenderStepsPass* OverlayOwner = nullptr;
   vtkSmartPointer<vtkRenderPass> HeldOverlay;
+  vtkSmartPointer<vtkOpenGLFXAAFilter> FXAA;
 
   vtkLightShaftResources::OwnedTexture Color;
   vtkLightShaftResources::OwnedTexture ColorUnlit;

@@ -8,7 +8,8 @@ from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkRenderingCore import (
     vtkColorTransferFunction, vtkRenderer, vtkTextActor, vtkVolume, vtkVolumeProperty)
-from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
+from vtkmodules.vtkRenderingOpenGL2 import (
+    vtkCameraPass, vtkRenderPassCollection, vtkRenderStepsPass, vtkSequencePass)
 from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLGPUVolumeRayCastMapper
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 import vtkmodules.vtkRenderingFreeType  # noqa: F401
@@ -183,7 +184,10 @@ def test_release_graphics_resources_is_idempotent():
     assert shafts.GetLastGLErrorCount() == 0
 
 
-def test_overlay_stays_on_top_unfogged():
+@pytest.mark.parametrize("delegate", ["default", "camera and sequence"])
+def test_overlay_stays_on_top_unfogged(delegate):
+    # "camera and sequence": the scene's steps inside a vtkCameraPass and a vtkSequencePass,
+    # as PyVista's chain has them.
     def text_pixels(with_pass):
         renderer, window = rh.make_window(200, 150)
         scenes.sphere_and_floor(renderer, sphere_resolution=32)
@@ -192,12 +196,14 @@ def test_overlay_stays_on_top_unfogged():
         text.GetTextProperty().SetFontSize(40)
         text.GetTextProperty().SetColor(1.0, 0.0, 0.0)
         text.SetPosition(50, 60)  # over the lit cone
-        renderer.AddActor2D(text)
+        renderer.AddViewProp(text)
         if with_pass:
             shafts = vtkLightShaftPass()
             shafts.SetScatteringCoefficient(0.2)
             shafts.AttenuateSceneOff()
             shafts.SetExposure(100.0)
+            if delegate != "default":
+                shafts.SetDelegatePass(camera_and_sequence())
             renderer.SetPass(shafts)
         window.Render()
         return rh.screenshot(window)
@@ -210,6 +216,50 @@ def test_overlay_stays_on_top_unfogged():
     assert np.all(fogged[pure_red] == [255, 0, 0])
     # ... while the shafts brightened the rest of the image.
     assert fogged[~pure_red].astype(int).sum() > plain[~pure_red].astype(int).sum()
+
+
+def camera_and_sequence():
+    """VTK's default steps inside a sequence inside a camera pass (PyVista's chain)."""
+    steps = vtkRenderStepsPass()
+    passes = vtkRenderPassCollection()
+    passes.AddItem(steps)
+    sequence = vtkSequencePass()
+    sequence.SetPasses(passes)
+    camera = vtkCameraPass()
+    camera.SetDelegatePass(sequence)
+    return camera
+
+
+@pytest.mark.parametrize("medium", [0.0, 0.05])
+def test_the_renderers_fxaa_applies_as_without_the_pass(medium):
+    # VTK's own render applies the renderer's FXAA after the geometry, before overlays; with a
+    # pass set it is the pass's to do (VTK's render steps ignore it).
+    def render(with_pass, fxaa, samples=0):
+        renderer, window = rh.make_window(200, 150)
+        window.SetMultiSamples(samples)
+        scenes.sphere_and_floor(renderer, sphere_resolution=16)
+        renderer.SetUseFXAA(fxaa)
+        shafts = None
+        if with_pass:
+            shafts = vtkLightShaftPass()
+            shafts.SetScatteringCoefficient(medium)
+            shafts.SetNumberOfSlices(64)
+            renderer.SetPass(shafts)
+        window.Render()
+        pixels = rh.screenshot(window)
+        window.SetMultiSamples(0)
+        return pixels, shafts
+
+    aliased, _ = render(True, False)
+    antialiased, shafts = render(True, True)
+    assert shafts.GetLastRendererFXAA() and shafts.GetLastGLErrorCount() == 0
+    changed = np.abs(antialiased.astype(int) - aliased).max(axis=-1) > 0
+    assert 0.001 < changed.mean() < 0.2  # the edges, not the whole picture
+    if medium == 0.0:
+        np.testing.assert_array_equal(antialiased, render(False, True)[0])
+    # A multisampled target is antialiased already: FXAA is not applied there.
+    _, shafts = render(True, True, samples=4)
+    assert not shafts.GetLastRendererFXAA() and shafts.GetLastGLErrorCount() == 0
 
 
 def test_user_render_steps_delegate_keeps_its_overlay():
