@@ -11,6 +11,7 @@
 #                                      # (docs/random-scenes.md; about an hour on 2 cores)
 #   tools/measure.sh error-model       # the TargetError model's training run and fit
 #                                      # (docs/error-model.md, plugin/vtkLightShaftErrorModelTable.h)
+#   tools/measure.sh reference-speed   # the float64 reference's time against the pass's frame
 #   tools/measure.sh pytest TEST...    # a test, printing what it measured (-s)
 #
 # Extra arguments go to the script (e.g. tools/measure.sh random-scenes --scenes 5).
@@ -47,8 +48,9 @@ case "$what" in
     run tests/benchmarks/fit_error_model.py "$training/8/random-scenes.csv" \
       "$training/9/random-scenes.csv"
     cmake --build build > /dev/null ;;
+  reference-speed) run tests/benchmarks/reference_speed.py "$@" ;;
   pytest) run -m pytest -p no:cacheprovider -q -s "$@" ;;
   *)
-    sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'
     exit 2 ;;
 esac

@@ -1,8 +1,6 @@
 """vtkLightShaftReference, the C++ float64 reference: against the independent numpy reference,
 its closed forms against its quadrature, known limits and scalings, and the pass against it."""
 
-import time
-
 import numpy as np
 import pytest
 
@@ -111,15 +109,14 @@ def test_scalings_and_zero_scattering():
     assert np.all(zero == 0.0)
 
 
-def test_the_pass_against_the_cpp_reference_and_its_speed():
+def test_the_pass_against_the_cpp_reference():
+    # (How long the reference takes is a benchmark figure, not a test: tools/measure.sh
+    # reference-speed.)
     renderer, window, info, shafts = scene(640, 480)
     shafts.SetNumberOfSlices(512)
     shafts.SetShadowMapSize(2048)
     window.Render()
-    start = time.time()
     values, errors, _ = cpp_reference(renderer, shafts)
-    seconds = time.time() - start
-    assert seconds < 60.0, f"640x480 reference took {seconds:.1f} s"
     assert errors.max() <= 1e-6 * values.max()
     error, _ = ref.relative_rms_error(rh.in_scatter(shafts), values)
     assert error < 0.01
