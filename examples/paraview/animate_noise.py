@@ -7,8 +7,10 @@ ParaView's animation time (LinkShaftTimeToAnimation), one PNG per frame.
 the plugin, else the build tree's or /usr/local's LightShafts.so is used.)
 """
 import argparse
+import ctypes
 import glob
 import os
+import sys
 
 from paraview.simple import (AddLight, CreateView, GetAnimationScene, GetTimeKeeper, LoadPlugin,
                              Plane, Render, SaveScreenshot, Show, Sphere)
@@ -65,4 +67,8 @@ for frame in range(args.frames):
     path = os.path.join(args.output_dir, f"frame_{frame:04d}.png")
     SaveScreenshot(path, view, ImageResolution=list(args.size))
     print(f"frame {frame}: time {GetTimeKeeper().Time:.3f} -> {path}", flush=True)
-os._exit(0)  # pvbatch 5.11 crashes in its own teardown after a script ends (README)
+# pvbatch 5.11 crashes in its own teardown after a script ends (README, Known issues): skip
+# it, with the output flushed (from ParaView 6.0 it goes through C stdio, which os._exit drops).
+sys.stdout.flush()
+ctypes.CDLL(None).fflush(None)
+os._exit(0)

@@ -81,6 +81,15 @@ def make_scene(view=None, occluder=True, **shaft_properties):
     return view, light, ball_display
 
 
+def process_ids(source):
+    """A filter giving `source` each point's process id, and that array's name. (ParaView 5.12
+    deprecated ProcessIdScalars, array "ProcessId", for ProcessIds, array "PointProcessIds".)"""
+    from paraview import simple
+    if hasattr(simple, "ProcessIds"):
+        return simple.ProcessIds(Input=source), "PointProcessIds"
+    return simple.ProcessIdScalars(Input=source), "ProcessId"
+
+
 def read_png(path):
     """A PNG as (height, width, 3) floats, row 0 at the top."""
     import numpy as np
@@ -138,8 +147,14 @@ def compare_images(actual, baseline, mean_tolerance, pixel_fraction, pixel_level
 
 
 def finish(status):
-    """End the pvbatch run with `status`. (pvbatch 5.11 segfaults in its teardown after
-    sys.exit() from a script, with a plain RenderView too; os._exit skips that teardown.)"""
+    """End the pvbatch run with `status`, skipping pvbatch's teardown: ParaView 5.11 segfaults
+    in it after sys.exit() from a script, and ParaView 6.1 (Debian's VTK 9.6) warns there that
+    its own composite mappers left textures active ("There are still active textures when there
+    should not be"), a plain RenderView too (README, Known issues). What the script printed is
+    flushed first: from 6.0 pvbatch's Python output goes through C stdio, which os._exit would
+    drop."""
+    import ctypes
     sys.stdout.flush()
     sys.stderr.flush()
+    ctypes.CDLL(None).fflush(None)
     os._exit(status)

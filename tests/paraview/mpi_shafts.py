@@ -25,10 +25,10 @@ def main():
     turned.Transform.Translate = list(scene.SPHERE_CENTER)
     turned.Transform.Rotate = [0.0, 0.0, 90.0]
     ball.Center = [0.0, 0.0, 0.0]
-    ids = simple.ProcessIdScalars(Input=turned)
+    ids, ids_array = scene.process_ids(turned)
     simple.Show(ids, view)
     simple.Render(view)
-    info = ids.GetDataInformation().GetPointDataInformation().GetArrayInformation("ProcessId")
+    info = ids.GetDataInformation().GetPointDataInformation().GetArrayInformation(ids_array)
     process_range = info.GetComponentRange(0) if info else (0.0, 0.0)
     processes = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
     images = {}

@@ -51,14 +51,21 @@ for distributed in (0, 1):
     image = np2[f"in_scatter_{distributed}"]
     below = [patch(image, np2[side]) for side in ("left", "right")]
     diff = np.abs(image - reference)
+    # The pixels off by more than 4 levels are on the sphere's silhouette, where IceT's
+    # composited depth differs from a serial render's (ParaView 5.13 and 6.1 more than 5.11:
+    # mean |diff| 0.065 against 0.031, in the same 0.13-0.14% of the pixels). Everywhere else
+    # the images must agree.
+    off = diff > 4
+    rest = float(diff[~off].mean())
     print(f"DistributedShadowMap {distributed}: below the sphere left {below[0]:.2f}, right "
           f"{below[1]:.2f} levels (serial {patch(reference, serial['left']):.2f}, "
           f"{patch(reference, serial['right']):.2f}); lit point {patch(image, np2['lit']):.2f} "
           f"(serial {patch(reference, serial['lit']):.2f}); against serial: mean |diff| "
-          f"{diff.mean():.3f}, {100 * (diff > 4).mean():.2f}% of pixels off by > 4 levels")
+          f"{diff.mean():.3f}, {100 * off.mean():.2f}% of pixels off by > 4 levels, mean "
+          f"|diff| of the others {rest:.4f}")
     if distributed == 0 and max(below) < 5.0:
         failures.append("without combining, no leak was seen (is the data split?)")
-    if distributed == 1 and (max(below) > 1.0 or diff.mean() > 0.06 or (diff > 4).mean() > 0.005):
+    if distributed == 1 and (max(below) > 1.0 or off.mean() > 0.005 or rest > 0.01):
         failures.append("with the combined shadow map the shafts differ from the serial run")
 for failure in failures:
     print("FAIL:", failure)
