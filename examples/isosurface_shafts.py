@@ -39,7 +39,7 @@ def main():
     title.SetInput(f"Wavelet isosurface {args.iso:g}")
     title.GetTextProperty().SetFontSize(22)
     title.SetPosition(12, 12)
-    renderer.AddActor2D(title)
+    renderer.AddViewProp(title)
 
     shafts = vtkLightShaftPass()
     shafts.SetScatteringCoefficient(0.04)

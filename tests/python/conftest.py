@@ -55,6 +55,29 @@ def vtk_messages():
     return VTK_OUTPUT
 
 
+def pytest_sessionstart(session):
+    # tools/test-headless.sh runs tests through VTK's run-time choice of window system (VTK 9.4
+    # and later): they must really render through the class it names.
+    expected = os.environ.get("LIGHTSHAFTS_EXPECTED_RENDER_WINDOW")
+    if expected:
+        import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+        from vtkmodules.vtkRenderingCore import vtkRenderWindow
+        actual = vtkRenderWindow().GetClassName()
+        if actual != expected:
+            pytest.exit(f"VTK renders through {actual}, not {expected} "
+                        f"(LIGHTSHAFTS_EXPECTED_RENDER_WINDOW)", returncode=1)
+
+
+def pytest_configure(config):
+    # A VTK (or Python) API our code calls that is deprecated fails the test: the next VTK
+    # removes it (VTK 9.5 deprecated vtkRenderer::AddActor2D, for one). Other packages' own
+    # deprecations (PyVista's, numpy's) are theirs.
+    config.addinivalue_line(
+        "filterwarnings",
+        r"error::DeprecationWarning:(test_|lightshafts|render_helpers|lightshaft_reference|"
+        r"vtk_output)")
+
+
 def pytest_addoption(parser):
     parser.addoption("--fuzz-frames", type=int, default=300,
                      help="frames the seeded fuzz test renders (default 300)")

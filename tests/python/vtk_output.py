@@ -39,7 +39,7 @@ class VTKOutputLog:
     def __init__(self):
         self.messages = []  # (kind, text)
         self.expected = []  # regular expressions
-        window = vtkOutputWindow.GetInstance()
+        self.windows = []   # the output windows observed
 
         @calldata_type(VTK_STRING)
         def on_error(_obj, _event, text):
@@ -50,10 +50,22 @@ class VTKOutputLog:
             self.messages.append(("warning", text))
 
         self._callbacks = (on_error, on_warning)
+        self.attach()
+
+    def attach(self):
+        """Observe VTK's current output window too. (`import pyvista` replaces it with a
+        vtkStringOutputWindow that sends VTK's messages to Python's logging: unobserved, every
+        later message would pass unseen.)"""
+        window = vtkOutputWindow.GetInstance()
+        if any(window is seen for seen in self.windows):
+            return
+        on_error, on_warning = self._callbacks
         window.AddObserver("ErrorEvent", on_error)
         window.AddObserver("WarningEvent", on_warning)
+        self.windows.append(window)
 
     def reset(self):
+        self.attach()
         self.messages.clear()
         self.expected.clear()
 
