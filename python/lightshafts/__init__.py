@@ -14,7 +14,7 @@ from .vtkLightShafts import (  # noqa: F401
     vtkLightShaftFetchFloor, vtkLightShaftPass, vtkLightShaftReference)
 
 __all__ = ["vtkLightShaftPass", "vtkLightShaftReference", "vtkLightShaftFetchFloor",
-           "add_light_shafts", "write_png", "show_or_save"]
+           "add_light_shafts", "configure", "write_png", "show_or_save"]
 
 _METHODS = {"slices": vtkLightShaftPass.SLICES, "ray-march": vtkLightShaftPass.RAY_MARCH,
             "radial-blur": vtkLightShaftPass.RADIAL_BLUR, "analytic": vtkLightShaftPass.ANALYTIC,
@@ -33,9 +33,22 @@ def add_light_shafts(renderer, light=None, quality=None, method=None, **params):
     vtkLightShaftPass constant). Every other keyword is a parameter: Name=value calls
     SetName(value), a tuple or list is passed as separate arguments (ScatteringCoefficient=(r, g,
     b)), a bool switches NameOn()/NameOff(). A pass the renderer already had becomes the
-    delegate, so the scene renders as before, with shafts.
+    delegate, so the scene renders as before, with shafts. (PyVista plotters:
+    lightshafts.pyvista.enable_light_shafts, which keeps PyVista's own passes working.)
     """
     shafts = vtkLightShaftPass()
+    configure(shafts, renderer, light=light, quality=quality, method=method, **params)
+    previous = renderer.GetPass()
+    if previous is not None:
+        shafts.SetDelegatePass(previous)
+    renderer.SetPass(shafts)
+    return shafts
+
+
+def configure(shafts, renderer, light=None, quality=None, method=None, **params):
+    """Set up `shafts` (a vtkLightShaftPass) as add_light_shafts describes: the quality preset
+    first, then the method, the parameters, and the light (added to `renderer` when it is not
+    there yet). Returns `shafts`."""
     if quality is not None:
         if str(quality).lower() not in _QUALITIES:
             raise ValueError(f"quality must be one of {_QUALITIES}, not {quality!r}")
@@ -61,10 +74,6 @@ def add_light_shafts(renderer, light=None, quality=None, method=None, **params):
         if not any(lights.GetItemAsObject(i) is light for i in range(lights.GetNumberOfItems())):
             renderer.AddLight(light)
         shafts.SetLight(light)
-    previous = renderer.GetPass()
-    if previous is not None:
-        shafts.SetDelegatePass(previous)
-    renderer.SetPass(shafts)
     return shafts
 
 
