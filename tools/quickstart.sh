@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# LightShafts quick start for a fresh Debian 12 machine:
-#   1. installs every dependency with apt (needs root: run as root, or it uses sudo),
+# LightShafts quick start for a fresh Debian machine: Debian 12 (bookworm: VTK 9.1, ParaView
+# 5.11), Debian 13 (trixie: VTK 9.3, ParaView 5.13, PyVista 0.44) or Debian unstable (sid: VTK
+# 9.6, ParaView 6.1, PyVista 0.49). It
+#   1. installs every dependency of this release with apt (needs root: run as root, or it uses
+#      sudo),
 #   2. configures, builds and installs LightShafts to /usr/local (C++ package + Python module,
-#      and the ParaView plugin in /usr/local/lib/paraview-5.11/plugins/LightShafts),
+#      and the ParaView plugin in /usr/local/lib/paraview-X.Y/plugins/LightShafts),
 #   3. builds the C++ example against the installed package, and
 #   4. renders the example scene offscreen (Xvfb) to window_shafts.png.
 set -euo pipefail
@@ -12,40 +15,68 @@ as_root() {
   if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi
 }
 
+# shellcheck disable=SC1091 # (Debian's own file)
+release=$(. /etc/os-release && echo "${PRETTY_NAME:-unknown} (${VERSION_CODENAME:-?})")
+echo "== $release"
+
 packages=(
   build-essential cmake pkg-config
   libvtk9-dev python3-vtk9 libglm-dev
-  xvfb xauth libgl1-mesa-dri
+  xvfb xauth libgl1-mesa-dri libegl1 libegl-mesa0
   python3-numpy python3-pytest python3-tqdm python3-matplotlib python3-skimage
 )
-# ParaView for the plugin, without its Recommends: one of them, python3-paraview, Conflicts with
-# python3-vtk9 (installing it would remove the VTK module's dependencies); see below.
+# ParaView for the plugin, without its Recommends (one of them, python3-paraview, may conflict
+# with python3-vtk9; see below).
 paraview_packages=(paraview paraview-dev openmpi-bin)
-missing_packages() {
-  for p in "$@"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || echo "$p"
-  done
+# apt_get: as root, non-interactive, waiting for another apt run rather than failing.
+apt_get() {
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 "$@"
 }
+installed() {
+  dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"
+}
+missing_packages() {
+  for p in "$@"; do installed "$p" || echo "$p"; done
+}
+# What this release's apt offers, by name (no release is named below: each differs in what it
+# has, and that is what is asked).
+apt_has() {
+  [ -n "$(apt-cache show --no-all-versions "$1" 2>/dev/null | head -1)" ]
+}
+apt_field() {
+  apt-cache show --no-all-versions "$1" 2>/dev/null | sed -n "s/^$2: //p" | head -1
+}
+if ! apt_has libvtk9-dev; then
+  echo "== apt-get update (apt has no package lists yet)"
+  apt_get update -qq
+fi
+# PyVista (Debian 13 and later): the lightshafts.pyvista entry point and its tests.
+apt_has python3-pyvista && packages+=(python3-pyvista)
+# ParaView's Python package (pvbatch scripts, the plugin's wrapping hierarchy): python3-paraview.
+# Up to ParaView 5.13 (Debian 12, 13) it Conflicts with python3-vtk9 (apt would remove the VTK
+# module's dependencies): then its .deb is unpacked privately instead of installed. From 6.1
+# (unstable) ParaView is built on the system's VTK and the package installs beside it.
+if apt_field python3-paraview Conflicts | grep -qw python3-vtk9; then
+  unpack_python3_paraview=1
+else
+  unpack_python3_paraview=0
+  paraview_packages+=(python3-paraview)
+fi
 missing=($(missing_packages "${packages[@]}"))
 missing_paraview=($(missing_packages "${paraview_packages[@]}"))
 if [ $((${#missing[@]} + ${#missing_paraview[@]})) -gt 0 ]; then
   echo "== installing: ${missing[*]} ${missing_paraview[*]}"
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  apt_get update -qq
 fi
 if [ ${#missing[@]} -gt 0 ]; then
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
-    "${missing[@]}" > /dev/null
+  apt_get install -y -qq "${missing[@]}" > /dev/null
 fi
 if [ ${#missing_paraview[@]} -gt 0 ]; then
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
-    "${missing_paraview[@]}" > /dev/null
+  apt_get install -y -qq --no-install-recommends "${missing_paraview[@]}" > /dev/null
 fi
 
-# ParaView's Python package (pvbatch scripts, the plugin's wrapping hierarchy) is in
-# python3-paraview, which Conflicts with python3-vtk9 (apt would remove the VTK module's
-# dependencies): fetch that .deb and unpack it privately instead of installing it.
 pv_python=/usr/local/lib/lightshafts/python3-paraview
-if [ ! -d "$pv_python/usr/lib/python3/dist-packages/paraview" ]; then
+if [ "$unpack_python3_paraview" = 1 ] && [ ! -d "$pv_python/usr/lib/python3/dist-packages/paraview" ]; then
   version=$(apt-cache madison python3-paraview | awk 'NR==1 {print $3}')
   echo "== unpacking python3-paraview $version into $pv_python (not installed: it conflicts with python3-vtk9)"
   tmp=$(mktemp -d)
@@ -57,9 +88,14 @@ if [ ! -d "$pv_python/usr/lib/python3/dist-packages/paraview" ]; then
 fi
 
 jobs=$(nproc 2>/dev/null || echo 2)
-echo "== building (build/)"
+echo "== building (build/; log: build.log)"
+# The build's output goes to build.log; when a step fails, show its end.
+trap 'status=$?; [ $status -eq 0 ] || { tail -40 build.log >&2; echo "== failed (build.log)" >&2; }' EXIT
 # Debian's VTK Python bindings are for /usr/bin/python3 (another python3 may come first on PATH).
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 > build.log
+# ParaView was installed above: its plugin must be built (ON: a ParaView that is not found is an
+# error, not a silent skip).
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 \
+  -DLIGHTSHAFTS_BUILD_PARAVIEW_PLUGIN=ON > build.log
 cmake --build build -j "$jobs" >> build.log
 echo "== installing to /usr/local"
 as_root cmake --install build >> build.log
