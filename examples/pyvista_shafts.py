@@ -3,7 +3,7 @@
 coloured by height, with PyVista's own SSAO and FXAA, and its scalar bar on top.
 
     /usr/bin/python3 examples/pyvista_shafts.py                 # writes pyvista_shafts.png
-    /usr/bin/python3 examples/pyvista_shafts.py -o out.png --size 1280 720 --quality final
+    /usr/bin/python3 examples/pyvista_shafts.py -o out.png --size 1280 720 --quality draft
     /usr/bin/python3 examples/pyvista_shafts.py --interactive   # needs a display
 
 Needs PyVista (Debian 13 and later: apt install python3-pyvista). Offscreen rendering needs an
@@ -35,7 +35,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("-o", "--output", default="pyvista_shafts.png")
     parser.add_argument("--size", type=int, nargs=2, default=(960, 540))
-    parser.add_argument("--quality", default="interactive",
+    parser.add_argument("--quality", default="final",
                         choices=("draft", "interactive", "final"))
     parser.add_argument("--interactive", action="store_true")
     args = parser.parse_args()
@@ -55,22 +55,21 @@ def main():
 
     # The light: a spotlight high behind the colonnade, shining through it towards the viewer;
     # a dim fill so that what the spot misses is not black.
-    spot = pv.Light(position=(-12.0, 12.0, -6.0), focal_point=(2.0, 0.0, 1.5),
-                    light_type="scene light", positional=True, cone_angle=28.0,
+    spot = pv.Light(position=(-4.0, 9.0, -12.0), focal_point=(1.5, 0.0, 3.0),
+                    light_type="scene light", positional=True, cone_angle=30.0,
                     intensity=1.0, color=(1.0, 0.93, 0.8))
     plotter.add_light(spot)
     plotter.add_light(pv.Light(position=(4, 8, 10), light_type="scene light", intensity=0.25))
 
-    # PyVista's passes and the shafts, in any order. The surfaces in the spot's light get its
-    # shadows from the shafts' shadow map (ShadowSurfaces).
-    plotter.enable_ssao(radius=0.6, kernel_size=64)
+    # PyVista's passes and the shafts, in any order.
+    plotter.enable_ssao(radius=0.6, bias=0.05, kernel_size=64)
     plotter.enable_anti_aliasing("fxaa")
     enable_light_shafts(plotter, light=spot, quality=args.quality,
-                        ScatteringCoefficient=(0.03, 0.028, 0.026),
+                        ScatteringCoefficient=(0.04, 0.037, 0.034),
                         AbsorptionCoefficient=0.004, PhaseFunction=1, Anisotropy=0.35,
-                        Exposure=12.0, ShadowSurfaces=True)
-    plotter.camera.position = (6.0, 7.0, 17.0)
-    plotter.camera.focal_point = (0.0, 1.8, 0.0)
+                        Exposure=10.0)
+    plotter.camera.position = (5.0, 5.5, 16.0)
+    plotter.camera.focal_point = (0.0, 2.2, 0.0)
     plotter.camera.up = (0.0, 1.0, 0.0)
     plotter.camera.view_angle = 42.0
 

@@ -52,9 +52,11 @@ say() { echo "== [vtk-$backend $(($(date +%s) - start)) s] $*"; }
 as_root() {
   if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi
 }
-# apt-get as root, non-interactive, waiting for another apt run to finish rather than failing.
+# apt-get as root, non-interactive, waiting for another apt run to finish rather than failing
+# (dpkg's lock, and the project's own: tools/quickstart.sh and tools/test-distros.sh take it).
 apt_get() {
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 "$@"
+  as_root flock /var/lock/lightshafts-apt.lock \
+    env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 "$@"
 }
 
 # --- 1. packages -------------------------------------------------------------------------------

@@ -16,7 +16,7 @@ as_root() {
 }
 
 # shellcheck disable=SC1091 # (Debian's own file)
-release=$(. /etc/os-release && echo "${PRETTY_NAME:-unknown} (${VERSION_CODENAME:-?})")
+release=$(. /etc/os-release && echo "${PRETTY_NAME:-unknown}")
 echo "== $release"
 
 packages=(
@@ -28,9 +28,11 @@ packages=(
 # ParaView for the plugin, without its Recommends (one of them, python3-paraview, may conflict
 # with python3-vtk9; see below).
 paraview_packages=(paraview paraview-dev openmpi-bin)
-# apt_get: as root, non-interactive, waiting for another apt run rather than failing.
+# apt_get: as root, non-interactive, waiting for another apt run rather than failing (dpkg's
+# lock; and the project's own, which its scripts that may run beside this one take too).
 apt_get() {
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 "$@"
+  as_root flock /var/lock/lightshafts-apt.lock \
+    env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 "$@"
 }
 installed() {
   dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"

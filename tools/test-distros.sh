@@ -39,9 +39,12 @@ if [ "$(id -u)" -ne 0 ]; then
   exit 2
 fi
 if ! command -v debootstrap > /dev/null; then
+  # (The project's apt lock: tools/quickstart.sh may be installing beside this, as in CI.)
   echo "== apt-get install debootstrap"
-  DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq \
-    debootstrap > /dev/null
+  flock /var/lock/lightshafts-apt.lock sh -c 'export DEBIAN_FRONTEND=noninteractive
+    apt-get -o DPkg::Lock::Timeout=600 install -y -qq debootstrap > /dev/null 2>&1 ||
+    { apt-get -o DPkg::Lock::Timeout=600 update -qq &&
+      apt-get -o DPkg::Lock::Timeout=600 install -y -qq debootstrap > /dev/null; }'
 fi
 mkdir -p "$distros_root"
 

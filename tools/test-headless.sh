@@ -8,7 +8,8 @@
 #     DISPLAY unset: the pass's C++ tests built against the system VTK in
 #     build-headless-<backend>/ and run by ctest, then the Python tests that render through
 #     windows (the pass's rendering and API, PyVista, the examples) with the quick start's
-#     build/. Both fail unless VTK rendered through that backend's class.
+#     build/, and ParaView's render test when the plugin was built (ParaView 6.1 on the system's
+#     VTK). All fail unless VTK rendered through that backend's class.
 #   built VTK (Debian 12's VTK 9.1, which fixes its window system when it is built: one VTK per
 #     backend): tools/build-headless-vtk.sh builds (or reuses) VTK 9.1 for the backend, then
 #     the pass's C++ library and tests against it in build-headless-<backend>/, run by ctest
@@ -169,6 +170,22 @@ run_runtime_backend() {
     return 1
   fi
   tail -1 "$build/pytest.log" | sed "s/^/   [$backend] pytest: /"
+
+  # ParaView on the system's VTK (Debian unstable's 6.1) takes the same route: the plugin's
+  # render test through the backend's class.
+  local listing=$PWD/build/paraview-plugin/LightShaftsPluginPath.txt
+  if command -v pvbatch > /dev/null && [ -f "$listing" ]; then
+    echo "== [$backend] ParaView's render test through $window, DISPLAY unset"
+    if ! env "VTK_DEFAULT_OPENGL_WINDOW=$window" "LIGHTSHAFTS_EXPECTED_RENDER_WINDOW=$window" \
+      "LIGHTSHAFTS_PARAVIEW_PLUGIN_LIST=$listing" \
+      pvbatch tests/paraview/test_render.py "$build/paraview" > "$build/paraview.log" 2>&1 ||
+      grep -qE "FAIL:|ERROR: In |Warning: In |Generic Warning|ERR\||WARN\|" "$build/paraview.log"; then
+      cat "$build/paraview.log" >&2
+      echo "ParaView's render test failed ($build/paraview.log)" >&2
+      return 1
+    fi
+    grep -E "^(baseline|in-scatter|shafts off)" "$build/paraview.log" | sed "s/^/   [$backend] ParaView: /"
+  fi
 }
 
 # The built-VTK route for one backend (Debian 12's VTK 9.1).

@@ -41,12 +41,32 @@ def load_plugin():
     simple.LoadPlugin(plugin_path(), remote=False, ns=globals())
 
 
+def window_class(view):
+    """The class of the window ParaView renders through. (From ParaView 6.0 a view draws into an
+    offscreen window sharing the context of the process's window, whose class is the one VTK
+    chose: X, EGL or OSMesa.)"""
+    try:
+        from paraview.modules.vtkRemotingViews import vtkPVProcessWindow
+        window = vtkPVProcessWindow.GetRenderWindow()
+        if window is not None:
+            return window.GetClassName()
+    except ImportError:  # (before ParaView 6.0)
+        pass
+    return view.GetRenderWindow().GetClassName()
+
+
 def make_scene(view=None, occluder=True, **shaft_properties):
     """The test scene in a LightShaftsRenderView (created when `view` is None). Returns
     (view, light, sphere display)."""
     from paraview import simple
     if view is None:
         view = simple.CreateView("LightShaftsRenderView")
+    expected = os.environ.get("LIGHTSHAFTS_EXPECTED_RENDER_WINDOW")
+    if expected and window_class(view) != expected:
+        # (tools/test-headless.sh: ParaView must render through the window class it names.)
+        print(f"FAIL: ParaView renders through {window_class(view)}, not {expected} "
+              f"(LIGHTSHAFTS_EXPECTED_RENDER_WINDOW)")
+        finish(1)
     view.ViewSize = [WIDTH, HEIGHT]
     view.OrientationAxesVisibility = 0
     view.UseColorPaletteForBackground = 0
