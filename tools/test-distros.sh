@@ -135,23 +135,23 @@ test_release() {
   local versions ctest pytest headless
   versions=$(chroot "$root" dpkg-query -W -f='${Package} ${Version}\n' libvtk9-dev paraview \
     python3-pyvista python3 2> /dev/null | awk '
-      { sub(/[+~-].*/, "", $2) }
-      $1 == "libvtk9-dev" { v = v "VTK " $2 ", " }
-      $1 == "paraview" { v = v "ParaView " $2 ", " }
-      $1 == "python3-pyvista" { v = v "PyVista " $2 ", " }
-      $1 == "python3" { v = v "Python " $2 }
-      END { print v }')
+      { sub(/[+~-].*/, "", $2); v[$1] = $2 }
+      END {
+        printf "VTK %s, ParaView %s, PyVista %s, Python %s", v["libvtk9-dev"], v["paraview"],
+          ("python3-pyvista" in v) ? v["python3-pyvista"] : "none", v["python3"]
+      }')
   ctest=$(grep -E "^[0-9]+% tests passed" "$log" | head -1 |
-    sed -E 's/([0-9]+)% tests passed, ([0-9]+) tests failed out of ([0-9]+)/ctest \2 failed of \3/')
-  pytest=$(grep -E "^[0-9]+ (passed|failed)|^=* ?[0-9]+ (passed|failed)" "$log" | tail -1 |
-    sed -E 's/^=+ //; s/ in [0-9.]+s.*//; s/=+$//')
+    sed -E 's/[0-9]+% tests passed, ([0-9]+) tests failed out of ([0-9]+)/ctest \1 failed of \2/')
+  pytest=$(grep -E "^=* ?[0-9]+ (passed|failed).* in [0-9.]+s" "$log" | head -1 |
+    sed -E 's/^=+ //; s/ in [0-9.]+s.*//')
   headless=$(sed -n '/== headless backends/,$p' "$log" | grep -E '^(egl|osmesa):' |
+    sed -E 's/ \(runtime, [0-9]+ s\)//; s/: this system.s Mesa has no OSMesa.*/ (no OSMesa in Mesa)/' |
     tr '\n' ';' | sed 's/;$//; s/;/; /g')
-  [ -n "$headless" ] || headless=$(grep -m1 "no headless route" "$log" | sed 's/^== headless: //;
-    s/ (README.*//')
+  [ -n "$headless" ] || headless=$(grep -q "no headless route" "$log" &&
+    echo "no route (VTK ${versions#VTK }: its build is X only)" | sed -E 's/, .*:/:/')
   local verdict=passed
   [ "$status" -eq 0 ] || verdict=FAILED
-  echo "$release (${versions% }): $verdict in $((($(date +%s) - start) / 60)) min:" \
+  echo "$release ($versions): $verdict in $((($(date +%s) - start) / 60)) min:" \
     "${ctest:-ctest did not run}; pytest ${pytest:-did not run}; headless: ${headless:-none}" \
     "[$steps] ($log)"
   return "$status"

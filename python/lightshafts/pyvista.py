@@ -105,7 +105,7 @@ def enable_light_shafts(plotter, light=None, quality=None, method=None, **params
     chain = renderer._render_passes
     if hasattr(chain, "_check_closed"):
         chain._check_closed()  # (PyVista 0.49: a closed plotter's renderer raises)
-    if isinstance(light, pyvista.Light) and light not in renderer.lights:
+    if isinstance(light, pyvista.Light) and not any(other is light for other in renderer.lights):
         renderer.add_light(light)  # (PyVista keeps its own list of the renderer's lights)
     shafts = get_light_shafts(renderer)
     added = shafts is None

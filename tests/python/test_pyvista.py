@@ -190,6 +190,20 @@ def test_a_vtk_light_and_no_light_at_all():
     plotter.close()
 
 
+def test_a_pyvista_light_not_yet_added_is_added_once():
+    plotter, spot = make_plotter()
+    plotter.remove_all_lights()
+    plain = shot(plotter)
+    new_spot = pv.Light(position=LIGHT_POSITION, focal_point=(0, 0, 0), positional=True,
+                        cone_angle=20.0, light_type="scene light")
+    enable_light_shafts(plotter, light=new_spot, **SHAFTS)
+    enable_light_shafts(plotter, light=new_spot)
+    assert [light for light in plotter.renderer.lights if light is new_spot] == [new_spot]
+    assert len(plotter.renderer.lights) == 1
+    assert_shafts(plotter, shot(plotter), plain)
+    plotter.close()
+
+
 def test_bad_arguments_are_refused():
     plotter, spot = make_plotter()
     with pytest.raises(TypeError, match="pyvista.Plotter"):
