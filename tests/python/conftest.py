@@ -69,9 +69,13 @@ def pytest_sessionstart(session):
 
 
 def pytest_configure(config):
-    # A VTK (or Python) API our code calls that is deprecated fails the test: the next VTK
-    # removes it (VTK 9.5 deprecated vtkRenderer::AddActor2D, for one). Other packages' own
-    # deprecations (PyVista's, numpy's) are theirs.
+    # A Python warning fails the test, as VTK's output does: a test that expects one says so
+    # (pytest.warns). Deprecations are the exception: a VTK (or Python) API our code calls that
+    # is deprecated fails the test, since the next VTK removes it (VTK 9.5 deprecated
+    # vtkRenderer::AddActor2D, for one); other packages' own (PyVista's, numpy's) are theirs.
+    # (The last matching filter wins.)
+    for line in ("error", "default::DeprecationWarning", "default::PendingDeprecationWarning"):
+        config.addinivalue_line("filterwarnings", line)
     config.addinivalue_line(
         "filterwarnings",
         r"error::DeprecationWarning:(test_|lightshafts|render_helpers|lightshaft_reference|"

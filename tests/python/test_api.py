@@ -236,7 +236,8 @@ def _table_presets():
     import re
     path = os.path.join(os.path.dirname(__file__), "..", "..", "plugin",
                         "vtkLightShaftErrorModelTable.h")
-    return dict(re.findall(r"constexpr int (\w+)Setting = \d+; // (.+), aim", open(path).read()))
+    with open(path) as table:
+        return dict(re.findall(r"constexpr int (\w+)Setting = \d+; // (.+), aim", table.read()))
 
 
 def _setting_of(p):

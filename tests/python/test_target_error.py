@@ -170,7 +170,9 @@ def test_features_follow_geometry():
 def _table_rows():
     path = os.path.join(ROOT, "plugin", "vtkLightShaftErrorModelTable.h")
     rows = []
-    for line in open(path):
+    with open(path) as table:
+        lines = table.readlines()
+    for line in lines:
         m = re.match(r'\s*\{ \{ "([^"]+)",[^}]*\}, \{ ([^}]*) \}, ([-\d.e+]+) \},', line)
         if m:
             rows.append((m.group(1), [float(v) for v in m.group(2).split(",")],
