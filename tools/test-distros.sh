@@ -23,7 +23,7 @@
 #
 # Environment: LIGHTSHAFTS_DISTROS_ROOT (default /opt/lightshafts/distros),
 # LIGHTSHAFTS_DEBIAN_MIRROR (default http://deb.debian.org/debian),
-# LIGHTSHAFTS_DISTRO_TIMEOUT (seconds per release, default 3600).
+# LIGHTSHAFTS_DISTRO_TIMEOUT (seconds per step, default 3600).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 checkout=$PWD
