@@ -3,6 +3,7 @@
 set(lightshafts_private_classes
   vtkLightShaftAnalyticMethod
   vtkLightShaftComposite
+  vtkLightShaftEpipolar
   vtkLightShaftErrorModel
   vtkLightShaftGeometry
   vtkLightShaftInScatter

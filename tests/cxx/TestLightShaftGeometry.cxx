@@ -1,9 +1,11 @@
 // Unit tests of vtkLightShaftPass's geometry, on the CPU (no GL): polytope clipping, convex
 // hulls and polygon clipping, the camera frame, the light's bounding pyramid and caster
-// culling, the light camera, the lit volume, the slab footprints and their lattice.
+// culling, the light camera, the lit volume, the slab footprints and their lattice, the
+// epipole and the epipolar lines.
 //
 // Usage: TestLightShaftGeometry
 
+#include "vtkLightShaftEpipolar.h"
 #include "vtkLightShaftGeometry.h"
 #include "vtkLightShaftModel.h"
 
@@ -429,6 +431,182 @@ void TestLatticeBudget()
 }
 }
 
+// The light's image: a point (in front of or behind the camera), a direction (parallel lines)
+// or undefined, for each light kind and camera.
+void TestEpipole()
+{
+  using vtkLightShaftEpipolar::Epipole;
+  const int width = 640;
+  const int height = 480;
+  const glm::dmat4 view(1.0);
+  const glm::dmat4 projection = glm::perspective(glm::radians(40.0), 4.0 / 3.0, 0.5, 100.0);
+  const auto perspective = vtkLightShaftGeometry::CameraFrame::FromMatrices(view, projection);
+  const auto parallel = vtkLightShaftGeometry::CameraFrame::FromMatrices(
+    view, glm::ortho(-4.0, 4.0, -3.0, 3.0, 0.5, 50.0));
+  auto pixelOf = [&](const glm::dvec4& h)
+  {
+    const glm::dvec4 clip = projection * h;
+    return glm::dvec2(
+      (0.5 * clip.x / clip.w + 0.5) * width, (0.5 * clip.y / clip.w + 0.5) * height);
+  };
+
+  vtkLightShaftGeometry::LightFrame spot;
+  spot.Model.Kind = vtkLightShaftModel::LightKind::Spot;
+  spot.PositionVC = glm::dvec3(1.0, 0.5, -5.0);
+  Epipole e = vtkLightShaftEpipolar::ComputeEpipole(spot, perspective, width, height);
+  Check(e.Where == Epipole::Kind::Point && !e.Behind &&
+          glm::length(e.Pixel - pixelOf(glm::dvec4(spot.PositionVC, 1.0))) < 1e-9,
+    "a spot in front of the camera: its projection");
+  spot.PositionVC = glm::dvec3(1.0, 0.5, 5.0);
+  e = vtkLightShaftEpipolar::ComputeEpipole(spot, perspective, width, height);
+  Check(e.Where == Epipole::Kind::Point && e.Behind &&
+          glm::length(e.Pixel - pixelOf(glm::dvec4(spot.PositionVC, 1.0))) < 1e-9,
+    "a spot behind the camera: its projection, behind");
+  e = vtkLightShaftEpipolar::ComputeEpipole(spot, parallel, width, height);
+  Check(e.Where == Epipole::Kind::Point && !e.Behind, "a parallel camera sees a spot's image");
+  spot.PositionVC = glm::dvec3(0.0);
+  e = vtkLightShaftEpipolar::ComputeEpipole(spot, perspective, width, height);
+  Check(e.Where == Epipole::Kind::Undefined, "a light at the eye: no epipole");
+
+  vtkLightShaftGeometry::LightFrame sun;
+  sun.Model.Kind = vtkLightShaftModel::LightKind::Directional;
+  sun.AxisVC = glm::normalize(glm::dvec3(0.0, -1.0, 1.0)); // from above and ahead
+  e = vtkLightShaftEpipolar::ComputeEpipole(sun, perspective, width, height);
+  Check(e.Where == Epipole::Kind::Point && !e.Behind &&
+          glm::length(e.Pixel - pixelOf(glm::dvec4(-sun.AxisVC, 0.0))) < 1e-9 && e.Pixel.y > height,
+    "a sun ahead: its vanishing point, above the picture");
+  sun.AxisVC = glm::dvec3(1.0, 0.0, 0.0);
+  e = vtkLightShaftEpipolar::ComputeEpipole(sun, perspective, width, height);
+  Check(e.Where == Epipole::Kind::AtInfinity && std::abs(std::abs(e.Direction.x) - 1.0) < 1e-12,
+    "a sun parallel to the screen: horizontal parallel lines");
+  sun.AxisVC = glm::normalize(glm::dvec3(0.0, -1.0, 1.0));
+  e = vtkLightShaftEpipolar::ComputeEpipole(sun, parallel, width, height);
+  Check(e.Where == Epipole::Kind::AtInfinity && std::abs(std::abs(e.Direction.y) - 1.0) < 1e-12,
+    "a parallel camera and a sun: parallel lines along its image");
+  sun.AxisVC = glm::dvec3(0.0, 0.0, -1.0);
+  e = vtkLightShaftEpipolar::ComputeEpipole(sun, parallel, width, height);
+  Check(e.Where == Epipole::Kind::Undefined, "a sun along a parallel camera's axis: undefined");
+}
+
+// Every pixel of the target lies between two neighbouring lines and along them; a line's own
+// points are found on it. Returns how far the nearer of the two points a pixel is interpolated
+// from (its neighbouring lines, at its fraction of their length) lies from it, at the most.
+double CheckLayout(const vtkLightShaftEpipolar::Layout& layout, const std::string& name)
+{
+  bool roundTrip = true;
+  for (int i = 0; i < layout.Lines; ++i)
+  {
+    const glm::dvec4& ends = layout.Ends[i];
+    if (glm::length(glm::dvec2(ends.z - ends.x, ends.w - ends.y)) < 1e-6)
+    {
+      continue; // a line that only touches the target
+    }
+    for (double s : { 0.25, 0.5 * (layout.Samples - 1), layout.Samples - 1.25 })
+    {
+      double line, sample;
+      const bool found = layout.Locate(layout.SamplePoint(i, s), line, sample);
+      roundTrip = roundTrip && found && std::abs(line - i) < 1e-6 && std::abs(sample - s) < 1e-6;
+    }
+  }
+  Check(roundTrip, name + ": a line's points are located on it");
+
+  const glm::dvec2 size(layout.Width, layout.Height);
+  bool covered = true;
+  double farthest = 0.0;
+  for (int y = 0; y < layout.Height; y += std::max(layout.Height / 37, 1))
+  {
+    for (int x = 0; x < layout.Width; x += std::max(layout.Width / 41, 1))
+    {
+      const glm::dvec2 p(x + 0.5, y + 0.5);
+      double line, sample;
+      if (!layout.Locate(p, line, sample))
+      {
+        covered = covered && glm::length(p - layout.Origin) < 1e-6;
+        continue;
+      }
+      covered = covered && line >= -0.5 && line <= layout.Lines - 0.5 && sample >= 0.0 &&
+                sample <= layout.Samples - 1;
+      // The two lines around p (cyclic when radial), at p's position along them.
+      int below = static_cast<int>(std::floor(line));
+      int above = below + 1;
+      if (layout.Form == vtkLightShaftEpipolar::Layout::Shape::Radial)
+      {
+        below = (below + layout.Lines) % layout.Lines;
+        above = above % layout.Lines;
+      }
+      below = std::max(below, 0);
+      above = std::min(above, layout.Lines - 1);
+      farthest = std::max(farthest,
+        std::min(glm::length(layout.SamplePoint(below, sample) - p),
+          glm::length(layout.SamplePoint(above, sample) - p)));
+    }
+  }
+  Check(covered, name + ": every pixel lies between two lines, along them");
+  return farthest;
+}
+
+void TestEpipolarLayout()
+{
+  using vtkLightShaftEpipolar::Epipole;
+  using vtkLightShaftEpipolar::Layout;
+  // An epipole at (fx, fy) times the target's size.
+  auto at = [](double fx, double fy)
+  {
+    Epipole e;
+    e.Where = Epipole::Kind::Point;
+    e.Pixel = glm::dvec2(fx, fy);
+    return e;
+  };
+  Epipole infinity;
+  infinity.Where = Epipole::Kind::AtInfinity;
+  infinity.Direction = glm::dvec2(0.6, 0.8);
+  const Epipole undefined;
+  const struct
+  {
+    const char* Name;
+    Epipole Light;
+    Layout::Shape Form;
+  } cases[] = {
+    { "epipole at the centre", at(0.5, 0.5), Layout::Shape::Radial },
+    { "epipole off-centre", at(0.1, 0.8), Layout::Shape::Radial },
+    { "epipole on a corner", at(0.0, 0.0), Layout::Shape::Fan },
+    { "epipole on an edge", at(0.3, 1.0), Layout::Shape::Fan },
+    { "epipole left of the target", at(-0.5, 0.4), Layout::Shape::Fan },
+    { "epipole far below and right", at(200.0, -150.0), Layout::Shape::Fan },
+    { "epipole too far for angles", at(1e7, 3e6), Layout::Shape::Parallel },
+    { "epipole at infinity", infinity, Layout::Shape::Parallel },
+    { "no epipole", undefined, Layout::Shape::Parallel },
+  };
+  for (const auto& c : cases)
+  {
+    // An ordinary target, then a sliver (there, where lines from an epipole beside it turn its
+    // corners at grazing angles, the interpolated points approach more slowly: only coverage
+    // is checked).
+    for (const glm::ivec2 size : { glm::ivec2(64, 48), glm::ivec2(3, 200) })
+    {
+      Epipole light = c.Light;
+      light.Pixel *= glm::dvec2(size);
+      const std::string name =
+        std::string(c.Name) + " (" + std::to_string(size.x) + "x" + std::to_string(size.y) + ")";
+      const Layout layout = vtkLightShaftEpipolar::ComputeLayout(light, size.x, size.y, 32, 9);
+      Check(layout.Form == c.Form && static_cast<int>(layout.Ends.size()) == 32, name + ": shape");
+      const double farthest = CheckLayout(layout, name);
+      // The interpolation is local: its points approach the pixel as the lines get denser
+      // (where a line's entry turns a corner, neighbours at the same fraction of their lengths
+      // are several spacings apart on 32 lines; 8 times the lines, 8 times closer).
+      const double denser = CheckLayout(
+        vtkLightShaftEpipolar::ComputeLayout(light, size.x, size.y, 256, 9), name + ", 256 lines");
+      Check(size.x == 3 || denser <= 0.25 * farthest + 1e-9,
+        name + ": 8 times the lines bring the interpolated points at least 4 times closer (" +
+          std::to_string(farthest) + " to " + std::to_string(denser) + " pixels)");
+    }
+  }
+  const Layout tiny =
+    vtkLightShaftEpipolar::ComputeLayout(at(0.5, 0.5), 1, 1, 1, 1); // (0.5, 0.5) px
+  Check(tiny.Lines == 4 && tiny.Samples == 2, "at least 4 lines of 2 samples");
+  CheckLayout(tiny, "a 1x1 target");
+}
+
 int main()
 {
   TestPolygons();
@@ -439,6 +617,8 @@ int main()
   TestLightChoice();
   TestNoDegenerateTriangles();
   TestLatticeBudget();
+  TestEpipole();
+  TestEpipolarLayout();
   if (Failures > 0)
   {
     std::cerr << Failures << " geometry check(s) failed" << std::endl;
