@@ -9,9 +9,12 @@
 #   tools/measure.sh worst-corners     # the slider corners (docs/robustness.md)
 #   tools/measure.sh random-scenes     # 50 random scenes: presets, methods, targets
 #                                      # (docs/random-scenes.md; about an hour on 2 cores)
+#   tools/measure.sh random-scenes-downsampled  # the same scenes, reduced-resolution settings
+#                                      # (docs/downsampled/random-scenes.md; about 30 min)
 #   tools/measure.sh error-model       # the TargetError model's training run and fit
 #                                      # (docs/error-model.md, plugin/vtkLightShaftErrorModelTable.h)
 #   tools/measure.sh reference-speed   # the float64 reference's time against the pass's frame
+#   tools/measure.sh fixed-cost        # a frame's cost besides its integral, a few random scenes
 #   tools/measure.sh pytest TEST...    # a test, printing what it measured (-s)
 #
 # Extra arguments go to the script (e.g. tools/measure.sh random-scenes --scenes 5).
@@ -37,6 +40,9 @@ case "$what" in
   random-scenes)
     run tests/benchmarks/random_scenes.py --seed 0 --scenes 50 --max-height 720 --frames 1 \
       --output-dir docs "$@" ;;
+  random-scenes-downsampled)
+    run tests/benchmarks/random_scenes.py --downsampled --seed 0 --scenes 50 --max-height 720 \
+      --frames 3 --output-dir docs/downsampled "$@" ;;
   error-model)
     # Training seeds 8 and 9 (the validation above is seed 0), then the fit and a rebuild.
     training=$(mktemp -d)
@@ -49,6 +55,7 @@ case "$what" in
       "$training/9/random-scenes.csv"
     cmake --build build > /dev/null ;;
   reference-speed) run tests/benchmarks/reference_speed.py "$@" ;;
+  fixed-cost) run tests/benchmarks/fixed_cost.py "$@" ;;
   pytest) run -m pytest -p no:cacheprovider -q -s "$@" ;;
   *)
     sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'

@@ -18,11 +18,12 @@ whose reference has no lit pixel in view (peak 0, or fewer than --min-lit-fracti
 above 1% of the peak), or whose view holds nothing (every prop behind the camera: VTK's clipping
 range collapses), is drawn again (next attempt), not reported.
 
-For every scene and setting (the Draft, Interactive and Final presets; the defaults of
-RAY_MARCH, RADIAL_BLUR and ANALYTIC): the relative RMS error of the pass's in-scatter against
-vtkLightShaftReference (exact surfaces and shadows, float64; pixels above 1% of the reference's
-peak), and the time ratio: median frame time with the pass over the median frame time of the same
-scene without it, measured in the same run (--frames frames after a warm-up frame, glFinish).
+For every scene and setting (the Draft, Interactive and Final presets; the defaults of RAY_MARCH,
+RADIAL_BLUR and ANALYTIC; or those of --ladder or --downsampled): the relative RMS error of the
+pass's in-scatter against vtkLightShaftReference (exact surfaces and shadows, float64; pixels above
+1% of the reference's peak), and the time ratio: median frame time with the pass over the median
+frame time of the same scene without it, measured in the same run (--frames frames after a warm-up
+frame, glFinish).
 
 Writes random-scenes.csv (one row per scene and setting, the scene as JSON), random-scenes.md
 (median and 90th percentile per setting, the worst scenes), images/random-pareto.png and
@@ -30,6 +31,9 @@ images/random-worst-K.png (the three worst scenes of the Interactive preset) int
 --only-scene K re-runs scene K of --seed alone. --smoke: 3 scenes at 96x72, 3 settings,
 2 frames. --ladder: the settings tests/benchmarks/fit_error_model.py fits the TargetError model
 on (with --smoke its cheapest and dearest), instead of the presets, methods and targets.
+--downsampled: settings that compute the in-scatter at a reduced resolution (ANALYTIC and
+RAY_MARCH at DownsampleFactor 2 and 4) against ANALYTIC, the RAY_MARCH defaults and
+Interactive, instead of the presets, methods and targets (with --smoke: Interactive and one).
 
 VTK warnings and errors are captured per setting; the pass's documented warnings (ANALYTIC
 ignoring shadows) are counted as expected, anything else is listed as unexpected.
@@ -75,6 +79,28 @@ SETTINGS = [
     ("Target 0.5%", dict(TargetError=0.005)),
 ]
 SMOKE_SETTINGS = ("Interactive", "Final", "Target 2%")
+
+
+def _reduced_march(steps, interleave, downsample, shadow_map):
+    return dict(Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=steps,
+                InterleaveSize=interleave, BlurRadius=0, DownsampleFactor=downsample,
+                ShadowMapSize=shadow_map,
+                AccumulationPrecision=vtkLightShaftPass.ACCUMULATE_FLOAT32)
+
+
+# --downsampled: today's cheapest ways (the in-scatter at a reduced resolution, depth-aware
+# upsampling), against ANALYTIC, the RAY_MARCH defaults and Interactive: the baseline that
+# cheaper methods (epipolar sampling, light volumes) are measured against.
+DOWNSAMPLED_SETTINGS = [
+    ("Interactive", dict(Quality="Interactive")),
+    ("RAY_MARCH defaults", dict(Method=vtkLightShaftPass.RAY_MARCH)),
+    ("ANALYTIC", dict(Method=vtkLightShaftPass.ANALYTIC)),
+    ("ANALYTIC d2", dict(Method=vtkLightShaftPass.ANALYTIC, DownsampleFactor=2, BlurRadius=0)),
+    ("M8 i2 d2 m512", _reduced_march(8, 2, 2, 512)),
+    ("M16 i2 d2 m1024", _reduced_march(16, 2, 2, 1024)),
+    ("M32 i1 d2 m1024", _reduced_march(32, 1, 2, 1024)),
+    ("M16 i1 d4 m1024", _reduced_march(16, 1, 4, 1024)),
+]
 
 
 def _rung(slices, jitter, blur, downsample, shadow_map):
@@ -761,6 +787,9 @@ def main():
     parser.add_argument("--smoke", action="store_true")
     parser.add_argument("--ladder", action="store_true",
                         help="the error model's SLICES settings instead of the presets")
+    parser.add_argument("--downsampled", action="store_true",
+                        help="reduced-resolution settings against ANALYTIC, the RAY_MARCH "
+                        "defaults and Interactive instead of the presets")
     args = parser.parse_args()
     settings = SETTINGS
     size = None
@@ -769,6 +798,9 @@ def main():
         settings = [s for s in SETTINGS if s[0] in SMOKE_SETTINGS]
     if args.ladder:
         settings = [LADDER[0], LADDER[-1]] if args.smoke else LADDER
+    if args.downsampled:
+        settings = DOWNSAMPLED_SETTINGS[:1] + DOWNSAMPLED_SETTINGS[4:5] if args.smoke \
+            else DOWNSAMPLED_SETTINGS
     if args.settings:
         settings = [s for s in settings if s[0] in args.settings]
     indices = [args.only_scene] if args.only_scene is not None else range(args.scenes)

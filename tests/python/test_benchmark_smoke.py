@@ -82,6 +82,23 @@ def test_random_scenes_smoke(tmp_path):
         assert (tmp_path / "images" / f"random-worst-{k}.png").stat().st_size > 10000
 
 
+def test_random_scenes_downsampled_smoke(tmp_path):
+    """--downsampled: the reduced-resolution settings run on the same scenes, their rows and
+    table written like the presets'."""
+    script = os.path.join(os.path.dirname(BENCHMARK), "random_scenes.py")
+    result = subprocess.run([sys.executable, script, "--smoke", "--downsampled", "--output-dir",
+                             str(tmp_path)], capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    with open(tmp_path / "random-scenes.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 3 * 2
+    assert {r["setting"] for r in rows} == {"Interactive", "M8 i2 d2 m512"}
+    for row in rows:
+        assert 0.0 <= float(row["relative_rmse"]) < 1.0 and float(row["time_ratio"]) > 0.0
+        assert int(row["gl_errors"]) == 0 and row["unexpected_warnings"] == ""
+    assert "| M8 i2 d2 m512 | 3 |" in (tmp_path / "random-scenes.md").read_text()
+
+
 def test_error_model_fit_smoke(tmp_path):
     """The TargetError model's pipeline: a --ladder run, then fit_error_model.py writes a table
     the pass's format reads, its markdown and the training CSV with the features."""
@@ -114,3 +131,16 @@ def test_reference_speed_smoke():
                               result.stdout, re.M))
     assert set(figures) == {"reference", "pass frame", "pass against"}, result.stdout
     assert float(figures["pass against"]) < 5.0  # percent, at 80x60
+
+
+def test_fixed_cost_smoke():
+    import re
+    script = os.path.join(os.path.dirname(BENCHMARK), "fixed_cost.py")
+    result = subprocess.run([sys.executable, script, "--scenes", "1", "--frames", "1", "--size",
+                             "96", "72"], capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    ratios = re.findall(r"^  (ANALYTIC[^\n]*?) +frame +[0-9.]+ ms +ratio +([0-9.]+)", result.stdout,
+                        re.M)
+    assert [label for label, _ in ratios] == [
+        "ANALYTIC", "ANALYTIC d8", "ANALYTIC d8, no AttenuateScene"], result.stdout
+    assert all(float(ratio) > 0.0 for _, ratio in ratios)
