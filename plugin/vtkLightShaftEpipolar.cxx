@@ -1,6 +1,7 @@
 #include "vtkLightShaftEpipolar.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -63,6 +64,11 @@ double PerimeterCoordinate(const glm::dvec2& b, const glm::dvec2& size)
     default:
       return 2.0 * size.x + size.y + (size.y - std::min(std::max(b.y, 0.0), size.y));
   }
+}
+
+std::array<glm::dvec2, 4> Corners(const glm::dvec2& size)
+{
+  return { glm::dvec2(0.0), glm::dvec2(size.x, 0.0), size, glm::dvec2(0.0, size.y) };
 }
 
 glm::dvec2 PerimeterPoint(double s, const glm::dvec2& size)
@@ -156,59 +162,51 @@ Layout ComputeLayout(const Epipole& epipole, int width, int height, int lines, i
   // no area and leave those edges' points ambiguous; a fan covers that case exactly.
   const bool onTarget = point && epipole.Pixel.x > 0.0 && epipole.Pixel.x < size.x &&
                         epipole.Pixel.y > 0.0 && epipole.Pixel.y < size.y;
-  if (onTarget)
-  {
-    layout.Form = Layout::Shape::Radial;
-    layout.Origin = epipole.Pixel;
-    layout.Start = 0.0;
-    layout.Span = 2.0 * (size.x + size.y);
-    for (int i = 0; i < layout.Lines; ++i)
-    {
-      const glm::dvec2 end = PerimeterPoint((i + 0.5) / layout.Lines * layout.Span, size);
-      layout.Ends[i] = glm::dvec4(layout.Origin, end);
-    }
-    return layout;
-  }
-
   if (point)
   {
-    // The lines leave the target through the arc of its boundary facing away from the
-    // epipole: from the corner seen at the smallest angle, counter-clockwise (increasing
-    // perimeter coordinate) to the one at the largest. Their exits are evenly spaced along it,
-    // as the radial lines' ends are (Yusov 2013): no line is wasted, and the lines are densest
-    // near the epipole, where the in-scatter changes fastest.
-    layout.Form = Layout::Shape::Fan;
-    layout.Origin = epipole.Pixel;
-    layout.Axis = glm::normalize(centre - layout.Origin);
-    double lowest = std::numeric_limits<double>::infinity();
-    double highest = -lowest;
-    glm::dvec2 first(0.0), last(0.0);
-    for (const glm::dvec2 corner :
-      { glm::dvec2(0.0), glm::dvec2(size.x, 0.0), size, glm::dvec2(0.0, size.y) })
-    {
-      const glm::dvec2 v = corner - layout.Origin;
-      const double angle = std::atan2(Cross(layout.Axis, v), glm::dot(layout.Axis, v));
-      if (angle < lowest)
-      {
-        lowest = angle;
-        first = corner;
-      }
-      if (angle > highest)
-      {
-        highest = angle;
-        last = corner;
-      }
-    }
+    // The lines leave the target through an arc of its boundary, their exits evenly spaced
+    // along it (Yusov 2013): no line is wasted, and the lines are densest near the epipole,
+    // where the in-scatter changes fastest. From inside (radial) the arc is the whole boundary;
+    // from outside (fan) it is the part facing away from the epipole: from the corner seen at
+    // the smallest angle, counter-clockwise (increasing perimeter coordinate) to the one at
+    // the largest.
     const double perimeter = 2.0 * (size.x + size.y);
-    layout.Start = PerimeterCoordinate(first, size);
-    const double end = PerimeterCoordinate(last, size);
-    layout.Span = (end > layout.Start) ? end - layout.Start : end + perimeter - layout.Start;
+    layout.Origin = epipole.Pixel;
+    layout.Form = onTarget ? Layout::Shape::Radial : Layout::Shape::Fan;
+    layout.Start = 0.0;
+    layout.Span = perimeter;
+    if (!onTarget)
+    {
+      layout.Axis = glm::normalize(centre - layout.Origin);
+      double lowest = std::numeric_limits<double>::infinity();
+      double highest = -lowest;
+      glm::dvec2 first(0.0), last(0.0);
+      for (const glm::dvec2& corner : Corners(size))
+      {
+        const glm::dvec2 v = corner - layout.Origin;
+        const double angle = std::atan2(Cross(layout.Axis, v), glm::dot(layout.Axis, v));
+        if (angle < lowest)
+        {
+          lowest = angle;
+          first = corner;
+        }
+        if (angle > highest)
+        {
+          highest = angle;
+          last = corner;
+        }
+      }
+      layout.Start = PerimeterCoordinate(first, size);
+      const double end = PerimeterCoordinate(last, size);
+      layout.Span = (end > layout.Start) ? end - layout.Start : end + perimeter - layout.Start;
+    }
     for (int i = 0; i < layout.Lines; ++i)
     {
       const double s = std::fmod(layout.Start + (i + 0.5) / layout.Lines * layout.Span, perimeter);
       const glm::dvec2 d = glm::normalize(PerimeterPoint(s, size) - layout.Origin);
       double t0, t1;
       LineEnds(layout.Origin, d, size, t0, t1);
+      t0 = std::max(t0, 0.0); // from inside, the line starts at the epipole
       layout.Ends[i] = glm::dvec4(layout.Origin + t0 * d, layout.Origin + t1 * d);
     }
     return layout;
@@ -228,8 +226,7 @@ Layout ComputeLayout(const Epipole& epipole, int width, int height, int lines, i
   layout.Normal = glm::dvec2(-layout.Axis.y, layout.Axis.x);
   double lowest = std::numeric_limits<double>::infinity();
   double highest = -lowest;
-  for (const glm::dvec2 corner :
-    { glm::dvec2(0.0), glm::dvec2(size.x, 0.0), size, glm::dvec2(0.0, size.y) })
+  for (const glm::dvec2& corner : Corners(size))
   {
     lowest = std::min(lowest, glm::dot(corner, layout.Normal));
     highest = std::max(highest, glm::dot(corner, layout.Normal));
@@ -286,23 +283,15 @@ bool Layout::Locate(const glm::dvec2& p, double& line, double& sample) const
     const glm::dvec2 d = v / distance;
     double t0, t1;
     LineEnds(this->Origin, d, size, t0, t1);
-    if (this->Form == Shape::Radial)
+    t0 = std::max(t0, 0.0); // from inside, the line starts at the epipole
+    // Where the line leaves the target, along the arc from Start (wrapping once round).
+    double along = PerimeterCoordinate(this->Origin + t1 * d, size) - this->Start;
+    if (along < -tolerance)
     {
-      // From the epipole (inside the target) to the boundary, where the line's index is read.
-      line = PerimeterCoordinate(this->Origin + t1 * d, size) / this->Span * this->Lines - 0.5;
-      fraction = (t1 > 0.0) ? distance / t1 : 0.0;
+      along += 2.0 * (size.x + size.y);
     }
-    else
-    {
-      // Where the line leaves the target, along the arc from Start (wrapping once round).
-      double along = PerimeterCoordinate(this->Origin + t1 * d, size) - this->Start;
-      if (along < -tolerance)
-      {
-        along += 2.0 * (size.x + size.y);
-      }
-      line = along / this->Span * this->Lines - 0.5;
-      fraction = (t1 > t0) ? (distance - t0) / (t1 - t0) : 0.0;
-    }
+    line = along / this->Span * this->Lines - 0.5;
+    fraction = (t1 > t0) ? (distance - t0) / (t1 - t0) : 0.0;
   }
   line = std::min(std::max(line, -0.5), this->Lines - 0.5);
   sample = std::min(std::max(fraction, 0.0), 1.0) * (this->Samples - 1);

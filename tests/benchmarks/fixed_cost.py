@@ -54,7 +54,7 @@ def main():
               f"{1000 * plain:.2f} ms", flush=True)
         for label, params in SETTINGS:
             shafts = vtkLightShaftPass()
-            rs.configure(shafts, scene, light, dict(params))
+            rs.configure(shafts, scene, light, params)
             renderer.SetPass(shafts)
             frame = rh.median_frame_time(window, args.frames)
             in_scatter = shafts.GetLastLightTime(0) if shafts.GetLastNumberOfUsedLights() else -1.0

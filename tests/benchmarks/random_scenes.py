@@ -81,7 +81,14 @@ SETTINGS = [
 SMOKE_SETTINGS = ("Interactive", "Final", "Target 2%")
 
 
-def _reduced_march(steps, interleave, downsample, shadow_map):
+def _rung(slices, jitter, blur, downsample, shadow_map):
+    return dict(Method=vtkLightShaftPass.SLICES, AutomaticSliceCount=False,
+                NumberOfSlices=slices, Jitter=jitter, BlurRadius=blur,
+                DownsampleFactor=downsample, ShadowMapSize=shadow_map,
+                AccumulationPrecision=vtkLightShaftPass.ACCUMULATE_FLOAT32)
+
+
+def _march(steps, interleave, shadow_map, downsample=1):
     return dict(Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=steps,
                 InterleaveSize=interleave, BlurRadius=0, DownsampleFactor=downsample,
                 ShadowMapSize=shadow_map,
@@ -96,25 +103,12 @@ DOWNSAMPLED_SETTINGS = [
     ("RAY_MARCH defaults", dict(Method=vtkLightShaftPass.RAY_MARCH)),
     ("ANALYTIC", dict(Method=vtkLightShaftPass.ANALYTIC)),
     ("ANALYTIC d2", dict(Method=vtkLightShaftPass.ANALYTIC, DownsampleFactor=2, BlurRadius=0)),
-    ("M8 i2 d2 m512", _reduced_march(8, 2, 2, 512)),
-    ("M16 i2 d2 m1024", _reduced_march(16, 2, 2, 1024)),
-    ("M32 i1 d2 m1024", _reduced_march(32, 1, 2, 1024)),
-    ("M16 i1 d4 m1024", _reduced_march(16, 1, 4, 1024)),
+    ("M8 i2 d2 m512", _march(8, 2, 512, downsample=2)),
+    ("M16 i2 d2 m1024", _march(16, 2, 1024, downsample=2)),
+    ("M32 i1 d2 m1024", _march(32, 1, 1024, downsample=2)),
+    ("M16 i1 d4 m1024", _march(16, 1, 1024, downsample=4)),
 ]
-
-
-def _rung(slices, jitter, blur, downsample, shadow_map):
-    return dict(Method=vtkLightShaftPass.SLICES, AutomaticSliceCount=False,
-                NumberOfSlices=slices, Jitter=jitter, BlurRadius=blur,
-                DownsampleFactor=downsample, ShadowMapSize=shadow_map,
-                AccumulationPrecision=vtkLightShaftPass.ACCUMULATE_FLOAT32)
-
-
-def _march(steps, interleave, shadow_map):
-    return dict(Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=steps,
-                InterleaveSize=interleave, BlurRadius=0, DownsampleFactor=1,
-                ShadowMapSize=shadow_map,
-                AccumulationPrecision=vtkLightShaftPass.ACCUMULATE_FLOAT32)
+DOWNSAMPLED_SMOKE_SETTINGS = ("Interactive", "M8 i2 d2 m512")
 
 
 # The settings the error model is fitted on (--ladder), cheapest first: by their fill (slabs or
@@ -799,8 +793,8 @@ def main():
     if args.ladder:
         settings = [LADDER[0], LADDER[-1]] if args.smoke else LADDER
     if args.downsampled:
-        settings = DOWNSAMPLED_SETTINGS[:1] + DOWNSAMPLED_SETTINGS[4:5] if args.smoke \
-            else DOWNSAMPLED_SETTINGS
+        settings = [s for s in DOWNSAMPLED_SETTINGS
+                    if not args.smoke or s[0] in DOWNSAMPLED_SMOKE_SETTINGS]
     if args.settings:
         settings = [s for s in settings if s[0] in args.settings]
     indices = [args.only_scene] if args.only_scene is not None else range(args.scenes)
