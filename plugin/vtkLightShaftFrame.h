@@ -55,6 +55,9 @@ struct vtkLightShaftParameters
   int NumberOfSteps{};
   int InterleaveSize{};
   int RadialSamples{};
+  int EpipolarLines{};
+  int EpipolarSamples{};
+  int EpipolarStep{};
   double Decay{};
   double Density{};
   double Weight{};

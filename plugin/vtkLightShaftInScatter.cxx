@@ -6,16 +6,27 @@
 #include "vtkObject.h"
 #include "vtkTextureObject.h"
 
+#include <initializer_list>
+
 //------------------------------------------------------------------------------
 vtkLightShaftInScatter::vtkLightShaftInScatter() = default;
 vtkLightShaftInScatter::~vtkLightShaftInScatter() = default;
 
 vtkLightShaftMethod* vtkLightShaftInScatter::GetMethod(int method)
 {
-  vtkLightShaftMethod* methods[] = {
-    &this->Slices, &this->RayMarch, &this->RadialBlur, &this->Analytic
-  };
-  return methods[method];
+  switch (method)
+  {
+    case vtkLightShaftPass::RAY_MARCH:
+      return &this->RayMarch;
+    case vtkLightShaftPass::RADIAL_BLUR:
+      return &this->RadialBlur;
+    case vtkLightShaftPass::ANALYTIC:
+      return &this->Analytic;
+    case vtkLightShaftPass::EPIPOLAR:
+      return &this->Epipolar;
+    default:
+      return &this->Slices;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -160,9 +171,12 @@ void vtkLightShaftInScatter::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Target.ReleaseGraphicsResources(window);
   this->Slabs.ReleaseGraphicsResources(window);
-  for (int method = vtkLightShaftPass::SLICES; method < vtkLightShaftPass::AUTOMATIC; ++method)
+  const std::initializer_list<vtkLightShaftMethod*> methods = {
+    &this->Slices, &this->RayMarch, &this->RadialBlur, &this->Analytic, &this->Epipolar
+  };
+  for (vtkLightShaftMethod* method : methods)
   {
-    this->GetMethod(method)->ReleaseGraphicsResources(window);
+    method->ReleaseGraphicsResources(window);
   }
   this->Post.ReleaseGraphicsResources(window);
   this->ShaderMethod = nullptr;

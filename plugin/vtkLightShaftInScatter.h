@@ -8,6 +8,7 @@
 #define vtkLightShaftInScatter_h
 
 #include "vtkLightShaftAnalyticMethod.h"   // For a method held
+#include "vtkLightShaftEpipolarMethod.h"   // For a method held
 #include "vtkLightShaftInScatterTarget.h"  // For the target held
 #include "vtkLightShaftPostProcess.h"      // For the post chain held
 #include "vtkLightShaftRadialBlurMethod.h" // For a method held
@@ -69,6 +70,7 @@ private:
   vtkLightShaftRayMarchMethod RayMarch{ this->Slabs };
   vtkLightShaftAnalyticMethod Analytic{ this->Slabs };
   vtkLightShaftRadialBlurMethod RadialBlur{ this->Analytic };
+  vtkLightShaftEpipolarMethod Epipolar{ this->Slabs };
   vtkLightShaftPostProcess Post;
 
   const vtkLightShaftMethod* ShaderMethod = nullptr;

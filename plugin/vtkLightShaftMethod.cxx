@@ -33,8 +33,16 @@ vtkShaderProgram* vtkLightShaftMethod::ReadySlabProgram(vtkLightShaftFrame& fram
 {
   this->Variant = variant.Description;
   frame.ShaderMethod = this;
+  return ReadySlabProgram(frame, this->SlabProgram, fragment, variant);
+}
+
+vtkShaderProgram* vtkLightShaftMethod::ReadySlabProgram(vtkLightShaftFrame& frame,
+  vtkLightShaftShaders::Program& slabProgram,
+  const char* fragment,
+  const vtkLightShaftShaders::Variant& variant)
+{
   vtkShaderProgram* program =
-    this->SlabProgram.Ready(frame.Window, vtkLightShaftSlabVS, fragment, variant);
+    slabProgram.Ready(frame.Window, vtkLightShaftSlabVS, fragment, variant);
   if (!program)
   {
     vtkErrorWithObjectMacro(frame.Owner, "Could not build the light-shaft slice shader.");

@@ -76,6 +76,11 @@ protected:
   vtkShaderProgram* ReadySlabProgram(vtkLightShaftFrame& frame,
     const char* fragment,
     const vtkLightShaftShaders::Variant& variant);
+  /// The same for a method's other slab programs (`program`; its variant is not reported).
+  static vtkShaderProgram* ReadySlabProgram(vtkLightShaftFrame& frame,
+    vtkLightShaftShaders::Program& program,
+    const char* fragment,
+    const vtkLightShaftShaders::Variant& variant);
 
   /// " accumulate=float32" or " accumulate=float16": the description of a float accumulation.
   static const char* FloatAccumulation(const vtkLightShaftParameters& parameters);

@@ -314,6 +314,8 @@ const char* vtkLightShaftPass::GetMethodName(int method)
       return "analytic";
     case AUTOMATIC:
       return "automatic";
+    case EPIPOLAR:
+      return "epipolar";
     default:
       return "none";
   }
@@ -638,6 +640,9 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
   p.NumberOfSteps = self.NumberOfSteps;
   p.InterleaveSize = self.InterleaveSize;
   p.RadialSamples = self.RadialSamples;
+  p.EpipolarLines = self.EpipolarLines;
+  p.EpipolarSamples = self.EpipolarSamples;
+  p.EpipolarStep = self.EpipolarStep;
   p.Decay = self.Decay;
   p.Density = self.Density;
   p.Weight = self.Weight;
@@ -879,6 +884,9 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
   os << indent << "InterleaveSize: " << this->InterleaveSize << "\n";
   os << indent << "RadialSamples: " << this->RadialSamples << "\n";
+  os << indent << "EpipolarLines: " << this->EpipolarLines << "\n";
+  os << indent << "EpipolarSamples: " << this->EpipolarSamples << "\n";
+  os << indent << "EpipolarStep: " << this->EpipolarStep << "\n";
   os << indent << "Decay: " << this->Decay << "\n";
   os << indent << "Density: " << this->Density << "\n";
   os << indent << "Weight: " << this->Weight << "\n";

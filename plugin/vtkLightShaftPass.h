@@ -114,7 +114,8 @@ public:
     RAY_MARCH = 1,   ///< per-pixel march with interleaved sampling (Toth & Umenhoffer 2009)
     RADIAL_BLUR = 2, ///< screen-space radial blur of an occlusion buffer (GPU Gems 3, ch. 13)
     ANALYTIC = 3,    ///< unshadowed closed form per pixel (exact when nothing occludes)
-    AUTOMATIC = 4    ///< ANALYTIC when the scene allows it, else SLICES (GetLastMethod says)
+    AUTOMATIC = 4,   ///< ANALYTIC when the scene allows it, else SLICES (GetLastMethod says)
+    EPIPOLAR = 5     ///< marched along lines through the light's image, interpolated (Yusov 2013)
   };
 
   /// Events the pass invokes.
@@ -435,15 +436,21 @@ public:
    *   shadows and noise (a warning says so when they would matter); the cookie is kept.
    * - AUTOMATIC: ANALYTIC when nothing casts a shadow into the light's volume and the noise is
    *   off, else SLICES. GetLastMethod() reports the choice.
+   * - EPIPOLAR: RAY_MARCH's march (NumberOfSteps segments) at samples along EpipolarLines
+   *   lines through the light's screen image, every EpipolarStep-th of EpipolarSamples and
+   *   where the depth breaks or the in-scatter changes sharply; the other samples and the
+   *   pixels are interpolated along and across the lines from samples on their own surface.
+   *   Pixels with none (thin props between lines) are marched themselves.
    * Default is SLICES.
    */
-  vtkSetClampMacro(Method, int, SLICES, AUTOMATIC);
+  vtkSetClampMacro(Method, int, SLICES, EPIPOLAR);
   vtkGetMacro(Method, int);
   void SetMethodToSlices() { this->SetMethod(SLICES); }
   void SetMethodToRayMarch() { this->SetMethod(RAY_MARCH); }
   void SetMethodToRadialBlur() { this->SetMethod(RADIAL_BLUR); }
   void SetMethodToAnalytic() { this->SetMethod(ANALYTIC); }
   void SetMethodToAutomatic() { this->SetMethod(AUTOMATIC); }
+  void SetMethodToEpipolar() { this->SetMethod(EPIPOLAR); }
   static const char* GetMethodName(int method);
   ///@}
 
@@ -461,8 +468,8 @@ public:
 
   ///@{
   /**
-   * RAY_MARCH: segments marched per pixel through the lit part of its ray, in [1, 4096].
-   * Default is 16.
+   * RAY_MARCH: segments marched per pixel through the lit part of its ray (EPIPOLAR: per
+   * marched sample), in [1, 4096]. Default is 16.
    */
   vtkSetClampMacro(NumberOfSteps, int, 1, 4096);
   vtkGetMacro(NumberOfSteps, int);
@@ -479,6 +486,35 @@ public:
    */
   vtkSetClampMacro(InterleaveSize, int, 1, 8);
   vtkGetMacro(InterleaveSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * EPIPOLAR: the lines through the light's screen image along which the in-scatter is
+   * sampled, in [4, 2048]. Their ends are evenly spaced along the in-scatter target's
+   * boundary. Default is 512.
+   */
+  vtkSetClampMacro(EpipolarLines, int, 4, 2048);
+  vtkGetMacro(EpipolarLines, int);
+  ///@}
+
+  ///@{
+  /**
+   * EPIPOLAR: the samples on each line, evenly spaced from where it enters the in-scatter
+   * target to where it leaves it, in [2, 2048]. Default is 512.
+   */
+  vtkSetClampMacro(EpipolarSamples, int, 2, 2048);
+  vtkGetMacro(EpipolarSamples, int);
+  ///@}
+
+  ///@{
+  /**
+   * EPIPOLAR: every how many samples of a line the in-scatter is marched, in [1, 64]; the
+   * samples between are interpolated unless the depth breaks or the in-scatter changes by more
+   * than a quarter between them. 1 marches every sample. Default is 16.
+   */
+  vtkSetClampMacro(EpipolarStep, int, 1, 64);
+  vtkGetMacro(EpipolarStep, int);
   ///@}
 
   ///@{
@@ -751,6 +787,9 @@ protected:
   int NumberOfSteps = 16;
   int InterleaveSize = 2;
   int RadialSamples = 64;
+  int EpipolarLines = 512;
+  int EpipolarSamples = 512;
+  int EpipolarStep = 16;
   double Decay = 1.0;
   double Density = 1.0;
   double Weight = 1.0;

@@ -8,6 +8,7 @@ set(lightshafts_pass_shaders
   vtkLightShaftCompositeFS
   vtkLightShaftDepthDownsampleFS
   vtkLightShaftDepthResolveFS
+  vtkLightShaftEpipolarFS
   vtkLightShaftIntegrand
   vtkLightShaftLightKind
   vtkLightShaftLightSpace

@@ -23,12 +23,9 @@ void main()
   {
     discard;
   }
-  LightShaftVariable u = lightShaftVariable(ray);
-  vec3 radiance = vec3(0.0);
-
   // Interleaved sampling: the M^2 pixels of a block shift the step boundaries by different
   // fractions o of a step, so the block together takes M^2 N samples; the gather passes that
-  // follow average the block back. Step j spans [j - 1 + o, j + o] steps, clamped.
+  // follow average the block back.
   float offset = 1.0;
   if (interleaveSize > 1)
   {
@@ -40,17 +37,5 @@ void main()
     int scrambled = (cellIndex * (cells / 2 + 1)) % cells;
     offset = (float(scrambled) + 0.5) / float(cells);
   }
-  float steps = float(numberOfSteps);
-  float xa = ray.x0;
-  for (int j = 0; j <= numberOfSteps; ++j)
-  {
-    float xb = lightShaftPieceBoundary(u.u0, u.u1, (float(j) + offset) / steps, u.h, u.constantA);
-    xb = (j == numberOfSteps) ? ray.x1 : min(xb, ray.x1);
-    if (xb > xa)
-    {
-      radiance += lightShaftSegment(ray.originVC, ray.dirVC, ray.b, ray.h2, xa, xb);
-    }
-    xa = max(xa, xb);
-  }
-  gl_FragData[0] = vec4(radiance, 0.0);
+  gl_FragData[0] = vec4(lightShaftMarch(ray, numberOfSteps, offset), 0.0);
 }

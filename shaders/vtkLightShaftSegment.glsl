@@ -126,17 +126,17 @@ struct LightShaftRay
   float x1;
 };
 
-// The pixel's ray and the part of it between the view depths [nearDepth, farDepth] that the
-// light reaches (lightShaftLightInterval) in front of the scene surface; false when that part
-// is empty.
-bool lightShaftLitInterval(float nearDepth, float farDepth, out LightShaftRay ray)
+// The ray through `fragCoord` (target pixels) and the part of it between the view depths
+// [nearDepth, farDepth] that the light reaches (lightShaftLightInterval) in front of the
+// surface whose depth-buffer value is `depth`; false when that part is empty.
+bool lightShaftLitIntervalAt(vec2 fragCoord, float depth, float nearDepth, float farDepth,
+  out LightShaftRay ray)
 {
   vec2 ndc;
-  lightShaftViewRay(gl_FragCoord.xy, ray.originVC, ray.dirVC, ndc);
+  lightShaftViewRay(fragCoord, ray.originVC, ray.dirVC, ndc);
   float tPerDepth = -1.0 / ray.dirVC.z;
   float ta = nearDepth * tPerDepth;
   float tb = farDepth * tPerDepth;
-  float depth = texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r;
   tb = min(tb, lightShaftSurfaceDistance(ndc, depth, ray.dirVC));
   vec3 foot;
   lightShaftRayFoot(ray.originVC, ray.dirVC, ray.b, foot);
@@ -150,6 +150,13 @@ bool lightShaftLitInterval(float nearDepth, float farDepth, out LightShaftRay ra
   ray.x0 = max(ta + ray.b, litIn);
   ray.x1 = min(tb + ray.b, litOut);
   return ray.x1 > ray.x0;
+}
+
+// The pixel's ray and its lit part in front of the scene surface (lightShaftLitIntervalAt).
+bool lightShaftLitInterval(float nearDepth, float farDepth, out LightShaftRay ray)
+{
+  float depth = texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r;
+  return lightShaftLitIntervalAt(gl_FragCoord.xy, depth, nearDepth, farDepth, ray);
 }
 
 // The integration variable over a lit part [x0, x1]: u = x when A is constant, else the
@@ -170,4 +177,26 @@ LightShaftVariable lightShaftVariable(LightShaftRay ray)
   v.u0 = v.constantA ? ray.x0 : atan(ray.x0, v.h);
   v.u1 = v.constantA ? ray.x1 : atan(ray.x1, v.h);
   return v;
+}
+
+// The ray's lit part marched in `steps` segments (shorter towards the light when A falls off),
+// one shadow-map lookup each; the boundaries shifted by `offset` of a step (1: none; the
+// interleaved sampling of RAY_MARCH). Step j spans [j - 1 + offset, j + offset] steps, clamped.
+vec3 lightShaftMarch(LightShaftRay ray, int steps, float offset)
+{
+  LightShaftVariable u = lightShaftVariable(ray);
+  vec3 radiance = vec3(0.0);
+  float xa = ray.x0;
+  for (int j = 0; j <= steps; ++j)
+  {
+    float xb =
+      lightShaftPieceBoundary(u.u0, u.u1, (float(j) + offset) / float(steps), u.h, u.constantA);
+    xb = (j == steps) ? ray.x1 : min(xb, ray.x1);
+    if (xb > xa)
+    {
+      radiance += lightShaftSegment(ray.originVC, ray.dirVC, ray.b, ray.h2, xa, xb);
+    }
+    xa = max(xa, xb);
+  }
+  return radiance;
 }

@@ -11,6 +11,8 @@
 #                                      # (docs/random-scenes.md; about an hour on 2 cores)
 #   tools/measure.sh random-scenes-downsampled  # the same scenes, reduced-resolution settings
 #                                      # (docs/downsampled/random-scenes.md; about 30 min)
+#   tools/measure.sh random-scenes-epipolar  # the same scenes, EPIPOLAR's settings
+#                                      # (docs/epipolar/random-scenes.md)
 #   tools/measure.sh error-model       # the TargetError model's training run and fit
 #                                      # (docs/error-model.md, plugin/vtkLightShaftErrorModelTable.h)
 #   tools/measure.sh reference-speed   # the float64 reference's time against the pass's frame
@@ -43,6 +45,9 @@ case "$what" in
   random-scenes-downsampled)
     run tests/benchmarks/random_scenes.py --downsampled --seed 0 --scenes 50 --max-height 720 \
       --frames 3 --output-dir docs/downsampled "$@" ;;
+  random-scenes-epipolar)
+    run tests/benchmarks/random_scenes.py --epipolar --seed 0 --scenes 50 --max-height 720 \
+      --frames 3 --output-dir docs/epipolar "$@" ;;
   error-model)
     # Training seeds 8 and 9 (the validation above is seed 0), then the fit and a rebuild.
     training=$(mktemp -d)

@@ -34,6 +34,8 @@ on (with --smoke its cheapest and dearest), instead of the presets, methods and 
 --downsampled: settings that compute the in-scatter at a reduced resolution (ANALYTIC and
 RAY_MARCH at DownsampleFactor 2 and 4) against ANALYTIC, the RAY_MARCH defaults and
 Interactive, instead of the presets, methods and targets (with --smoke: Interactive and one).
+--epipolar: EPIPOLAR's settings (steps, lines, samples, marching step, shadow map) against the
+cheapest setting of --downsampled, the RAY_MARCH defaults and Interactive.
 
 VTK warnings and errors are captured per setting; the pass's documented warnings (ANALYTIC
 ignoring shadows) are counted as expected, anything else is listed as unexpected.
@@ -109,6 +111,28 @@ DOWNSAMPLED_SETTINGS = [
     ("M16 i1 d4 m1024", _march(16, 1, 1024, downsample=4)),
 ]
 DOWNSAMPLED_SMOKE_SETTINGS = ("Interactive", "M8 i2 d2 m512")
+
+
+def _epipolar(steps, lines, samples, step, shadow_map, downsample=1):
+    return dict(Method=vtkLightShaftPass.EPIPOLAR, NumberOfSteps=steps, EpipolarLines=lines,
+                EpipolarSamples=samples, EpipolarStep=step, BlurRadius=0,
+                DownsampleFactor=downsample, ShadowMapSize=shadow_map,
+                AccumulationPrecision=vtkLightShaftPass.ACCUMULATE_FLOAT32)
+
+
+# --epipolar: EPIPOLAR's settings against today's cheapest (--downsampled's best) and dearest.
+EPIPOLAR_SETTINGS = [
+    ("Interactive", dict(Quality="Interactive")),
+    ("RAY_MARCH defaults", dict(Method=vtkLightShaftPass.RAY_MARCH)),
+    ("M8 i2 d2 m512", _march(8, 2, 512, downsample=2)),
+    ("E128 l1024 s512 k16 m2048", _epipolar(128, 1024, 512, 16, 2048)),
+    ("E64 l512 s512 k16 m2048", _epipolar(64, 512, 512, 16, 2048)),
+    ("E32 l512 s512 k16 m1024", _epipolar(32, 512, 512, 16, 1024)),
+    ("E32 l256 s512 k16 m1024", _epipolar(32, 256, 512, 16, 1024)),
+    ("E32 l256 s256 k8 m1024", _epipolar(32, 256, 256, 8, 1024)),
+    ("E16 l128 s256 k8 m512", _epipolar(16, 128, 256, 8, 512)),
+]
+EPIPOLAR_SMOKE_SETTINGS = ("Interactive", "E32 l256 s256 k8 m1024")
 
 
 # The settings the error model is fitted on (--ladder), cheapest first: by their fill (slabs or
@@ -784,6 +808,9 @@ def main():
     parser.add_argument("--downsampled", action="store_true",
                         help="reduced-resolution settings against ANALYTIC, the RAY_MARCH "
                         "defaults and Interactive instead of the presets")
+    parser.add_argument("--epipolar", action="store_true",
+                        help="EPIPOLAR's settings against the cheapest of --downsampled, the "
+                        "RAY_MARCH defaults and Interactive instead of the presets")
     args = parser.parse_args()
     settings = SETTINGS
     size = None
@@ -795,6 +822,9 @@ def main():
     if args.downsampled:
         settings = [s for s in DOWNSAMPLED_SETTINGS
                     if not args.smoke or s[0] in DOWNSAMPLED_SMOKE_SETTINGS]
+    if args.epipolar:
+        settings = [s for s in EPIPOLAR_SETTINGS
+                    if not args.smoke or s[0] in EPIPOLAR_SMOKE_SETTINGS]
     if args.settings:
         settings = [s for s in settings if s[0] in args.settings]
     indices = [args.only_scene] if args.only_scene is not None else range(args.scenes)

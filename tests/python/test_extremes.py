@@ -1,8 +1,9 @@
 """Numerical stability at the extremes: every case renders finite values with no GL error, and
 agrees with the float64 reference within the bound stated per case (or degrades as documented).
 
-Every case runs for every method (the `method` fixture). SLICES and RAY_MARCH (256 slices or
-steps, no jitter/interleave/blur) share the bounds; ANALYTIC is compared with the unshadowed
+Every case runs for every method (the `method` fixture). SLICES, RAY_MARCH and EPIPOLAR (256
+slices or steps, no jitter/interleave/blur; EPIPOLAR's default lines and samples) share the
+bounds; ANALYTIC is compared with the unshadowed
 reference (what it computes), at the same bounds; RADIAL_BLUR's screen-space shadows are
 approximate, so its bound is RADIAL_BLUR_BOUND against the shadowed reference, and the case is
 also required to stay finite and GL-error free.
@@ -20,7 +21,7 @@ import render_helpers as rh
 from vtk_output import ANALYTIC_IGNORES_SHADOWS, VTK_OUTPUT
 
 
-METHODS = ["slices", "ray-march", "radial-blur", "analytic"]
+METHODS = ["slices", "ray-march", "radial-blur", "analytic", "epipolar"]
 # RADIAL_BLUR measures 6% on the test scene's default view (README); at the extremes (eye in
 # the beam, light behind the camera, pencil cones) its screen-space shadows are worse.
 RADIAL_BLUR_BOUND = 0.3
@@ -48,6 +49,9 @@ def use_method(shafts, method=None):
         shafts.SetMethodToRadialBlur()
     elif method == "analytic":
         shafts.SetMethodToAnalytic()
+    elif method == "epipolar":
+        shafts.SetMethodToEpipolar()
+        shafts.SetNumberOfSteps(shafts.GetNumberOfSlices())
 
 
 def bound(value):
@@ -132,9 +136,12 @@ def test_extreme_cone_angles(angle):
     renderer, window, info, shafts, image, _ = args
     if angle < 1.0:
         # A 0.5 degree cone is a pencil about 5 cm wide at the floor: a few pixels; the
-        # comparison is over those pixels.
+        # comparison is over those pixels. EPIPOLAR interpolates each pixel from samples at
+        # their exact places on lines under a pixel apart, and across a 2-3 pixel pencil the
+        # in-scatter changes by its whole value within a pixel: measured 6.1% (the same with
+        # every sample marched), bound 8%.
         assert image.max() > 0.0
-        assert error_against_reference(*args[:5]) < bound(0.05)
+        assert error_against_reference(*args[:5]) < bound(0.08 if _method == "epipolar" else 0.05)
     else:
         # 89 degrees: the shadow-map frustum is 178 degrees wide, so a texel covers a large
         # solid angle near the edge of the cone; the error stays bounded.
@@ -166,11 +173,11 @@ def test_extreme_intensities(intensity):
 
 @pytest.mark.parametrize("slices", [1, 4096])
 def test_one_slice_and_the_maximum(method, slices):
-    if method not in ("slices", "ray-march"):
-        pytest.skip("slices / steps are SLICES and RAY_MARCH parameters")
+    if method not in ("slices", "ray-march", "epipolar"):
+        pytest.skip("slices / steps are SLICES, RAY_MARCH and EPIPOLAR parameters")
     args = render(NumberOfSlices=slices)
     renderer, window, info, shafts, image, _ = args
-    # RAY_MARCH: one slab over the lit range, `slices` steps per pixel.
+    # RAY_MARCH and EPIPOLAR: one slab over the lit range, `slices` steps per pixel or sample.
     assert shafts.GetLastNumberOfSlicesDrawn() == (slices if method == "slices" else 1)
     error = error_against_reference(*args[:5])
     # One slab: the whole lit depth range in one product-rule segment per pixel (a documented
@@ -182,8 +189,8 @@ def test_one_slice_and_the_maximum(method, slices):
 
 @pytest.mark.parametrize("size", [64, 16384])
 def test_smallest_and_largest_shadow_map(method, size):
-    if method not in ("slices", "ray-march"):
-        pytest.skip("only SLICES and RAY_MARCH use a shadow map")
+    if method not in ("slices", "ray-march", "epipolar"):
+        pytest.skip("only SLICES, RAY_MARCH and EPIPOLAR use a shadow map")
     args = render(ShadowMapSize=size)
     renderer, window, info, shafts, image, _ = args
     error = error_against_reference(*args[:5])
@@ -245,7 +252,7 @@ def test_occluder_touching_the_light():
         actor.SetMapper(mapper)
         renderer.AddActor(actor)
     renderer, window, info, shafts, image, _ = render(prepare=prepare)
-    assert shafts.GetLastShadowMapRendered() == (_method in ("slices", "ray-march"))
+    assert shafts.GetLastShadowMapRendered() == (_method in ("slices", "ray-march", "epipolar"))
     assert image.max() > 0.0
 
 
@@ -318,8 +325,8 @@ def test_point_light_extremes(method, case):
     elif case == "far away":  # 1000 units up: nearly parallel light, 1/r^2 = 1e-6
         prepare = point_light((0.3, 1000.0, 0.2), attenuation=(0.0, 0.0, 1.0))
     else:
-        if method not in ("slices", "ray-march"):
-            pytest.skip("only SLICES and RAY_MARCH use a shadow map")
+        if method not in ("slices", "ray-march", "epipolar"):
+            pytest.skip("only SLICES, RAY_MARCH and EPIPOLAR use a shadow map")
         prepare = point_light((0.4, 3.4, 0.3))
         params["ShadowMapSize"] = 16384  # faces limited to a third of the largest texture
     args = render(prepare=prepare, **params)
@@ -330,8 +337,12 @@ def test_point_light_extremes(method, case):
         # shell the shadow bias lets through where rays graze the sphere (a few texels thick).
         unshadowed = rh.reference_for(renderer, window, info, shafts, shadows=False).max()
         print(f"{method}: leak {image.max() / unshadowed:.2e} of the unshadowed peak")
-        # Measured: SLICES 1.1%, RAY_MARCH 0.93% (RADIAL_BLUR has no shadow map: 59%).
-        assert image.max() < bound(0.02) * unshadowed or _method == "radial-blur"
+        # Measured: SLICES 1.1%, RAY_MARCH 0.93% (RADIAL_BLUR has no shadow map: 59%);
+        # EPIPOLAR 2.7%: its samples lie anywhere on their lines, some nearer the silhouette
+        # (where the grazing rays leak most) than any pixel centre, and the pixels beside them
+        # take their value.
+        leak_bound = 0.04 if _method == "epipolar" else 0.02
+        assert image.max() < bound(leak_bound) * unshadowed or _method == "radial-blur"
         return
     assert error_against_reference(*args[:5]) < bound(0.03)
 

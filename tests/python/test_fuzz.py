@@ -47,6 +47,7 @@ SCALARS = [
     ("DownsampleFactor", True, False), ("AccumulationPrecision", True, False),
     ("Method", True, False), ("LatticeResolution", True, True), ("NumberOfSteps", True, True),
     ("InterleaveSize", True, False), ("RadialSamples", True, True),
+    ("EpipolarLines", True, True), ("EpipolarSamples", True, True), ("EpipolarStep", True, True),
     ("Exposure", False, True), ("Anisotropy", False, False), ("NoiseAmplitude", False, False),
     ("NoiseScale", False, True), ("Time", False, False), ("Decay", False, False),
     ("Density", False, False), ("Weight", False, False), ("RadialGuardBand", False, False),

@@ -20,7 +20,8 @@ SPOT, POINT, DIRECTIONAL = (vtkLightShaftPass.SPOT_LIGHT, vtkLightShaftPass.POIN
                             vtkLightShaftPass.DIRECTIONAL_LIGHT)
 KIND_NAMES = {SPOT: "spot", POINT: "point", DIRECTIONAL: "directional"}
 METHODS = {"slices": vtkLightShaftPass.SLICES, "ray-march": vtkLightShaftPass.RAY_MARCH,
-           "radial-blur": vtkLightShaftPass.RADIAL_BLUR, "analytic": vtkLightShaftPass.ANALYTIC}
+           "radial-blur": vtkLightShaftPass.RADIAL_BLUR, "analytic": vtkLightShaftPass.ANALYTIC,
+           "epipolar": vtkLightShaftPass.EPIPOLAR}
 
 
 def make_kind(light, kind):
@@ -451,7 +452,8 @@ def test_every_method_supports_every_kind(kind, method):
     shafts.SetMethod(vtkLightShaftPass.SLICES)
     window.Render()
     slices = rh.in_scatter(shafts)
-    tolerance = {"slices": 1e-6, "ray-march": 0.05, "radial-blur": 0.5, "analytic": 0.5}[method]
+    tolerance = {"slices": 1e-6, "ray-march": 0.05, "radial-blur": 0.5, "analytic": 0.5,
+                 "epipolar": 0.05}[method]
     assert abs(image.sum() - slices.sum()) <= tolerance * slices.sum()
 
 

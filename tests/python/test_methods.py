@@ -30,6 +30,7 @@ METHODS = {
     "radial-blur": vtkLightShaftPass.RADIAL_BLUR,
     "analytic": vtkLightShaftPass.ANALYTIC,
     "automatic": vtkLightShaftPass.AUTOMATIC,
+    "epipolar": vtkLightShaftPass.EPIPOLAR,
 }
 
 
@@ -70,6 +71,7 @@ def test_method_defaults_and_names():
     assert p.GetNumberOfSteps() == 16
     assert p.GetInterleaveSize() == 2
     assert p.GetRadialSamples() == 64
+    assert (p.GetEpipolarLines(), p.GetEpipolarSamples(), p.GetEpipolarStep()) == (512, 512, 16)
     assert (p.GetDecay(), p.GetDensity(), p.GetWeight()) == (1.0, 1.0, 1.0)
     assert p.GetRadialJitter()
     assert p.GetLastMethod() == -1
@@ -81,16 +83,19 @@ def test_method_defaults_and_names():
 def test_named_method_setters_and_clamping():
     p = vtkLightShaftPass()
     for setter, value in [("RayMarch", 1), ("RadialBlur", 2), ("Analytic", 3), ("Automatic", 4),
-                          ("Slices", 0)]:
+                          ("Epipolar", 5), ("Slices", 0)]:
         getattr(p, "SetMethodTo" + setter)()
         assert p.GetMethod() == value
     p.SetMethod(-3)
     assert p.GetMethod() == vtkLightShaftPass.SLICES
     p.SetMethod(17)
-    assert p.GetMethod() == vtkLightShaftPass.AUTOMATIC
+    assert p.GetMethod() == vtkLightShaftPass.EPIPOLAR
     for name, low, high, expect in [("NumberOfSteps", 0, 10**6, (1, 4096)),
                                     ("InterleaveSize", 0, 99, (1, 8)),
                                     ("RadialSamples", -5, 10**6, (1, 1024)),
+                                    ("EpipolarLines", 0, 10**6, (4, 2048)),
+                                    ("EpipolarSamples", 0, 10**6, (2, 2048)),
+                                    ("EpipolarStep", 0, 10**6, (1, 64)),
                                     ("Decay", -1.0, 2.0, (0.0, 1.0)),
                                     ("Density", -1.0, 2.0, (0.0, 1.0)),
                                     ("Weight", -1.0, 2.0, (0.0, 1.0))]:
@@ -131,6 +136,66 @@ def test_ray_march_matches_the_reference_and_converges():
     assert all(a > b for a, b in zip(errors, errors[1:])), errors
     assert errors[-1] < 0.01
     assert ref.energy_error(rh.in_scatter(shafts), reference) < 0.005
+
+
+def light_on_screen(renderer, info):
+    """The light's display position, and whether it lies inside the viewport."""
+    renderer.SetWorldPoint(*info.light.GetPosition(), 1.0)
+    renderer.WorldToDisplay()
+    x, y, _ = renderer.GetDisplayPoint()
+    w, h = renderer.GetRenderWindow().GetSize()
+    return 0 < x < w and 0 < y < h
+
+
+@pytest.mark.parametrize("view", ["fan", "radial", "parallel"])
+def test_epipolar_matches_the_reference_and_converges(view):
+    # fan: the light above the picture; radial: the camera pulled back until the light is in
+    # it; parallel: a parallel camera (the light's image at infinity only for a directional
+    # light; for this spot a point off or on the screen as the projection puts it).
+    def prepare(renderer, info, shafts):
+        camera = renderer.GetActiveCamera()
+        if view == "radial":
+            camera.Zoom(0.45)
+        elif view == "parallel":
+            camera.ParallelProjectionOn()
+            camera.SetParallelScale(3.0)
+    renderer, window, info, shafts = render_scene(prepare, Method=vtkLightShaftPass.EPIPOLAR,
+                                                  NumberOfSteps=64)
+    assert light_on_screen(renderer, info) == (view == "radial")
+    assert shafts.GetLastMethod() == vtkLightShaftPass.EPIPOLAR
+    assert shafts.GetLastShadowMapRendered()
+    assert shafts.GetLastNumberOfPostPasses() == 4  # coordinates, coarse, refine, fine
+    reference = rh.reference_for(renderer, window, info, shafts)
+    errors = []
+    for lines, samples, step in ((128, 256, 16), (512, 512, 16), (1024, 1024, 1)):
+        shafts.SetEpipolarLines(lines)
+        shafts.SetEpipolarSamples(samples)
+        shafts.SetEpipolarStep(step)
+        window.Render()
+        errors.append(error(renderer, window, info, shafts, reference=reference))
+    print(f"epipolar ({view}) 128x256 k16, 512x512 k16, 1024x1024 k1:",
+          [f"{e:.3%}" for e in errors])
+    assert errors[0] > errors[1] > errors[2], errors
+    assert errors[1] < 0.02 and errors[2] < 0.01
+    assert ref.energy_error(rh.in_scatter(shafts), reference) < 0.005
+
+
+def test_epipolar_with_every_sample_marched_is_the_ray_march():
+    # Step 1 marches every sample, and with a sample per pixel along lines at most a pixel
+    # apart the interpolation across lines is all that is left: the image is RAY_MARCH's at the
+    # same steps, up to the sample positions' pixel snapping.
+    renderer, window, info, shafts = render_scene(Method=vtkLightShaftPass.RAY_MARCH,
+                                                  NumberOfSteps=32, InterleaveSize=1)
+    marched = rh.in_scatter(shafts)
+    shafts.SetMethodToEpipolar()
+    shafts.SetEpipolarLines(2048)
+    shafts.SetEpipolarSamples(1024)
+    shafts.SetEpipolarStep(1)
+    window.Render()
+    epipolar = rh.in_scatter(shafts)
+    relative, pixels = ref.relative_rms_error(epipolar, marched)
+    print(f"epipolar, every sample marched, against RAY_MARCH: {relative:.3%}")
+    assert pixels > 500 and relative < 0.01
 
 
 def test_interleaved_sampling_beats_the_same_steps_without_it():
@@ -392,6 +457,7 @@ def test_each_method_compiles_only_what_it_uses():
         assert variants[name].startswith("method=")
     assert "shadow" in variants["slices"] and "jitter" in variants["slices"]
     assert "shadow" in variants["ray-march"] and "jitter" not in variants["ray-march"]
+    assert "shadow" in variants["epipolar"] and "jitter" not in variants["epipolar"]
     for name in ("radial-blur", "analytic"):
         assert "shadow" not in variants[name] and "jitter" not in variants[name]
     assert "LIGHTSHAFT_RAY_MARCH" not in variants["slices"]
@@ -402,7 +468,7 @@ def test_each_method_compiles_only_what_it_uses():
     assert "#define LIGHTSHAFT_SHADOW" not in source
 
 
-@pytest.mark.parametrize("method", ["ray-march", "radial-blur", "analytic"])
+@pytest.mark.parametrize("method", ["ray-march", "radial-blur", "analytic", "epipolar"])
 def test_cookie_colours_the_shafts_in_every_method(method):
     from vtkmodules.util.numpy_support import numpy_to_vtk
     from vtkmodules.vtkCommonDataModel import vtkImageData
@@ -430,7 +496,7 @@ def test_cookie_colours_the_shafts_in_every_method(method):
     assert coloured[..., 2].sum() > 0.2 * plain[..., 2].sum()
 
 
-@pytest.mark.parametrize("method", ["ray-march", "radial-blur", "analytic"])
+@pytest.mark.parametrize("method", ["ray-march", "radial-blur", "analytic", "epipolar"])
 def test_noise_keeps_the_mean_in_every_method(method):
     renderer, window, info, shafts = render_scene(Method=METHODS[method])
     plain = rh.in_scatter(shafts).sum()

@@ -405,6 +405,22 @@ void vtkPVLightShaftsView::SetRadialSamples(int samples)
 }
 
 //------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetEpipolarLines(int lines)
+{
+  this->Impl->Shafts->SetEpipolarLines(lines);
+}
+
+void vtkPVLightShaftsView::SetEpipolarSamples(int samples)
+{
+  this->Impl->Shafts->SetEpipolarSamples(samples);
+}
+
+void vtkPVLightShaftsView::SetEpipolarStep(int step)
+{
+  this->Impl->Shafts->SetEpipolarStep(step);
+}
+
+//------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetDecay(double decay)
 {
   this->Impl->Shafts->SetDecay(decay);

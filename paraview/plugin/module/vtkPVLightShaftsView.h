@@ -107,7 +107,8 @@ public:
   /**
    * The method and its own controls, forwarded to vtkLightShaftPass (SetMethod,
    * SetLatticeResolution, SetNumberOfSteps, SetInterleaveSize, SetRadialSamples, SetDecay,
-   * SetDensity, SetWeight, SetRadialJitter, SetRadialGuardBand; same ranges and defaults).
+   * SetDensity, SetWeight, SetRadialJitter, SetRadialGuardBand, SetEpipolarLines,
+   * SetEpipolarSamples, SetEpipolarStep; same ranges and defaults).
    */
   void SetShaftMethod(int method);
   void SetLatticeResolution(int resolution);
@@ -119,6 +120,9 @@ public:
   void SetWeight(double weight);
   void SetRadialJitter(bool jitter);
   void SetRadialGuardBand(double extent);
+  void SetEpipolarLines(int lines);
+  void SetEpipolarSamples(int samples);
+  void SetEpipolarStep(int step);
   ///@}
 
   /**

@@ -1,0 +1,222 @@
+#include "vtkLightShaftEpipolarMethod.h"
+
+#include "vtkLightShaftFrame.h"
+#include "vtkLightShaftInScatterTarget.h"
+#include "vtkLightShaftShadowMap.h"
+
+#include "vtkLightShaftOpenGL.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include "vtkLightShaftEpipolarFS.h"
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <utility>
+
+using vtkLightShaftResources::TextureKind;
+
+namespace
+{
+// The stages of vtkLightShaftEpipolarFS.
+enum Stage
+{
+  CoordinatesStage = 0,
+  CoarseStage = 1,
+  RefineStage = 2,
+  FineStage = 3,
+  UnwarpStage = 4
+};
+}
+
+//------------------------------------------------------------------------------
+vtkLightShaftEpipolarMethod::vtkLightShaftEpipolarMethod(vtkLightShaftSlabDrawer& drawer)
+  : Drawer(drawer)
+{
+  // The stages that fill the epipolar textures draw one slab over the whole of them.
+  vtkLightShaftGeometry::SlabFootprint whole;
+  whole.Index = 0;
+  whole.NearDepth = 0.0;
+  whole.Hull = { { -1.0, -1.0 }, { 1.0, -1.0 }, { 1.0, 1.0 }, { -1.0, 1.0 } };
+  this->WholeTexture.push_back(whole);
+}
+
+vtkLightShaftEpipolarMethod::~vtkLightShaftEpipolarMethod() = default;
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
+  const vtkLightShaftGeometry::LitVolume& lit,
+  vtkLightShaftInScatterTarget& target)
+{
+  const vtkLightShaftParameters& p = frame.Parameters;
+  this->Footprints = vtkLightShaftGeometry::ComputeSlabFootprints(lit, frame.Camera, 1, false);
+  if (this->Footprints.empty())
+  {
+    return nullptr;
+  }
+  vtkTextureObject* shadowMap = frame.ShadowMap->Ready(frame);
+  const bool shadows = shadowMap != nullptr;
+  vtkLightShaftShaders::Variant variant =
+    vtkLightShaftShaders::IntegrandVariant(this->GetName(), nullptr, frame, shadows);
+  variant.Description += FloatAccumulation(p);
+
+  // The lines through the light's image over the in-scatter target.
+  const int width = frame.Reduced[0];
+  const int height = frame.Reduced[1];
+  const vtkLightShaftEpipolar::Layout layout = vtkLightShaftEpipolar::ComputeLayout(
+    vtkLightShaftEpipolar::ComputeEpipole(frame.Light, frame.Camera, width, height),
+    width,
+    height,
+    p.EpipolarLines,
+    p.EpipolarSamples);
+  const int step = std::max(1, std::min(p.EpipolarStep, layout.Samples - 1));
+  const int columns = (layout.Samples - 1 + step - 1) / step + 1;
+  this->UploadEnds(frame, layout);
+
+  vtkOpenGLRenderWindow* window = frame.Window;
+  vtkTextureObject* textures[] = { this->Ends.Object,
+    this->Coordinates.Ensure(window, TextureKind::RGBA32F, layout.Samples, layout.Lines),
+    this->Coarse.Ensure(window, TextureKind::RGBA32F, columns, layout.Lines),
+    this->Refined.Ensure(window, TextureKind::RGBA32F, layout.Samples, layout.Lines),
+    this->Fine.Ensure(window, TextureKind::RGBA32F, layout.Samples, layout.Lines) };
+  // Every stage's inputs stay bound for all of them: a stage never samples its own output.
+  for (vtkTextureObject* texture : textures)
+  {
+    texture->Activate();
+  }
+  vtkLightShaftSlabDrawer::Slabs slabs =
+    vtkLightShaftSlabDrawer::Slabs::Over(lit, this->WholeTexture, target.GetDepth());
+  slabs.ShadowMap = shadowMap;
+  slabs.ShadowBias = shadows ? frame.LightStatistics->ShadowBias : 0.0;
+  bool drawn = true;
+  for (int stage = CoordinatesStage; stage <= UnwarpStage && drawn; ++stage)
+  {
+    vtkShaderProgram* program = this->ReadyStage(frame, stage, variant);
+    drawn = program != nullptr;
+    if (!drawn)
+    {
+      break;
+    }
+    SetLayoutUniforms(program, layout, step);
+    program->SetUniformi("numberOfSteps", p.NumberOfSteps);
+    const char* samplers[] = {
+      "epipolarEnds", "epipolarCoordinates", "epipolarCoarse", "epipolarRefined", "epipolarFine"
+    };
+    for (int i = 0; i < 5; ++i)
+    {
+      program->SetUniformi(samplers[i], textures[i]->GetTextureUnit());
+    }
+    if (stage == UnwarpStage)
+    {
+      // Each pixel of the lit volume's footprint, into the target.
+      target.Bind();
+      slabs.Footprints = &this->Footprints;
+      this->Drawer.Draw(frame, program, slabs);
+    }
+    else
+    {
+      this->DrawStage(frame, program, textures[stage + 1], slabs);
+    }
+  }
+  for (vtkTextureObject* texture : textures)
+  {
+    texture->Deactivate();
+  }
+  frame.LightStatistics->SlicesDrawn = static_cast<int>(this->Footprints.size());
+  return drawn ? target.GetAccumulation(0) : nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkShaderProgram* vtkLightShaftEpipolarMethod::ReadyStage(vtkLightShaftFrame& frame,
+  int stage,
+  const vtkLightShaftShaders::Variant& variant)
+{
+  vtkLightShaftShaders::Variant staged = variant;
+  staged.Defines.push_back("LIGHTSHAFT_EPIPOLAR_STAGE " + std::to_string(stage));
+  if (stage == UnwarpStage)
+  {
+    // The last stage's variant is the one the frame reports.
+    return this->ReadySlabProgram(frame, vtkLightShaftEpipolarFS, staged);
+  }
+  return vtkLightShaftMethod::ReadySlabProgram(
+    frame, this->StagePrograms[stage], vtkLightShaftEpipolarFS, staged);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftEpipolarMethod::DrawStage(vtkLightShaftFrame& frame,
+  vtkShaderProgram* program,
+  vtkTextureObject* output,
+  const vtkLightShaftSlabDrawer::Slabs& slabs)
+{
+  vtkLightShaftResources::BindTargets(
+    vtkLightShaftResources::EnsureFramebuffer(this->Framebuffer, frame.Window),
+    { output },
+    nullptr,
+    static_cast<int>(output->GetWidth()),
+    static_cast<int>(output->GetHeight()));
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  this->Drawer.Draw(frame, program, slabs);
+  ++frame.Statistics.PostPasses;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftEpipolarMethod::UploadEnds(vtkLightShaftFrame& frame,
+  const vtkLightShaftEpipolar::Layout& layout)
+{
+  this->EndTexels.resize(4 * static_cast<size_t>(layout.Lines));
+  for (int i = 0; i < layout.Lines; ++i)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      this->EndTexels[4 * i + k] = static_cast<float>(layout.Ends[i][k]);
+    }
+  }
+  vtkTextureObject* ends = this->Ends.Ensure(frame.Window, TextureKind::RGBA32F, layout.Lines, 1);
+  ends->Bind();
+  glTexSubImage2D(
+    GL_TEXTURE_2D, 0, 0, 0, layout.Lines, 1, GL_RGBA, GL_FLOAT, this->EndTexels.data());
+  ends->Deactivate();
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftEpipolarMethod::SetLayoutUniforms(vtkShaderProgram* program,
+  const vtkLightShaftEpipolar::Layout& layout,
+  int step)
+{
+  using Shape = vtkLightShaftEpipolar::Layout::Shape;
+  const int form = layout.Form == Shape::Radial ? 0 : (layout.Form == Shape::Fan ? 1 : 2);
+  auto vec2 = [](const glm::dvec2& v) {
+    return std::array<float, 2>{ static_cast<float>(v.x), static_cast<float>(v.y) };
+  };
+  program->SetUniformi("epipolarLines", layout.Lines);
+  program->SetUniformi("epipolarSamples", layout.Samples);
+  program->SetUniformi("epipolarStep", step);
+  program->SetUniformi("epipolarForm", form);
+  program->SetUniform2f("epipolarOrigin", vec2(layout.Origin).data());
+  program->SetUniform2f("epipolarAxis", vec2(layout.Axis).data());
+  program->SetUniform2f("epipolarNormal", vec2(layout.Normal).data());
+  program->SetUniformf("epipolarStart", static_cast<float>(layout.Start));
+  program->SetUniformf("epipolarSpan", static_cast<float>(layout.Span));
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftEpipolarMethod::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->SlabProgram.Release();
+  for (vtkLightShaftShaders::Program& program : this->StagePrograms)
+  {
+    program.Release();
+  }
+  for (auto* texture :
+    { &this->Ends, &this->Coordinates, &this->Coarse, &this->Refined, &this->Fine })
+  {
+    texture->Release(window);
+  }
+  vtkLightShaftResources::ReleaseFramebuffer(this->Framebuffer, window);
+}

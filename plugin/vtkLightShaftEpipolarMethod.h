@@ -1,0 +1,77 @@
+/**
+ * @file   vtkLightShaftEpipolarMethod.h
+ * @brief  EPIPOLAR: in-scatter marched along lines through the light's image and interpolated
+ *         (private, not installed).
+ */
+
+#ifndef vtkLightShaftEpipolarMethod_h
+#define vtkLightShaftEpipolarMethod_h
+
+#include "vtkLightShaftEpipolar.h"   // For the layout
+#include "vtkLightShaftGeometry.h"   // For the footprints kept between frames
+#include "vtkLightShaftMethod.h"     // For the base class
+#include "vtkLightShaftResources.h"  // For the owned textures
+#include "vtkLightShaftSlabDrawer.h" // For the slabs drawn
+#include "vtkSmartPointer.h"         // For the framebuffer held
+
+#include <vector> // For the footprints and the lines' ends
+
+class vtkOpenGLFramebufferObject;
+
+/**
+ * @class   vtkLightShaftEpipolarMethod
+ * @brief   EPIPOLAR (Engelhardt and Dachsbacher 2010; Yusov 2013): the in-scatter changes
+ *          smoothly along the screen's lines through the light's image except where the depth
+ *          jumps, so it is marched (as RAY_MARCH marches a pixel, NumberOfSteps segments) at
+ *          every EpipolarStep-th of EpipolarSamples samples on each of EpipolarLines lines,
+ *          and at the samples where the depth breaks or the coarse in-scatter changes sharply;
+ *          the other samples are interpolated along their line, and each pixel from the four
+ *          samples around it on its two neighbouring lines whose surface is its own. A pixel
+ *          with no such sample (a thin prop between lines) is marched itself.
+ *
+ * Works for every light kind: the epipole is a spot or point light's image or a directional
+ * light's vanishing point; lines are parallel when it lies at infinity (a parallel camera) and
+ * arbitrary when it is undefined (the light at the eye). The layout is
+ * vtkLightShaftEpipolar's, computed in double on the CPU; the lines' ends are uploaded.
+ */
+class vtkLightShaftEpipolarMethod : public vtkLightShaftMethod
+{
+public:
+  explicit vtkLightShaftEpipolarMethod(vtkLightShaftSlabDrawer& drawer);
+  ~vtkLightShaftEpipolarMethod() override;
+
+  const char* GetName() const override { return "epipolar"; }
+  vtkTextureObject* Render(vtkLightShaftFrame& frame,
+    const vtkLightShaftGeometry::LitVolume& lit,
+    vtkLightShaftInScatterTarget& target) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+private:
+  void UploadEnds(vtkLightShaftFrame& frame, const vtkLightShaftEpipolar::Layout& layout);
+  static void SetLayoutUniforms(vtkShaderProgram* program,
+    const vtkLightShaftEpipolar::Layout& layout,
+    int step);
+  /// The program of stage `stage` (0 to 4) in `variant`, bound.
+  vtkShaderProgram* ReadyStage(vtkLightShaftFrame& frame,
+    int stage,
+    const vtkLightShaftShaders::Variant& variant);
+  /// Draw a stage's program over the whole of `output`, cleared first.
+  void DrawStage(vtkLightShaftFrame& frame,
+    vtkShaderProgram* program,
+    vtkTextureObject* output,
+    const vtkLightShaftSlabDrawer::Slabs& slabs);
+
+  vtkLightShaftSlabDrawer& Drawer;
+  std::vector<vtkLightShaftGeometry::SlabFootprint> Footprints;
+  std::vector<vtkLightShaftGeometry::SlabFootprint> WholeTexture;
+  std::vector<float> EndTexels;
+  vtkLightShaftShaders::Program StagePrograms[4]; ///< stages 0 to 3; the base's is the unwarp
+  vtkLightShaftResources::OwnedTexture Ends;
+  vtkLightShaftResources::OwnedTexture Coordinates;
+  vtkLightShaftResources::OwnedTexture Coarse;
+  vtkLightShaftResources::OwnedTexture Refined;
+  vtkLightShaftResources::OwnedTexture Fine;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+};
+
+#endif
