@@ -12,6 +12,7 @@
 #include "vtkTextureObject.h"
 
 #include "vtkLightShaftEpipolarFS.h"
+#include "vtkLightShaftEpipolarMarkFS.h"
 
 #include <algorithm>
 #include <array>
@@ -29,7 +30,8 @@ enum Stage
   CoarseStage = 1,
   RefineStage = 2,
   FineStage = 3,
-  UnwarpStage = 4
+  UnwarpStage = 4,
+  MarchStage = 5
 };
 }
 
@@ -82,7 +84,14 @@ vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
     this->Coordinates.Ensure(window, TextureKind::RGBA32F, layout.Samples, layout.Lines),
     this->Coarse.Ensure(window, TextureKind::RGBA32F, columns, layout.Lines),
     this->Refined.Ensure(window, TextureKind::RGBA32F, layout.Samples, layout.Lines),
-    this->Fine.Ensure(window, TextureKind::RGBA32F, layout.Samples, layout.Lines) };
+    this->Fine.Ensure(window, TextureKind::RGBA32F, layout.Samples, layout.Lines),
+    this->Marked.Ensure(window, TextureKind::RGBA8, width, height) };
+  const char* samplers[] = { "epipolarEnds",
+    "epipolarCoordinates",
+    "epipolarCoarse",
+    "epipolarRefined",
+    "epipolarFine",
+    "epipolarMarked" };
   // Every stage's inputs stay bound for all of them: a stage never samples its own output.
   for (vtkTextureObject* texture : textures)
   {
@@ -93,8 +102,12 @@ vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
   slabs.ShadowMap = shadowMap;
   slabs.ShadowBias = shadows ? frame.LightStatistics->ShadowBias : 0.0;
   bool drawn = true;
-  for (int stage = CoordinatesStage; stage <= UnwarpStage && drawn; ++stage)
+  for (int stage = CoordinatesStage; stage <= MarchStage && drawn; ++stage)
   {
+    if (stage == MarchStage)
+    {
+      this->MarkForMarch(frame, textures[5]);
+    }
     vtkShaderProgram* program = this->ReadyStage(frame, stage, variant);
     drawn = program != nullptr;
     if (!drawn)
@@ -103,24 +116,32 @@ vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
     }
     SetLayoutUniforms(program, layout, step);
     program->SetUniformi("numberOfSteps", p.NumberOfSteps);
-    const char* samplers[] = {
-      "epipolarEnds", "epipolarCoordinates", "epipolarCoarse", "epipolarRefined", "epipolarFine"
-    };
-    for (int i = 0; i < 5; ++i)
+    for (int i = 0; i < 6; ++i)
     {
       program->SetUniformi(samplers[i], textures[i]->GetTextureUnit());
     }
+    if (stage < UnwarpStage)
+    {
+      this->DrawStage(frame, program, textures[stage + 1], slabs);
+      continue;
+    }
+    // The pixels of the lit volume's footprint, into the target: interpolated, marking those
+    // with no sample on their surface (a second output, cleared first), then those marched.
+    slabs.Footprints = &this->Footprints;
     if (stage == UnwarpStage)
     {
-      // Each pixel of the lit volume's footprint, into the target.
-      target.Bind();
-      slabs.Footprints = &this->Footprints;
-      this->Drawer.Draw(frame, program, slabs);
+      target.BindWith(textures[5]);
+      const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+      glClearBufferfv(GL_COLOR, 1, zero);
     }
     else
     {
-      this->DrawStage(frame, program, textures[stage + 1], slabs);
+      // Only the marked pixels pass the depth test (MarkForMarch); the march stage checks the
+      // scene's depth itself.
+      vtkLightShaftResources::BindTargets(
+        this->Framebuffer, { target.GetAccumulation(0) }, this->MarkDepth.Object, width, height);
     }
+    this->Drawer.Draw(frame, program, slabs);
   }
   for (vtkTextureObject* texture : textures)
   {
@@ -137,13 +158,38 @@ vtkShaderProgram* vtkLightShaftEpipolarMethod::ReadyStage(vtkLightShaftFrame& fr
 {
   vtkLightShaftShaders::Variant staged = variant;
   staged.Defines.push_back("LIGHTSHAFT_EPIPOLAR_STAGE " + std::to_string(stage));
-  if (stage == UnwarpStage)
+  if (stage == MarchStage)
   {
     // The last stage's variant is the one the frame reports.
     return this->ReadySlabProgram(frame, vtkLightShaftEpipolarFS, staged);
   }
   return vtkLightShaftMethod::ReadySlabProgram(
     frame, this->StagePrograms[stage], vtkLightShaftEpipolarFS, staged);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftEpipolarMethod::MarkForMarch(vtkLightShaftFrame& frame, vtkTextureObject* marked)
+{
+  vtkOpenGLRenderWindow* window = frame.Window;
+  const int width = static_cast<int>(marked->GetWidth());
+  const int height = static_cast<int>(marked->GetHeight());
+  vtkTextureObject* depth = this->MarkDepth.Ensure(window, TextureKind::Depth32F, width, height);
+  vtkLightShaftResources::BindTargets(
+    vtkLightShaftResources::EnsureFramebuffer(this->Framebuffer, window), {}, depth, width, height);
+  vtkShaderProgram* program = this->Mark.Ready(window, vtkLightShaftEpipolarMarkFS);
+  if (!program)
+  {
+    return;
+  }
+  vtkOpenGLState* ostate = window->GetState();
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  program->SetUniformi("marked", marked->GetTextureUnit());
+  this->Mark.Render();
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ++frame.Statistics.PostPasses;
 }
 
 //------------------------------------------------------------------------------
@@ -214,9 +260,11 @@ void vtkLightShaftEpipolarMethod::ReleaseGraphicsResources(vtkWindow* window)
     program.Release();
   }
   for (auto* texture :
-    { &this->Ends, &this->Coordinates, &this->Coarse, &this->Refined, &this->Fine })
+    { &this->Ends, &this->Coordinates, &this->Coarse, &this->Refined, &this->Fine, &this->Marked })
   {
     texture->Release(window);
   }
+  this->MarkDepth.Release(window);
+  this->Mark.Release(window);
   vtkLightShaftResources::ReleaseFramebuffer(this->Framebuffer, window);
 }

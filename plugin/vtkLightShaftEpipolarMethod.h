@@ -51,10 +51,12 @@ private:
   static void SetLayoutUniforms(vtkShaderProgram* program,
     const vtkLightShaftEpipolar::Layout& layout,
     int step);
-  /// The program of stage `stage` (0 to 4) in `variant`, bound.
+  /// The program of stage `stage` (0 to 5) in `variant`, bound.
   vtkShaderProgram* ReadyStage(vtkLightShaftFrame& frame,
     int stage,
     const vtkLightShaftShaders::Variant& variant);
+  /// MarkDepth: 1 where the unwarp marked a pixel in `marked` (to be marched), else 0.
+  void MarkForMarch(vtkLightShaftFrame& frame, vtkTextureObject* marked);
   /// Draw a stage's program over the whole of `output`, cleared first.
   void DrawStage(vtkLightShaftFrame& frame,
     vtkShaderProgram* program,
@@ -65,12 +67,15 @@ private:
   std::vector<vtkLightShaftGeometry::SlabFootprint> Footprints;
   std::vector<vtkLightShaftGeometry::SlabFootprint> WholeTexture;
   std::vector<float> EndTexels;
-  vtkLightShaftShaders::Program StagePrograms[4]; ///< stages 0 to 3; the base's is the unwarp
+  vtkLightShaftShaders::Program StagePrograms[5]; ///< stages 0 to 4; the base's is the march
   vtkLightShaftResources::OwnedTexture Ends;
   vtkLightShaftResources::OwnedTexture Coordinates;
   vtkLightShaftResources::OwnedTexture Coarse;
   vtkLightShaftResources::OwnedTexture Refined;
   vtkLightShaftResources::OwnedTexture Fine;
+  vtkLightShaftResources::OwnedTexture Marked;
+  vtkLightShaftResources::OwnedTexture MarkDepth;
+  vtkLightShaftResources::FullScreenPass Mark;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
 };
 

@@ -143,6 +143,11 @@ vtkTextureObject* vtkLightShaftInScatterTarget::GetSum()
 //------------------------------------------------------------------------------
 void vtkLightShaftInScatterTarget::Bind()
 {
+  this->BindWith(nullptr);
+}
+
+void vtkLightShaftInScatterTarget::BindWith(vtkTextureObject* extra)
+{
   vtkOpenGLFramebufferObject* fbo = this->AccumulationFramebuffer;
   if (!fbo)
   {
@@ -159,6 +164,11 @@ void vtkLightShaftInScatterTarget::Bind()
       depthTest,
       lw,
       lh);
+  }
+  else if (extra)
+  {
+    vtkLightShaftResources::BindTargets(
+      fbo, { this->Accumulation[0].Object, extra }, depthTest, lw, lh);
   }
   else
   {

@@ -45,6 +45,9 @@ public:
 
   /// Bind the accumulation buffers and the depth-test copy for drawing.
   void Bind();
+  /// Bind the (single) accumulation buffer and the depth-test copy with `extra` (same size) as
+  /// a second colour attachment: a method's own output of the same draw.
+  void BindWith(vtkTextureObject* extra);
 
   /// The depth the shafts read (reduced resolution).
   vtkTextureObject* GetDepth();

@@ -9,6 +9,7 @@ set(lightshafts_pass_shaders
   vtkLightShaftDepthDownsampleFS
   vtkLightShaftDepthResolveFS
   vtkLightShaftEpipolarFS
+  vtkLightShaftEpipolarMarkFS
   vtkLightShaftIntegrand
   vtkLightShaftLightKind
   vtkLightShaftLightSpace
