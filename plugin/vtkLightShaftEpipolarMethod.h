@@ -27,7 +27,10 @@ class vtkOpenGLFramebufferObject;
  *          and at the samples where the depth breaks or the coarse in-scatter changes sharply;
  *          the other samples are interpolated along their line, and each pixel from the four
  *          samples around it on its two neighbouring lines whose surface is its own. A pixel
- *          with no such sample (a thin prop between lines) is marched itself.
+ *          with no such sample (a thin prop between lines), or within 1.5 pixels of a point or
+ *          spot light's image, is marked and marched itself, behind a depth mask of the marks
+ *          (llvmpipe shades every pixel of a draw through a branch none of them takes; only
+ *          blocks the depth test rejects whole are skipped).
  *
  * Works for every light kind: the epipole is a spot or point light's image or a directional
  * light's vanishing point; lines are parallel when it lies at infinity (a parallel camera) and
