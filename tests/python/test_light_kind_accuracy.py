@@ -67,6 +67,18 @@ def reference(scene, shadows=True):
     return rh.reference_for(renderer, window, info, shafts, lights=lights, shadows=shadows)
 
 
+def scene_reference(renderer, shafts):
+    from lightshafts import vtkLightShaftReference
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    reference = vtkLightShaftReference()
+    reference.SetRenderer(renderer)
+    reference.SetLightShaftPass(shafts)
+    reference.Update()
+    image = reference.GetOutput()
+    w, h, _ = image.GetDimensions()
+    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, 3).astype(np.float64)
+
+
 def relative_rms(shafts, expected):
     error, pixels = ref.relative_rms_error(rh.in_scatter(shafts), expected)
     assert pixels > 2000  # a real part of the image
@@ -84,6 +96,57 @@ def test_the_point_lights_shadow_crosses_a_cube_face_seam():
     from_seam = np.degrees(np.arcsin(abs(axis @ np.array([1.0, 1.0, 0.0])) /
                                      (distance * np.sqrt(2.0))))
     assert axis[0] > 0.0 > axis[1] and from_seam < 5.0 and half_angle > 20.0
+
+
+@pytest.mark.parametrize("corner", [(1.0, 1.0, 1.0), (-1.0, 1.0, 0.0), (0.0, -1.0, -1.0)])
+def test_a_caster_towards_a_cube_face_corner_casts(corner):
+    # A plate 2.5 from the point light towards a corner (or an edge) of its cube map, facing
+    # it: its axial depth in the faces is about 2.5 / sqrt(3) (or / sqrt(2)). With the distance
+    # to the plate as the faces' near plane the plate was clipped out of the map and cast no
+    # shadow (two random scenes lost a box's shadow this way: 1.2% and 2.2% over their image;
+    # here 22.5% and 1.4% towards the edges before the fix, 0.33% and 0.65% after; the corner
+    # case measures 0.41% either way).
+    from vtkmodules.vtkFiltersSources import vtkCubeSource
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
+    renderer, window = rh.make_window(WIDTH, HEIGHT)
+    info = scenes.sphere_and_floor(renderer)
+    renderer.RemoveAllViewProps()
+    light_position = np.array([0.0, 2.0, 0.0])
+    direction = np.asarray(corner) / np.linalg.norm(corner)
+    plate = vtkCubeSource()
+    plate.SetXLength(1.6)
+    plate.SetYLength(1.6)
+    plate.SetZLength(0.05)
+    actor = vtkActor()
+    actor.SetMapper(vtkPolyDataMapper())
+    actor.GetMapper().SetInputConnection(plate.GetOutputPort())
+    actor.SetPosition(*(light_position + 2.5 * direction))
+    # Face the light: the plate's normal (+z) along the direction.
+    azimuth = np.degrees(np.arctan2(direction[0], direction[2]))
+    elevation = np.degrees(np.arcsin(direction[1]))
+    actor.SetOrientation(-elevation, azimuth, 0.0)
+    renderer.AddActor(actor)
+    lights = rh.make_light_kind(renderer, info, "point-constant", tuple(light_position))
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(*(light_position + 2.5 * direction + 6.0 * np.cross(direction, [0.3, 0.9, 0.1])))
+    camera.SetFocalPoint(*(light_position + 3.5 * direction))
+    renderer.ResetCameraClippingRange()
+    shafts = rh.plain_slab_pass(Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=128,
+                                InterleaveSize=1, ShadowMapSize=2048)
+    renderer.SetPass(shafts)
+    window.Render()
+    assert shafts.GetLastLightKind(0) == vtkLightShaftPass.POINT_LIGHT
+    # vtkLightShaftReference (the scene's own polygons): the analytic reference knows the
+    # sphere-and-floor scene only.
+    expected = scene_reference(renderer, shafts)
+    actor.VisibilityOff()
+    without_plate = scene_reference(renderer, shafts)
+    actor.VisibilityOn()
+    # The plate's shadow is a real part of the picture.
+    assert ref.relative_rms_error(without_plate, expected)[0] > 0.05
+    error = relative_rms(shafts, expected)
+    print(f"point light, caster towards the cube's {corner}: relative RMS {error:.3%}")
+    assert error < 0.01
 
 
 @pytest.mark.parametrize("kind", KINDS)
