@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -69,12 +70,17 @@ vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
   // The lines through the light's image over the in-scatter target.
   const int width = frame.Reduced[0];
   const int height = frame.Reduced[1];
+  // No more lines than the target's boundary has pixels, nor samples than two per pixel of its
+  // diagonal: beyond, they sample the same pixels again.
+  const int lines = std::min(p.EpipolarLines, 2 * (width + height));
+  const int samples = std::min(p.EpipolarSamples,
+    2 * static_cast<int>(std::ceil(std::sqrt(double(width) * width + double(height) * height))));
   const vtkLightShaftEpipolar::Layout layout = vtkLightShaftEpipolar::ComputeLayout(
     vtkLightShaftEpipolar::ComputeEpipole(frame.Light, frame.Camera, width, height),
     width,
     height,
-    p.EpipolarLines,
-    p.EpipolarSamples);
+    lines,
+    samples);
   const int step = std::max(1, std::min(p.EpipolarStep, layout.Samples - 1));
   const int columns = (layout.Samples - 1 + step - 1) / step + 1;
   this->UploadEnds(frame, layout);

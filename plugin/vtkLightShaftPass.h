@@ -492,7 +492,7 @@ public:
   /**
    * EPIPOLAR: the lines through the light's screen image along which the in-scatter is
    * sampled, in [4, 2048]. Their ends are evenly spaced along the in-scatter target's
-   * boundary. Default is 512.
+   * boundary; no more lines are used than the boundary has pixels. Default is 512.
    */
   vtkSetClampMacro(EpipolarLines, int, 4, 2048);
   vtkGetMacro(EpipolarLines, int);
@@ -501,7 +501,8 @@ public:
   ///@{
   /**
    * EPIPOLAR: the samples on each line, evenly spaced from where it enters the in-scatter
-   * target to where it leaves it, in [2, 2048]. Default is 512.
+   * target to where it leaves it, in [2, 2048]; no more are used than two per pixel of the
+   * target's diagonal. Default is 512.
    */
   vtkSetClampMacro(EpipolarSamples, int, 2, 2048);
   vtkGetMacro(EpipolarSamples, int);

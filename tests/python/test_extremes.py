@@ -338,10 +338,11 @@ def test_point_light_extremes(method, case):
         unshadowed = rh.reference_for(renderer, window, info, shafts, shadows=False).max()
         print(f"{method}: leak {image.max() / unshadowed:.2e} of the unshadowed peak")
         # Measured: SLICES 1.1%, RAY_MARCH 0.93% (RADIAL_BLUR has no shadow map: 59%);
-        # EPIPOLAR 2.7%: its samples lie anywhere on their lines, some nearer the silhouette
-        # (where the grazing rays leak most) than any pixel centre, and the pixels beside them
-        # take their value.
-        leak_bound = 0.04 if _method == "epipolar" else 0.02
+        # EPIPOLAR 3.9% (2.7% with 512 samples per line; 400 here, two per pixel of the
+        # diagonal): its samples lie anywhere on their lines, some nearer the silhouette (where
+        # the grazing rays leak most) than any pixel centre, and the pixels beside them take
+        # their value.
+        leak_bound = 0.06 if _method == "epipolar" else 0.02
         assert image.max() < bound(leak_bound) * unshadowed or _method == "radial-blur"
         return
     assert error_against_reference(*args[:5]) < bound(0.03)
