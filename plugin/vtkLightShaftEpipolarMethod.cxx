@@ -2,7 +2,6 @@
 
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftInScatterTarget.h"
-#include "vtkLightShaftShadowMap.h"
 
 #include "vtkLightShaftOpenGL.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -56,16 +55,12 @@ vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
   vtkLightShaftInScatterTarget& target)
 {
   const vtkLightShaftParameters& p = frame.Parameters;
-  this->Footprints = vtkLightShaftGeometry::ComputeSlabFootprints(lit, frame.Camera, 1, false);
-  if (this->Footprints.empty())
+  vtkTextureObject* shadowMap = nullptr;
+  vtkLightShaftShaders::Variant variant;
+  if (!this->PrepareMarch(frame, lit, nullptr, this->Footprints, shadowMap, variant))
   {
     return nullptr;
   }
-  vtkTextureObject* shadowMap = frame.ShadowMap->Ready(frame);
-  const bool shadows = shadowMap != nullptr;
-  vtkLightShaftShaders::Variant variant =
-    vtkLightShaftShaders::IntegrandVariant(this->GetName(), nullptr, frame, shadows);
-  variant.Description += FloatAccumulation(p);
 
   // The lines through the light's image over the in-scatter target.
   const int width = frame.Reduced[0];
@@ -106,7 +101,7 @@ vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
   vtkLightShaftSlabDrawer::Slabs slabs =
     vtkLightShaftSlabDrawer::Slabs::Over(lit, this->WholeTexture, target.GetDepth());
   slabs.ShadowMap = shadowMap;
-  slabs.ShadowBias = shadows ? frame.LightStatistics->ShadowBias : 0.0;
+  slabs.ShadowBias = shadowMap ? frame.LightStatistics->ShadowBias : 0.0;
   bool drawn = true;
   for (int stage = CoordinatesStage; stage <= MarchStage && drawn; ++stage)
   {

@@ -2,6 +2,7 @@
 
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftPass.h"
+#include "vtkLightShaftShadowMap.h"
 
 #include "vtkObject.h"
 
@@ -48,4 +49,24 @@ vtkShaderProgram* vtkLightShaftMethod::ReadySlabProgram(vtkLightShaftFrame& fram
     vtkErrorWithObjectMacro(frame.Owner, "Could not build the light-shaft slice shader.");
   }
   return program;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightShaftMethod::PrepareMarch(vtkLightShaftFrame& frame,
+  const vtkLightShaftGeometry::LitVolume& lit,
+  const char* define,
+  std::vector<vtkLightShaftGeometry::SlabFootprint>& footprints,
+  vtkTextureObject*& shadowMap,
+  vtkLightShaftShaders::Variant& variant) const
+{
+  footprints = vtkLightShaftGeometry::ComputeSlabFootprints(lit, frame.Camera, 1, false);
+  if (footprints.empty())
+  {
+    return false;
+  }
+  shadowMap = frame.ShadowMap->Ready(frame);
+  variant =
+    vtkLightShaftShaders::IntegrandVariant(this->GetName(), define, frame, shadowMap != nullptr);
+  variant.Description += FloatAccumulation(frame.Parameters);
+  return true;
 }

@@ -6,21 +6,18 @@
 #ifndef vtkLightShaftMethod_h
 #define vtkLightShaftMethod_h
 
+#include "vtkLightShaftGeometry.h"  // For the slab footprints
 #include "vtkLightShaftResources.h" // For TextureKind
 #include "vtkLightShaftShaders.h"   // For the slab program
 
 #include <string> // For the shader variant
+#include <vector> // For the slab footprints
 
 class vtkTextureObject;
 class vtkWindow;
 class vtkLightShaftInScatterTarget;
 struct vtkLightShaftFrame;
 struct vtkLightShaftParameters;
-
-namespace vtkLightShaftGeometry
-{
-struct LitVolume;
-}
 
 /**
  * @class   vtkLightShaftMethod
@@ -81,6 +78,19 @@ protected:
     vtkLightShaftShaders::Program& program,
     const char* fragment,
     const vtkLightShaftShaders::Variant& variant);
+
+  /**
+   * The set-up of a march over one slab (RAY_MARCH, EPIPOLAR): the lit volume's footprint into
+   * `footprints` (false when it is empty: nothing to draw), the light's shadow map readied into
+   * `shadowMap` (nullptr without casters), and the integrand variant with `define` (may be
+   * nullptr) and the float accumulation.
+   */
+  bool PrepareMarch(vtkLightShaftFrame& frame,
+    const vtkLightShaftGeometry::LitVolume& lit,
+    const char* define,
+    std::vector<vtkLightShaftGeometry::SlabFootprint>& footprints,
+    vtkTextureObject*& shadowMap,
+    vtkLightShaftShaders::Variant& variant) const;
 
   /// " accumulate=float32" or " accumulate=float16": the description of a float accumulation.
   static const char* FloatAccumulation(const vtkLightShaftParameters& parameters);

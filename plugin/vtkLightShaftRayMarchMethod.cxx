@@ -3,7 +3,6 @@
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftInScatterTarget.h"
 #include "vtkLightShaftPass.h"
-#include "vtkLightShaftShadowMap.h"
 #include "vtkLightShaftSlabDrawer.h"
 
 #include "vtkShaderProgram.h"
@@ -29,16 +28,12 @@ vtkTextureObject* vtkLightShaftRayMarchMethod::Render(vtkLightShaftFrame& frame,
   vtkLightShaftInScatterTarget& target)
 {
   const vtkLightShaftParameters& p = frame.Parameters;
-  this->Footprints = vtkLightShaftGeometry::ComputeSlabFootprints(lit, frame.Camera, 1, false);
-  if (this->Footprints.empty())
+  vtkTextureObject* shadowMap = nullptr;
+  vtkLightShaftShaders::Variant variant;
+  if (!this->PrepareMarch(frame, lit, "LIGHTSHAFT_RAY_MARCH", this->Footprints, shadowMap, variant))
   {
     return nullptr;
   }
-  vtkTextureObject* shadowMap = frame.ShadowMap->Ready(frame);
-  const bool shadows = shadowMap != nullptr;
-  vtkLightShaftShaders::Variant variant =
-    vtkLightShaftShaders::IntegrandVariant(this->GetName(), "LIGHTSHAFT_RAY_MARCH", frame, shadows);
-  variant.Description += FloatAccumulation(p);
   vtkShaderProgram* program = this->ReadySlabProgram(frame, vtkLightShaftRayMarchFS, variant);
   if (!program)
   {
@@ -51,7 +46,7 @@ vtkTextureObject* vtkLightShaftRayMarchMethod::Render(vtkLightShaftFrame& frame,
   vtkLightShaftSlabDrawer::Slabs slabs =
     vtkLightShaftSlabDrawer::Slabs::Over(lit, this->Footprints, target.GetDepth());
   slabs.ShadowMap = shadowMap;
-  slabs.ShadowBias = shadows ? frame.LightStatistics->ShadowBias : 0.0;
+  slabs.ShadowBias = shadowMap ? frame.LightStatistics->ShadowBias : 0.0;
   this->Drawer.Draw(frame, program, slabs);
   frame.LightStatistics->SlicesDrawn = static_cast<int>(this->Footprints.size());
 

@@ -39,9 +39,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
 import render_helpers as rh  # noqa: E402
-from lightshafts import (  # noqa: E402
-    scenes, vtkLightShaftFetchFloor, vtkLightShaftPass, vtkLightShaftReference)
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from lightshafts import scenes, vtkLightShaftFetchFloor, vtkLightShaftPass  # noqa: E402
 
 SCENES = {
     "sphere-and-floor": (scenes.sphere_and_floor, (0.05, 0.04, 0.03), (0.02, 0.01, 0.03)),
@@ -122,13 +120,7 @@ def configure(shafts, sigma_s, sigma_a, params):
 
 
 def reference_image(renderer, shafts):
-    reference = vtkLightShaftReference()
-    reference.SetRenderer(renderer)
-    reference.SetLightShaftPass(shafts)
-    reference.Update()
-    image = reference.GetOutput()
-    w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, 3).copy()
+    return rh.scene_reference(renderer, shafts)
 
 
 def metrics(image, reference):

@@ -61,6 +61,19 @@ def in_scatter(shaft_pass):
     return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, 3).astype(np.float64)
 
 
+def scene_reference(renderer, shaft_pass):
+    """vtkLightShaftReference's image of the renderer's own props (float64 reference, exact
+    visibility) with the pass's light and medium, as (height, width, 3), row 0 at the bottom."""
+    from lightshafts import vtkLightShaftReference
+    reference = vtkLightShaftReference()
+    reference.SetRenderer(renderer)
+    reference.SetLightShaftPass(shaft_pass)
+    reference.Update()
+    image = reference.GetOutput()
+    w, h, _ = image.GetDimensions()
+    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, 3).astype(np.float64)
+
+
 def add_sphere(renderer, centre, radius, color, resolution=32):
     """Add a sphere actor to `renderer` and return it."""
     from vtkmodules.vtkFiltersSources import vtkSphereSource

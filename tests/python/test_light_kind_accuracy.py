@@ -67,18 +67,6 @@ def reference(scene, shadows=True):
     return rh.reference_for(renderer, window, info, shafts, lights=lights, shadows=shadows)
 
 
-def scene_reference(renderer, shafts):
-    from lightshafts import vtkLightShaftReference
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    reference = vtkLightShaftReference()
-    reference.SetRenderer(renderer)
-    reference.SetLightShaftPass(shafts)
-    reference.Update()
-    image = reference.GetOutput()
-    w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, 3).astype(np.float64)
-
-
 def relative_rms(shafts, expected):
     error, pixels = ref.relative_rms_error(rh.in_scatter(shafts), expected)
     assert pixels > 2000  # a real part of the image
@@ -138,9 +126,9 @@ def test_a_caster_towards_a_cube_face_corner_casts(corner):
     assert shafts.GetLastLightKind(0) == vtkLightShaftPass.POINT_LIGHT
     # vtkLightShaftReference (the scene's own polygons): the analytic reference knows the
     # sphere-and-floor scene only.
-    expected = scene_reference(renderer, shafts)
+    expected = rh.scene_reference(renderer, shafts)
     actor.VisibilityOff()
-    without_plate = scene_reference(renderer, shafts)
+    without_plate = rh.scene_reference(renderer, shafts)
     actor.VisibilityOn()
     # The plate's shadow is a real part of the picture.
     assert ref.relative_rms_error(without_plate, expected)[0] > 0.05
