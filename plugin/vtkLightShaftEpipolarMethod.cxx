@@ -42,7 +42,7 @@ vtkLightShaftEpipolarMethod::vtkLightShaftEpipolarMethod(vtkLightShaftSlabDrawer
   // The stages that fill the epipolar textures draw one slab over the whole of them.
   vtkLightShaftGeometry::SlabFootprint whole;
   whole.Index = 0;
-  whole.NearDepth = 0.0;
+  whole.NearDepth = 0.0; // set per frame
   whole.Hull = { { -1.0, -1.0 }, { 1.0, -1.0 }, { 1.0, 1.0 }, { -1.0, 1.0 } };
   this->WholeTexture.push_back(whole);
 }
@@ -98,6 +98,9 @@ vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
   {
     texture->Activate();
   }
+  // Drawn at the lit range's near depth: a view depth of 0 projects to an infinite depth with a
+  // perspective camera, which a GPU may clip the whole draw for.
+  this->WholeTexture[0].NearDepth = lit.Nearest;
   vtkLightShaftSlabDrawer::Slabs slabs =
     vtkLightShaftSlabDrawer::Slabs::Over(lit, this->WholeTexture, target.GetDepth());
   slabs.ShadowMap = shadowMap;
