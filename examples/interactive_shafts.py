@@ -8,11 +8,13 @@ as the OpenGL article's demo does, and compare the methods on one scene.
         --play examples/interactive_shafts.keys -o last.png          # replay, offscreen
 
 Keys (press h for this list):
-  m / M          next / previous method (slices, ray march, radial blur, analytic, automatic)
+  m / M          next / previous method (slices, ray march, radial blur, analytic, automatic,
+                 epipolar, light volume)
   arrows         move the light in x and z; PageUp / PageDown: up and down
   + / -          Exposure x1.25 / /1.25
   s / S          scattering coefficient /1.25 / x1.25
-  ] / [          twice / half the slices (SLICES), steps (RAY_MARCH) or samples (RADIAL_BLUR)
+  ] / [          twice / half the slices (SLICES), steps (RAY_MARCH, EPIPOLAR), samples
+                 (RADIAL_BLUR) or cells (LIGHT_VOLUME)
   d / D          radial blur Decay -0.01 / +0.01
   w / W          radial blur Weight -0.1 / +0.1
   y / Y          radial blur Density -0.05 / +0.05
@@ -35,7 +37,8 @@ from vtkmodules.vtkRenderingCore import (
 from lightshafts import scenes, vtkLightShaftPass, write_png
 
 METHODS = [vtkLightShaftPass.SLICES, vtkLightShaftPass.RAY_MARCH, vtkLightShaftPass.RADIAL_BLUR,
-           vtkLightShaftPass.ANALYTIC, vtkLightShaftPass.AUTOMATIC]
+           vtkLightShaftPass.ANALYTIC, vtkLightShaftPass.AUTOMATIC, vtkLightShaftPass.EPIPOLAR,
+           vtkLightShaftPass.LIGHT_VOLUME]
 
 
 class Demo:
@@ -93,8 +96,10 @@ class Demo:
 
     def scale_count(self, factor):
         name = {vtkLightShaftPass.RAY_MARCH: "NumberOfSteps",
-                vtkLightShaftPass.RADIAL_BLUR: "RadialSamples"}.get(self.shafts.GetMethod(),
-                                                                    "NumberOfSlices")
+                vtkLightShaftPass.EPIPOLAR: "NumberOfSteps",
+                vtkLightShaftPass.RADIAL_BLUR: "RadialSamples",
+                vtkLightShaftPass.LIGHT_VOLUME: "LightVolumeResolution"}.get(
+                    self.shafts.GetMethod(), "NumberOfSlices")
         current = getattr(self.shafts, "Get" + name)()
         getattr(self.shafts, "Set" + name)(max(1, int(round(current * factor))))
 
@@ -115,7 +120,8 @@ class Demo:
         print(f"[{key}] method={method} (used {used}) light={self.info.light.GetPosition()} "
               f"exposure={p.GetExposure():.4g} sigma_s={p.GetScatteringCoefficient()[0]:.4g} "
               f"slices={p.GetNumberOfSlices()} steps={p.GetNumberOfSteps()} "
-              f"samples={p.GetRadialSamples()} decay={p.GetDecay():.3g} "
+              f"samples={p.GetRadialSamples()} cells={p.GetLightVolumeResolution()} "
+              f"decay={p.GetDecay():.3g} "
               f"weight={p.GetWeight():.3g} density={p.GetDensity():.3g} "
               f"noise={p.GetNoiseAmplitude():.3g} time={p.GetTime():.4g}")
         print(f"    last frame: {self.last_frame_ms:.1f} ms, slabs {p.GetLastNumberOfSlicesDrawn()}, "

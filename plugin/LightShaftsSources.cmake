@@ -10,6 +10,7 @@ set(lightshafts_private_classes
   vtkLightShaftInScatter
   vtkLightShaftInScatterTarget
   vtkLightShaftLightTextures
+  vtkLightShaftLightVolumeMethod
   vtkLightShaftLights
   vtkLightShaftMethod
   vtkLightShaftModel

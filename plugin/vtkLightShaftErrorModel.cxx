@@ -150,10 +150,15 @@ int FindSetting(const Setting& setting)
   {
     const Setting& s = GetSetting(i);
     const bool slices = s.Method == vtkLightShaftPass::SLICES;
+    const bool marched = s.Method == vtkLightShaftPass::RAY_MARCH;
+    const bool epipolar = s.Method == vtkLightShaftPass::EPIPOLAR;
     if (s.Method == setting.Method && s.Samples == setting.Samples &&
         s.BlurRadius == setting.BlurRadius && s.DownsampleFactor == setting.DownsampleFactor &&
-        s.ShadowMapSize == setting.ShadowMapSize &&
-        (slices ? s.Jitter == setting.Jitter : s.InterleaveSize == setting.InterleaveSize))
+        s.ShadowMapSize == setting.ShadowMapSize && (!slices || s.Jitter == setting.Jitter) &&
+        (!marched || s.InterleaveSize == setting.InterleaveSize) &&
+        (!epipolar || (s.EpipolarLines == setting.EpipolarLines &&
+                        s.EpipolarSamples == setting.EpipolarSamples &&
+                        s.EpipolarStep == setting.EpipolarStep)))
     {
       return i;
     }
@@ -188,12 +193,22 @@ double Predict(int index, const std::vector<Features>& lights)
   return worst;
 }
 
-int Choose(double target, const std::vector<Features>& lights, double& predicted)
+int Choose(double target, const std::vector<Features>& lights, bool closedForm, double& predicted)
 {
+  auto usable = [closedForm](int i)
+  { return closedForm || GetSetting(i).Method != vtkLightShaftPass::LIGHT_VOLUME; };
   int best = NumberOfSettings - 1;
+  while (best > 0 && !usable(best))
+  {
+    --best;
+  }
   predicted = Predict(best, lights);
   for (int i = 0; i < NumberOfSettings; ++i)
   {
+    if (!usable(i))
+    {
+      continue;
+    }
     const double error = Predict(i, lights);
     if (error <= target)
     {

@@ -50,19 +50,22 @@ Features Describe(const vtkLightShaftGeometry::LightFrame& light,
   int width);
 
 /**
- * One setting of the ladder: a method (SLICES with a fixed slice count, or RAY_MARCH) and the
- * parameters it sets (32-bit float accumulation).
+ * One setting of the ladder: a method (SLICES with a fixed slice count, RAY_MARCH, EPIPOLAR or
+ * LIGHT_VOLUME) and the parameters it sets (32-bit float accumulation).
  */
 struct Setting
 {
   const char* Name;
-  int Method;  ///< vtkLightShaftPass::SLICES or RAY_MARCH
-  int Samples; ///< slices, or ray-march steps
+  int Method;  ///< vtkLightShaftPass::SLICES, RAY_MARCH, EPIPOLAR or LIGHT_VOLUME
+  int Samples; ///< slices, ray-march steps (EPIPOLAR: per sample), or light-volume cells
   bool Jitter; ///< SLICES
   int BlurRadius;
   int DownsampleFactor;
   int ShadowMapSize;
-  int InterleaveSize; ///< RAY_MARCH
+  int InterleaveSize;    ///< RAY_MARCH
+  int EpipolarLines = 0; ///< EPIPOLAR
+  int EpipolarSamples = 0;
+  int EpipolarStep = 0;
 };
 
 /// The ladder's settings, cheapest first.
@@ -92,9 +95,10 @@ double Predict(int index, const std::vector<Features>& lights);
 
 /**
  * The cheapest setting predicted to make at most `target` on every light (the most accurate
- * one when none is), and its prediction in `predicted`.
+ * one when none is), and its prediction in `predicted`. Without `closedForm` (a cookie or
+ * noise) the LIGHT_VOLUME settings are left out: they would give way to RAY_MARCH.
  */
-int Choose(double target, const std::vector<Features>& lights, double& predicted);
+int Choose(double target, const std::vector<Features>& lights, bool closedForm, double& predicted);
 }
 
 #endif

@@ -58,6 +58,7 @@ struct vtkLightShaftParameters
   int EpipolarLines{};
   int EpipolarSamples{};
   int EpipolarStep{};
+  int LightVolumeResolution{};
   double Decay{};
   double Density{};
   double Weight{};

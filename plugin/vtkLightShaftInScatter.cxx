@@ -24,6 +24,8 @@ vtkLightShaftMethod* vtkLightShaftInScatter::GetMethod(int method)
       return &this->Analytic;
     case vtkLightShaftPass::EPIPOLAR:
       return &this->Epipolar;
+    case vtkLightShaftPass::LIGHT_VOLUME:
+      return &this->LightVolume;
     default:
       return &this->Slices;
   }
@@ -32,7 +34,7 @@ vtkLightShaftMethod* vtkLightShaftInScatter::GetMethod(int method)
 //------------------------------------------------------------------------------
 // AUTOMATIC takes the exact unshadowed integral when nothing can shadow the light's volume and
 // the medium is homogeneous, else the slabs. ANALYTIC says once that it ignores the shadows
-// props could cast.
+// props could cast; LIGHT_VOLUME says once that it gives way to RAY_MARCH.
 int vtkLightShaftInScatter::ChooseMethod(const vtkLightShaftFrame& frame)
 {
   int method = frame.Parameters.Method;
@@ -50,6 +52,19 @@ int vtkLightShaftInScatter::ChooseMethod(const vtkLightShaftFrame& frame)
         << frame.Light.Casters.size()
         << " prop(s) reach into the light's volume: use SLICES or AUTOMATIC for shadowed shafts.");
     this->WarnedAnalyticShadows = true;
+  }
+  if (method == vtkLightShaftPass::LIGHT_VOLUME && (frame.Cookie || frame.Noise))
+  {
+    // The unshadowed integral up to a crossing is in closed form only without them.
+    if (!this->WarnedLightVolumeFeatures)
+    {
+      vtkWarningWithObjectMacro(frame.Owner,
+        "Method LIGHT_VOLUME has no closed form with a "
+          << (frame.Cookie ? "cookie" : "density noise") << ": RAY_MARCH computes the shafts of "
+          << "a light that has one.");
+      this->WarnedLightVolumeFeatures = true;
+    }
+    method = vtkLightShaftPass::RAY_MARCH;
   }
   return method;
 }
@@ -171,9 +186,12 @@ void vtkLightShaftInScatter::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Target.ReleaseGraphicsResources(window);
   this->Slabs.ReleaseGraphicsResources(window);
-  const std::initializer_list<vtkLightShaftMethod*> methods = {
-    &this->Slices, &this->RayMarch, &this->RadialBlur, &this->Analytic, &this->Epipolar
-  };
+  const std::initializer_list<vtkLightShaftMethod*> methods = { &this->Slices,
+    &this->RayMarch,
+    &this->RadialBlur,
+    &this->Analytic,
+    &this->Epipolar,
+    &this->LightVolume };
   for (vtkLightShaftMethod* method : methods)
   {
     method->ReleaseGraphicsResources(window);

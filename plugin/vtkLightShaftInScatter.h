@@ -7,14 +7,15 @@
 #ifndef vtkLightShaftInScatter_h
 #define vtkLightShaftInScatter_h
 
-#include "vtkLightShaftAnalyticMethod.h"   // For a method held
-#include "vtkLightShaftEpipolarMethod.h"   // For a method held
-#include "vtkLightShaftInScatterTarget.h"  // For the target held
-#include "vtkLightShaftPostProcess.h"      // For the post chain held
-#include "vtkLightShaftRadialBlurMethod.h" // For a method held
-#include "vtkLightShaftRayMarchMethod.h"   // For a method held
-#include "vtkLightShaftSlabDrawer.h"       // For the drawer held
-#include "vtkLightShaftSlicesMethod.h"     // For a method held
+#include "vtkLightShaftAnalyticMethod.h"    // For a method held
+#include "vtkLightShaftEpipolarMethod.h"    // For a method held
+#include "vtkLightShaftInScatterTarget.h"   // For the target held
+#include "vtkLightShaftLightVolumeMethod.h" // For a method held
+#include "vtkLightShaftPostProcess.h"       // For the post chain held
+#include "vtkLightShaftRadialBlurMethod.h"  // For a method held
+#include "vtkLightShaftRayMarchMethod.h"    // For a method held
+#include "vtkLightShaftSlabDrawer.h"        // For the drawer held
+#include "vtkLightShaftSlicesMethod.h"      // For a method held
 
 class vtkTextureObject;
 class vtkWindow;
@@ -37,7 +38,8 @@ public:
   ~vtkLightShaftInScatter();
 
   /// The method for the frame's current light (AUTOMATIC resolved; see
-  /// vtkLightShaftPass::SetMethod), with one warning when ANALYTIC ignores possible shadows.
+  /// vtkLightShaftPass::SetMethod), with one warning when ANALYTIC ignores possible shadows,
+  /// and one when LIGHT_VOLUME gives way to RAY_MARCH for a cookie or noise.
   int ChooseMethod(const vtkLightShaftFrame& frame);
   /// Start the frame: the depth the shafts read, no light added.
   void Begin(vtkLightShaftFrame& frame);
@@ -71,6 +73,7 @@ private:
   vtkLightShaftAnalyticMethod Analytic{ this->Slabs };
   vtkLightShaftRadialBlurMethod RadialBlur{ this->Analytic };
   vtkLightShaftEpipolarMethod Epipolar{ this->Slabs };
+  vtkLightShaftLightVolumeMethod LightVolume{ this->Slabs };
   vtkLightShaftPostProcess Post;
 
   const vtkLightShaftMethod* ShaderMethod = nullptr;
@@ -79,6 +82,7 @@ private:
   /// The last light's result when its method did not add into the target (not yet summed).
   vtkTextureObject* Pending = nullptr;
   bool WarnedAnalyticShadows = false;
+  bool WarnedLightVolumeFeatures = false;
 };
 
 #endif

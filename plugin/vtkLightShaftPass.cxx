@@ -316,6 +316,8 @@ const char* vtkLightShaftPass::GetMethodName(int method)
       return "automatic";
     case EPIPOLAR:
       return "epipolar";
+    case LIGHT_VOLUME:
+      return "light-volume";
     default:
       return "none";
   }
@@ -335,10 +337,20 @@ void ApplyQuality(vtkLightShaftPass* pass, vtkLightShaftErrorModel::Preset prese
     pass->SetNumberOfSlices(s.Samples);
     pass->SetJitter(s.Jitter);
   }
+  else if (s.Method == vtkLightShaftPass::LIGHT_VOLUME)
+  {
+    pass->SetLightVolumeResolution(s.Samples);
+  }
   else
   {
     pass->SetNumberOfSteps(s.Samples);
     pass->SetInterleaveSize(s.InterleaveSize);
+  }
+  if (s.Method == vtkLightShaftPass::EPIPOLAR)
+  {
+    pass->SetEpipolarLines(s.EpipolarLines);
+    pass->SetEpipolarSamples(s.EpipolarSamples);
+    pass->SetEpipolarStep(s.EpipolarStep);
   }
   pass->SetShadowMapSize(s.ShadowMapSize);
   pass->SetBlurRadius(s.BlurRadius);
@@ -643,6 +655,7 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
   p.EpipolarLines = self.EpipolarLines;
   p.EpipolarSamples = self.EpipolarSamples;
   p.EpipolarStep = self.EpipolarStep;
+  p.LightVolumeResolution = self.LightVolumeResolution;
   p.Decay = self.Decay;
   p.Density = self.Density;
   p.Weight = self.Weight;
@@ -685,17 +698,18 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
         frame.Renderer->GetViewProps(),
         frame.Parameters.ShadowCasterBounds));
   }
-  ApplyErrorModel(frame, lightFrames);
-
-  // The scene, with the samples of the target it is composited into; the cookie and noise
-  // decided once.
-  frame.Scene.Samples = vtkLightShaftResources::TargetSamples();
-  frame.Statistics.MultiSamples = frame.Scene.Samples;
+  // The cookie and noise decided once (a target error leaves out the settings that have no
+  // closed form with them).
   vtkTextureObject* cookie = this->Textures.ReadyCookie(frame.Window, frame.Owner);
   if (frame.Parameters.NoiseAmplitude > 0.0 && frame.Medium.Scatters())
   {
     frame.Noise = this->Textures.ReadyNoise(frame.Window, frame.Owner);
   }
+  ApplyErrorModel(frame, lightFrames, cookie != nullptr || frame.Noise != nullptr);
+
+  // The scene, with the samples of the target it is composited into.
+  frame.Scene.Samples = vtkLightShaftResources::TargetSamples();
+  frame.Statistics.MultiSamples = frame.Scene.Samples;
   ostate->PushFramebufferBindings();
   this->Scene.Render(frame, delegate);
 
@@ -729,7 +743,8 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
 // it on every lit light (AUTOMATIC keeps its exact integral where nothing shadows); without
 // one, its prediction for the parameters set when they are one of its settings.
 void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
-  const std::vector<vtkLightShaftGeometry::LightFrame>& lights)
+  const std::vector<vtkLightShaftGeometry::LightFrame>& lights,
+  bool cookieOrNoise)
 {
   namespace model = vtkLightShaftErrorModel;
   std::vector<model::Features> features;
@@ -753,7 +768,7 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
   double predicted = -1.0;
   if (p.TargetError > 0.0)
   {
-    setting = model::Choose(p.TargetError, features, predicted);
+    setting = model::Choose(p.TargetError, features, !cookieOrNoise, predicted);
     const model::Setting& chosen = model::GetSetting(setting);
     // AUTOMATIC keeps its exact integral where nothing can shadow; else the chosen method.
     const bool exact =
@@ -765,8 +780,17 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
     p.AutomaticSliceCount = false;
     p.NumberOfSlices =
       chosen.Method == vtkLightShaftPass::SLICES ? chosen.Samples : p.NumberOfSlices;
-    p.NumberOfSteps =
-      chosen.Method == vtkLightShaftPass::RAY_MARCH ? chosen.Samples : p.NumberOfSteps;
+    const bool marched =
+      chosen.Method == vtkLightShaftPass::RAY_MARCH || chosen.Method == vtkLightShaftPass::EPIPOLAR;
+    p.NumberOfSteps = marched ? chosen.Samples : p.NumberOfSteps;
+    if (chosen.Method == vtkLightShaftPass::EPIPOLAR)
+    {
+      p.EpipolarLines = chosen.EpipolarLines;
+      p.EpipolarSamples = chosen.EpipolarSamples;
+      p.EpipolarStep = chosen.EpipolarStep;
+    }
+    p.LightVolumeResolution =
+      chosen.Method == vtkLightShaftPass::LIGHT_VOLUME ? chosen.Samples : p.LightVolumeResolution;
     p.Jitter = chosen.Jitter;
     p.InterleaveSize = chosen.InterleaveSize;
     p.BlurRadius = chosen.BlurRadius;
@@ -777,17 +801,22 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
     frame.Reduced[1] = (frame.Size[1] + p.DownsampleFactor - 1) / p.DownsampleFactor;
   }
   else if ((p.Method == vtkLightShaftPass::SLICES && !p.AutomaticSliceCount) ||
-           p.Method == vtkLightShaftPass::RAY_MARCH)
+           p.Method == vtkLightShaftPass::RAY_MARCH || p.Method == vtkLightShaftPass::EPIPOLAR ||
+           p.Method == vtkLightShaftPass::LIGHT_VOLUME)
   {
     const bool slices = p.Method == vtkLightShaftPass::SLICES;
+    const bool volume = p.Method == vtkLightShaftPass::LIGHT_VOLUME;
     const model::Setting current{ "",
       p.Method,
-      slices ? p.NumberOfSlices : p.NumberOfSteps,
+      slices ? p.NumberOfSlices : (volume ? p.LightVolumeResolution : p.NumberOfSteps),
       p.Jitter,
       p.BlurRadius,
       p.DownsampleFactor,
       p.ShadowMapSize,
-      p.InterleaveSize };
+      p.InterleaveSize,
+      p.EpipolarLines,
+      p.EpipolarSamples,
+      p.EpipolarStep };
     const bool float32 = p.AccumulationPrecision == vtkLightShaftPass::ACCUMULATE_FLOAT32;
     setting = float32 ? model::FindSetting(current) : -1;
     predicted = setting >= 0 ? model::Predict(setting, features) : -1.0;
@@ -887,6 +916,7 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EpipolarLines: " << this->EpipolarLines << "\n";
   os << indent << "EpipolarSamples: " << this->EpipolarSamples << "\n";
   os << indent << "EpipolarStep: " << this->EpipolarStep << "\n";
+  os << indent << "LightVolumeResolution: " << this->LightVolumeResolution << "\n";
   os << indent << "Decay: " << this->Decay << "\n";
   os << indent << "Density: " << this->Density << "\n";
   os << indent << "Weight: " << this->Weight << "\n";

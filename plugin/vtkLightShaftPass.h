@@ -115,7 +115,8 @@ public:
     RADIAL_BLUR = 2, ///< screen-space radial blur of an occlusion buffer (GPU Gems 3, ch. 13)
     ANALYTIC = 3,    ///< unshadowed closed form per pixel (exact when nothing occludes)
     AUTOMATIC = 4,   ///< ANALYTIC when the scene allows it, else SLICES (GetLastMethod says)
-    EPIPOLAR = 5     ///< marched along lines through the light's image, interpolated (Yusov 2013)
+    EPIPOLAR = 5,    ///< marched along lines through the light's image, interpolated (Yusov 2013)
+    LIGHT_VOLUME = 6 ///< crossings of the shadow map's shadow volume, closed form (Billeter 2010)
   };
 
   /// Events the pass invokes.
@@ -441,9 +442,14 @@ public:
    *   where the depth breaks or the in-scatter changes sharply; the other samples and the
    *   pixels are interpolated along and across the lines from samples on their own surface.
    *   Pixels with none (thin props between lines) are marched themselves.
+   * - LIGHT_VOLUME: no steps. The region the shadow map shadows is a closed mesh
+   *   (LightVolumeResolution cells across the map) drawn from the camera: each crossing adds or
+   *   subtracts the closed-form unshadowed in-scatter up to it. Exact with respect to that mesh.
+   *   Cookie and noise are not in closed form: a light with either gets RAY_MARCH, with one
+   *   warning.
    * Default is SLICES.
    */
-  vtkSetClampMacro(Method, int, SLICES, EPIPOLAR);
+  vtkSetClampMacro(Method, int, SLICES, LIGHT_VOLUME);
   vtkGetMacro(Method, int);
   void SetMethodToSlices() { this->SetMethod(SLICES); }
   void SetMethodToRayMarch() { this->SetMethod(RAY_MARCH); }
@@ -451,6 +457,7 @@ public:
   void SetMethodToAnalytic() { this->SetMethod(ANALYTIC); }
   void SetMethodToAutomatic() { this->SetMethod(AUTOMATIC); }
   void SetMethodToEpipolar() { this->SetMethod(EPIPOLAR); }
+  void SetMethodToLightVolume() { this->SetMethod(LIGHT_VOLUME); }
   static const char* GetMethodName(int method);
   ///@}
 
@@ -516,6 +523,16 @@ public:
    */
   vtkSetClampMacro(EpipolarStep, int, 1, 64);
   vtkGetMacro(EpipolarStep, int);
+  ///@}
+
+  ///@{
+  /**
+   * LIGHT_VOLUME: the cells across the shadow map (a point light: across each cube face) of
+   * the shadow volume's mesh, in [8, 1024]; each cell takes the depth of the map's texel at its
+   * centre, so no more are used than the map has texels. Default is 256.
+   */
+  vtkSetClampMacro(LightVolumeResolution, int, 8, 1024);
+  vtkGetMacro(LightVolumeResolution, int);
   ///@}
 
   ///@{
@@ -603,8 +620,9 @@ public:
    * error on random training scenes meets its aim (Draft 5%, Interactive 2%, Final 0.5%, the
    * most accurate setting when none does; docs/error-model.md, validated on other seeds in
    * docs/random-scenes.md):
-   * - Draft: SLICES, 64 plain slabs (no jitter, no blur), 1024^2 shadow map;
-   * - Interactive: RAY_MARCH, 64 equiangular steps, no interleaving, 2048^2 shadow map;
+   * - Draft: EPIPOLAR, 16 steps per sample, 128 lines of 256 samples, every 8th marched,
+   *   512^2 shadow map;
+   * - Interactive: LIGHT_VOLUME, 256 cells, 1024^2 shadow map;
    * - Final: RAY_MARCH, 256 steps, no interleaving, 2048^2 shadow map.
    * They set the method, its sampling, blur 0, full resolution, 32-bit float accumulation and
    * a fixed slice count; other parameters are unchanged. The defaults (64 jittered slabs, blur
@@ -621,13 +639,14 @@ public:
    * above 1% of its peak), in [0, 1]; 0 turns it off. When on, each frame the pass computes
    * what its lights' geometry asks of the sampling (GetLastDepthRangeInBeamWidths and the
    * other error-model read-outs) and renders with the cheapest setting of its measured ladder
-   * (SLICES, a fixed slice count, jitter, blur, downsampling and shadow-map size) whose
+   * (EPIPOLAR, LIGHT_VOLUME and RAY_MARCH settings: the method, its sampling and the
+   * shadow-map size; LIGHT_VOLUME's are left out when a cookie or noise is on) whose
    * predicted error meets the target, or with the most accurate one when none does; it then
-   * overrides Method, NumberOfSlices, AutomaticSliceCount, Jitter, BlurRadius,
-   * DownsampleFactor, ShadowMapSize and AccumulationPrecision for that frame (the values set
-   * stay, and apply again at 0). The prediction is an upper estimate: on held-out random
-   * scenes at least 90% achieve the target (README "Target error"). Non-finite values are
-   * refused. Default is 0 (off).
+   * overrides Method, the method's sampling parameters, AutomaticSliceCount, Jitter,
+   * InterleaveSize, BlurRadius, DownsampleFactor, ShadowMapSize and AccumulationPrecision for
+   * that frame (the values set stay, and apply again at 0). The prediction is an upper estimate: on
+   * held-out random scenes at least 90% achieve the target (README "Target error"). Non-finite
+   * values are refused. Default is 0 (off).
    */
   void SetTargetError(double error);
   vtkGetMacro(TargetError, double);
@@ -791,6 +810,7 @@ protected:
   int EpipolarLines = 512;
   int EpipolarSamples = 512;
   int EpipolarStep = 16;
+  int LightVolumeResolution = 256;
   double Decay = 1.0;
   double Density = 1.0;
   double Weight = 1.0;

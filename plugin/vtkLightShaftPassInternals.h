@@ -68,7 +68,8 @@ public:
     const std::vector<vtkLight*>& lights,
     bool shadowSurfaces);
   static void ApplyErrorModel(vtkLightShaftFrame& frame,
-    const std::vector<vtkLightShaftGeometry::LightFrame>& lights);
+    const std::vector<vtkLightShaftGeometry::LightFrame>& lights,
+    bool cookieOrNoise);
   void RenderLight(vtkLightShaftFrame& frame,
     vtkRenderPass* delegate,
     vtkLight* light,

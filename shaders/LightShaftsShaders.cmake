@@ -13,6 +13,8 @@ set(lightshafts_pass_shaders
   vtkLightShaftIntegrand
   vtkLightShaftLightKind
   vtkLightShaftLightSpace
+  vtkLightShaftLightVolumeFS
+  vtkLightShaftLightVolumeVS
   vtkLightShaftOcclusionFS
   vtkLightShaftRadialBlurFS
   vtkLightShaftRayMarchFS

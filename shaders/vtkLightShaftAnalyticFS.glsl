@@ -23,23 +23,14 @@ void main()
   {
     discard;
   }
-  LightShaftVariable u = lightShaftVariable(ray);
-  vec3 radiance = vec3(0.0);
-
   // 3-point Gauss-Legendre per piece (lightShaftSegment), with enough pieces that the
   // extinction across a piece stays below ~0.5 (float precision for the smooth factors).
   int pieces =
     clamp(max(analyticPieces, int(ceil(2.0 * maximumSigmaT * (ray.x1 - ray.x0)))), 1, 64);
-  float xa = ray.x0;
-  for (int j = 1; j <= pieces; ++j)
-  {
-    float xb = (j == pieces) ? ray.x1 :
-      lightShaftPieceBoundary(u.u0, u.u1, float(j) / float(pieces), u.h, u.constantA);
-    radiance += lightShaftSegment(ray.originVC, ray.dirVC, ray.b, ray.h2, xa, xb);
-    xa = xb;
-  }
+  vec3 radiance = lightShaftPieces(ray, pieces);
   // Alpha: the light distance at the lit interval's (equiangular) middle, which the radial
   // blur compares its occluders with.
+  LightShaftVariable u = lightShaftVariable(ray);
   float xMiddle = lightShaftPieceBoundary(u.u0, u.u1, 0.5, u.h, u.constantA);
   gl_FragData[0] = vec4(radiance, sqrt(ray.h2 + xMiddle * xMiddle));
 }

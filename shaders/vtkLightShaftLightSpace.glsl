@@ -2,7 +2,8 @@
 // besides the smooth factors, looked up in the light's own space: its shadow map's visibility,
 // its cookie, and the density noise projected from it. Features (#defines): LIGHTSHAFT_SHADOW,
 // LIGHTSHAFT_COOKIE, LIGHTSHAFT_NOISE; the light's kind (LIGHTSHAFT_POINT,
-// LIGHTSHAFT_DIRECTIONAL, else a spot). Code for a feature that is off is not compiled.
+// LIGHTSHAFT_DIRECTIONAL, else a spot); LIGHTSHAFT_SHADOW_VOLUME: only the map and its depths
+// (LIGHT_VOLUME's mesh). Code for a feature that is off is not compiled.
 #ifndef LIGHTSHAFT_LIGHT_SPACE_CHUNK
 #define LIGHTSHAFT_LIGHT_SPACE_CHUNK
 
@@ -32,15 +33,9 @@ vec2 lightShaftSquareUV(vec3 pointVC)
 uniform mat3 worldFromVC; // the rotation from view to world coordinates
 #endif
 
-#ifdef LIGHTSHAFT_SHADOW
+#if defined(LIGHTSHAFT_SHADOW) || defined(LIGHTSHAFT_SHADOW_VOLUME)
 uniform sampler2D shadowMap;
 uniform vec2 lightDepthRange; // near, far of the light camera(s)
-#ifdef LIGHTSHAFT_POINT
-uniform mat4 faceClipFromVC[6]; // VC -> each cube face's clip coordinates (+X -X +Y -Y +Z -Z)
-uniform float shadowFaceSize;   // texels across a face (the atlas is 3 x 2 faces)
-#else
-uniform mat4 lightClipFromVC; // VC -> the light camera's clip coordinates
-#endif
 
 // The distance along a perspective light camera's axis of a stored depth.
 float lightShaftCasterDepth(float stored)
@@ -53,6 +48,15 @@ float lightShaftCasterDepth(float stored)
   return 2.0 * n * f / ((f + n) - (2.0 * stored - 1.0) * (f - n));
 #endif
 }
+#endif
+
+#ifdef LIGHTSHAFT_SHADOW
+#ifdef LIGHTSHAFT_POINT
+uniform mat4 faceClipFromVC[6]; // VC -> each cube face's clip coordinates (+X -X +Y -Y +Z -Z)
+uniform float shadowFaceSize;   // texels across a face (the atlas is 3 x 2 faces)
+#else
+uniform mat4 lightClipFromVC; // VC -> the light camera's clip coordinates
+#endif
 
 // 1 where pointVC (at light distance r) sees the light past the shadow map's casters, else 0;
 // `bias`: the depth tolerance, relative (spot, point) or in world units (directional).

@@ -200,3 +200,21 @@ vec3 lightShaftMarch(LightShaftRay ray, int steps, float offset)
   }
   return radiance;
 }
+
+// The ray's lit part integrated in `pieces` pieces (lightShaftSegment each, with the lookups
+// the variant has; shorter towards the light when A falls off): ANALYTIC's integral, and
+// LIGHT_VOLUME's up to a crossing.
+vec3 lightShaftPieces(LightShaftRay ray, int pieces)
+{
+  LightShaftVariable u = lightShaftVariable(ray);
+  vec3 radiance = vec3(0.0);
+  float xa = ray.x0;
+  for (int j = 1; j <= pieces; ++j)
+  {
+    float xb = (j == pieces) ? ray.x1 :
+      lightShaftPieceBoundary(u.u0, u.u1, float(j) / float(pieces), u.h, u.constantA);
+    radiance += lightShaftSegment(ray.originVC, ray.dirVC, ray.b, ray.h2, xa, xb);
+    xa = xb;
+  }
+  return radiance;
+}

@@ -7,14 +7,19 @@
 #   tools/measure.sh benchmark         # every method's settings, three scenes (docs/benchmark.md)
 #   tools/measure.sh light-kinds       # per light kind and several lights (docs/light-kinds.md)
 #   tools/measure.sh worst-corners     # the slider corners (docs/robustness.md)
-#   tools/measure.sh random-scenes     # 50 random scenes: presets, methods, targets
-#                                      # (docs/random-scenes.md; about an hour on 2 cores)
+#   tools/measure.sh random-scenes     # 50 random scenes: presets, methods, targets, the
+#                                      # fitted ladder (TargetError's cost against the oracle)
+#                                      # (docs/random-scenes.md; about 20 minutes on 2 cores)
 #   tools/measure.sh random-scenes-downsampled  # the same scenes, reduced-resolution settings
 #                                      # (docs/downsampled/random-scenes.md; about 30 min)
 #   tools/measure.sh random-scenes-epipolar  # the same scenes, EPIPOLAR's settings
 #                                      # (docs/epipolar/random-scenes.md)
+#   tools/measure.sh random-scenes-light-volume  # the same scenes, LIGHT_VOLUME's settings
+#                                      # (docs/light-volume/random-scenes.md)
 #   tools/measure.sh error-model       # the TargetError model's training run and fit
 #                                      # (docs/error-model.md, plugin/vtkLightShaftErrorModelTable.h)
+#   tools/measure.sh error-model-add SETTING...  # the same for settings added to the ladder
+#                                      # only (the others keep their training rows)
 #   tools/measure.sh reference-speed   # the float64 reference's time against the pass's frame
 #   tools/measure.sh fixed-cost        # a frame's cost besides its integral, a few random scenes
 #   tools/measure.sh pytest TEST...    # a test, printing what it measured (-s)
@@ -40,29 +45,42 @@ case "$what" in
   light-kinds) run tests/benchmarks/light_kinds.py --output-dir docs "$@" ;;
   worst-corners) run tests/benchmarks/worst_corners.py "$@" ;;
   random-scenes)
-    run tests/benchmarks/random_scenes.py --seed 0 --scenes 50 --max-height 720 --frames 1 \
-      --output-dir docs "$@" ;;
+    run tests/benchmarks/random_scenes.py --validation --seed 0 --scenes 50 --max-height 720 \
+      --frames 1 --output-dir docs "$@" ;;
   random-scenes-downsampled)
     run tests/benchmarks/random_scenes.py --downsampled --seed 0 --scenes 50 --max-height 720 \
       --frames 3 --output-dir docs/downsampled "$@" ;;
+  random-scenes-light-volume)
+    run tests/benchmarks/random_scenes.py --light-volume --seed 0 --scenes 50 --max-height 720 \
+      --frames 3 --output-dir docs/light-volume "$@" ;;
   random-scenes-epipolar)
     run tests/benchmarks/random_scenes.py --epipolar --seed 0 --scenes 50 --max-height 720 \
       --frames 3 --output-dir docs/epipolar "$@" ;;
-  error-model)
+  error-model|error-model-add)
     # Training seeds 8 and 9 (the validation above is seed 0), then the fit and a rebuild.
+    # error-model-add SETTING...: only those settings of the ladder are run; the others keep
+    # their rows of docs/error-model-training.csv.
     training=$(mktemp -d)
     mkdir -p "$training/8" "$training/9"
+    previous=()
+    only=()
+    if [ "$what" = error-model-add ]; then
+      cp docs/error-model-training.csv "$training/previous.csv"
+      previous=(--previous "$training/previous.csv")
+      only=(--settings "$@")
+      set --
+    fi
     run tests/benchmarks/random_scenes.py --ladder --seed 8 --scenes 30 --max-height 720 \
-      --frames 0 --output-dir "$training/8" "$@"
+      --frames 0 --output-dir "$training/8" "${only[@]}" "$@"
     run tests/benchmarks/random_scenes.py --ladder --seed 9 --scenes 25 --max-height 720 \
-      --frames 0 --output-dir "$training/9" "$@"
+      --frames 0 --output-dir "$training/9" "${only[@]}" "$@"
     run tests/benchmarks/fit_error_model.py "$training/8/random-scenes.csv" \
-      "$training/9/random-scenes.csv"
+      "$training/9/random-scenes.csv" "${previous[@]}"
     cmake --build build > /dev/null ;;
   reference-speed) run tests/benchmarks/reference_speed.py "$@" ;;
   fixed-cost) run tests/benchmarks/fixed_cost.py "$@" ;;
   pytest) run -m pytest -p no:cacheprovider -q -s "$@" ;;
   *)
-    sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'
     exit 2 ;;
 esac

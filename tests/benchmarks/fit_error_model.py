@@ -137,13 +137,16 @@ def write_table(path, ladder, fits, presets):
              "// clang-format off",
              "constexpr Row Rows[] = {"]
     for (label, p), (beta, margin) in zip(ladder, fits):
-        march = p["Method"] == rs.vtkLightShaftPass.RAY_MARCH
-        method = "vtkLightShaftPass::RAY_MARCH" if march else "vtkLightShaftPass::SLICES"
-        samples = p["NumberOfSteps"] if march else p["NumberOfSlices"]
-        jitter = "false" if march else str(p["Jitter"]).lower()
-        setting = (f'"{label}", {method}, {samples}, {jitter}, {p["BlurRadius"]}, '
-                   f'{p["DownsampleFactor"]}, {p["ShadowMapSize"]}, '
-                   f'{p["InterleaveSize"] if march else 1}')
+        method = rs.vtkLightShaftPass.GetMethodName(p["Method"]).upper().replace("-", "_")
+        samples = {"SLICES": p.get("NumberOfSlices"), "RAY_MARCH": p.get("NumberOfSteps"),
+                   "EPIPOLAR": p.get("NumberOfSteps"),
+                   "LIGHT_VOLUME": p.get("LightVolumeResolution")}[method]
+        jitter = str(p.get("Jitter", False)).lower()
+        epipolar = (f'{p["EpipolarLines"]}, {p["EpipolarSamples"]}, {p["EpipolarStep"]}'
+                    if method == "EPIPOLAR" else "0, 0, 0")
+        setting = (f'"{label}", vtkLightShaftPass::{method}, {samples}, {jitter}, '
+                   f'{p["BlurRadius"]}, {p["DownsampleFactor"]}, {p["ShadowMapSize"]}, '
+                   f'{p.get("InterleaveSize", 1)}, {epipolar}')
         coefficients = ", ".join(f"{b:.6g}" for b in beta)
         lines.append(f"  {{ {{ {setting} }}, {{ {coefficients} }}, {margin:.6g} }},")
     lines += ["};", "",
@@ -167,19 +170,31 @@ def main():
     parser.add_argument("--table", default=os.path.join(ROOT, "plugin",
                                                         "vtkLightShaftErrorModelTable.h"))
     parser.add_argument("--docs", default=os.path.join(ROOT, "docs"))
+    parser.add_argument("--previous", help="an earlier training CSV whose rows of the "
+                        "settings not in `training` are kept")
     args = parser.parse_args()
     rows = []
     for path in args.training:
         with open(path) as f:
             rows += list(csv.DictReader(f))
-    if not all(k in rows[0] for k in FEATURES):
-        cache = {}
-        for row in rows:
-            key = row["scene_json"]  # the scene, whatever run it came from
-            if key not in cache:
-                cache[key] = scene_features(row["scene_json"])
-                print(f"scene {row['scene']}: {cache[key]}", flush=True)
-            row.update(cache[key])
+    if args.previous:
+        # An earlier fit's rows (its docs/error-model-training.csv) for the settings the new
+        # runs did not measure: settings added to the ladder are trained without re-running
+        # the others.
+        measured = {r["setting"] for r in rows}
+        with open(args.previous) as f:
+            rows += [r for r in csv.DictReader(f) if r["setting"] not in measured]
+    # Rows of earlier fits (docs/error-model-training.csv) carry their features; new runs'
+    # rows get them here.
+    cache = {}
+    for row in rows:
+        if all(row.get(k) not in (None, "") for k in FEATURES):
+            continue
+        key = row["scene_json"]  # the scene, whatever run it came from
+        if key not in cache:
+            cache[key] = scene_features(row["scene_json"])
+            print(f"scene {row['scene']}: {cache[key]}", flush=True)
+        row.update(cache[key])
     ladder = [(label, p) for label, p in rs.LADDER
               if any(r["setting"] == label for r in rows)]
     # Cost: each setting's time ratio over the dearest setting's on the same scene (single
@@ -220,7 +235,8 @@ def main():
         presets.append((name, aim, meeting[0]["setting"] if meeting else None))
     write_table(args.table, [ladder[i] for i in kept], [fits[i] for i in kept], presets)
     with open(os.path.join(args.docs, "error-model-training.csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        fieldnames = list(dict.fromkeys(k for row in rows for k in row))
+        writer = csv.DictWriter(f, fieldnames=fieldnames, restval="")
         writer.writeheader()
         writer.writerows(rows)
     write_markdown(os.path.join(args.docs, "error-model.md"), report, presets, rows)
@@ -245,7 +261,12 @@ def write_markdown(path, report, presets, rows):
                      f"{100 * r['p90']:.2f}% | {r['cost']:.3f} | {r['spread']:.2f} | "
                      f"{r['residual']:.2f} | {r['margin']:.2f} | {kept} |")
     lines += ["", "Settings: S = slices, j = jitter, b = blur radius (pixels), d = "
-              "downsampling, m = shadow-map size.", "",
+              "downsampling, m = shadow-map size; M = ray-march steps, i = interleave; E = "
+              "EPIPOLAR steps per sample, l = lines, s = samples per line, k = every k-th "
+              "marched; V = LIGHT_VOLUME cells. The time is that of one frame per scene "
+              "(indicative), over the dearest setting's on the same scene; settings trained "
+              "in a later run (`tools/measure.sh error-model-add`) are timed against the "
+              "earlier run's dearest.", "",
               "The cheapest setting whose training p90 meets each preset's aim:", ""]
     for name, aim, setting in presets:
         lines.append(f"- {name} (p90 <= {100 * aim:g}%): {setting or 'none'}")

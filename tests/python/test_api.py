@@ -244,6 +244,11 @@ def _setting_of(p):
     """The ladder's name of the pass's parameters (tests/benchmarks/random_scenes.LADDER)."""
     if p.GetMethod() == vtkLightShaftPass.RAY_MARCH:
         return f"M{p.GetNumberOfSteps()} i{p.GetInterleaveSize()} m{p.GetShadowMapSize()}"
+    if p.GetMethod() == vtkLightShaftPass.LIGHT_VOLUME:
+        return f"V{p.GetLightVolumeResolution()} m{p.GetShadowMapSize()}"
+    if p.GetMethod() == vtkLightShaftPass.EPIPOLAR:
+        return (f"E{p.GetNumberOfSteps()} l{p.GetEpipolarLines()} s{p.GetEpipolarSamples()} "
+                f"k{p.GetEpipolarStep()} m{p.GetShadowMapSize()}")
     jitter = " j" if p.GetJitter() else ""
     return (f"S{p.GetNumberOfSlices()}{jitter} b{p.GetBlurRadius()} d{p.GetDownsampleFactor()} "
             f"m{p.GetShadowMapSize()}")

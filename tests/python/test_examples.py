@@ -75,13 +75,22 @@ def test_interactive_demo_replays_recorded_keys(tmp_path):
     assert "ERR|" not in result.stderr, result.stderr
     reports = [line for line in result.stdout.splitlines() if line.startswith("[")]
     stats = [line for line in result.stdout.splitlines() if "last frame:" in line]
-    assert len(reports) == len(stats) == 20  # the start and the 19 key presses
+    assert len(reports) == len(stats) == 25  # the start and the 24 key presses
     assert "next / previous method" in result.stdout  # h printed the help
     assert all("GL errors 0" in line for line in stats)
     methods = [line.split("method=")[1].split()[0] for line in reports]
-    assert set(methods) == {"slices", "ray-march", "radial-blur", "analytic", "automatic"}
-    assert methods[-1] == "analytic"  # M stepped back from automatic
-    by_key = {line.split("]")[0][1:]: (line, stat) for line, stat in zip(reports, stats)}
+    assert set(methods) == {"slices", "ray-march", "radial-blur", "analytic", "automatic",
+                            "epipolar", "light-volume"}
+    assert methods[19] == "analytic"  # M stepped back from automatic
+    assert methods[-1] == "light-volume"
+    by_key = {}  # each key's first press
+    for line, stat in zip(reports, stats):
+        by_key.setdefault(line.split("]")[0][1:], (line, stat))
+    # The last presses: ] doubled EPIPOLAR's steps, [ halved LIGHT_VOLUME's cells, which gave
+    # way to RAY_MARCH (the noise is on: no closed form) with one warning.
+    assert "steps=16" in reports[-3] and "cells=128" in reports[-1]
+    assert "(used ray-march)" in reports[-1]
+    assert result.stderr.count("Method LIGHT_VOLUME has no closed form") == 1
     assert "light=(0.25, 6.0, -0.25)" in by_key["Up"][0]
     assert "light=(0.25, 6.25, -0.25)" in by_key["Prior"][0]
     assert "exposure=50" in by_key["plus"][0]

@@ -2,8 +2,8 @@
 agrees with the float64 reference within the bound stated per case (or degrades as documented).
 
 Every case runs for every method (the `method` fixture). SLICES, RAY_MARCH and EPIPOLAR (256
-slices or steps, no jitter/interleave/blur; EPIPOLAR's default lines and samples) share the
-bounds; ANALYTIC is compared with the unshadowed
+slices or steps, no jitter/interleave/blur; EPIPOLAR's default lines and samples) and
+LIGHT_VOLUME (1024 cells) share the bounds; ANALYTIC is compared with the unshadowed
 reference (what it computes), at the same bounds; RADIAL_BLUR's screen-space shadows are
 approximate, so its bound is RADIAL_BLUR_BOUND against the shadowed reference, and the case is
 also required to stay finite and GL-error free.
@@ -21,7 +21,7 @@ import render_helpers as rh
 from vtk_output import ANALYTIC_IGNORES_SHADOWS, VTK_OUTPUT
 
 
-METHODS = ["slices", "ray-march", "radial-blur", "analytic", "epipolar"]
+METHODS = ["slices", "ray-march", "radial-blur", "analytic", "epipolar", "light-volume"]
 # RADIAL_BLUR measures 6% on the test scene's default view (README); at the extremes (eye in
 # the beam, light behind the camera, pencil cones) its screen-space shadows are worse.
 RADIAL_BLUR_BOUND = 0.3
@@ -52,6 +52,9 @@ def use_method(shafts, method=None):
     elif method == "epipolar":
         shafts.SetMethodToEpipolar()
         shafts.SetNumberOfSteps(shafts.GetNumberOfSlices())
+    elif method == "light-volume":
+        shafts.SetMethodToLightVolume()
+        shafts.SetLightVolumeResolution(1024)
 
 
 def bound(value):
@@ -189,8 +192,8 @@ def test_one_slice_and_the_maximum(method, slices):
 
 @pytest.mark.parametrize("size", [64, 16384])
 def test_smallest_and_largest_shadow_map(method, size):
-    if method not in ("slices", "ray-march", "epipolar"):
-        pytest.skip("only SLICES, RAY_MARCH and EPIPOLAR use a shadow map")
+    if method not in ("slices", "ray-march", "epipolar", "light-volume"):
+        pytest.skip("only SLICES, RAY_MARCH, EPIPOLAR and LIGHT_VOLUME use a shadow map")
     args = render(ShadowMapSize=size)
     renderer, window, info, shafts, image, _ = args
     error = error_against_reference(*args[:5])
@@ -252,7 +255,8 @@ def test_occluder_touching_the_light():
         actor.SetMapper(mapper)
         renderer.AddActor(actor)
     renderer, window, info, shafts, image, _ = render(prepare=prepare)
-    assert shafts.GetLastShadowMapRendered() == (_method in ("slices", "ray-march", "epipolar"))
+    assert shafts.GetLastShadowMapRendered() == (
+        _method in ("slices", "ray-march", "epipolar", "light-volume"))
     assert image.max() > 0.0
 
 
@@ -325,8 +329,8 @@ def test_point_light_extremes(method, case):
     elif case == "far away":  # 1000 units up: nearly parallel light, 1/r^2 = 1e-6
         prepare = point_light((0.3, 1000.0, 0.2), attenuation=(0.0, 0.0, 1.0))
     else:
-        if method not in ("slices", "ray-march", "epipolar"):
-            pytest.skip("only SLICES, RAY_MARCH and EPIPOLAR use a shadow map")
+        if method not in ("slices", "ray-march", "epipolar", "light-volume"):
+            pytest.skip("only SLICES, RAY_MARCH, EPIPOLAR and LIGHT_VOLUME use a shadow map")
         prepare = point_light((0.4, 3.4, 0.3))
         params["ShadowMapSize"] = 16384  # faces limited to a third of the largest texture
     args = render(prepare=prepare, **params)

@@ -48,6 +48,7 @@ SCALARS = [
     ("Method", True, False), ("LatticeResolution", True, True), ("NumberOfSteps", True, True),
     ("InterleaveSize", True, False), ("RadialSamples", True, True),
     ("EpipolarLines", True, True), ("EpipolarSamples", True, True), ("EpipolarStep", True, True),
+    ("LightVolumeResolution", True, True),
     ("Exposure", False, True), ("Anisotropy", False, False), ("NoiseAmplitude", False, False),
     ("NoiseScale", False, True), ("Time", False, False), ("Decay", False, False),
     ("Density", False, False), ("Weight", False, False), ("RadialGuardBand", False, False),
@@ -63,7 +64,8 @@ REFUSING = {"Exposure", "Anisotropy", "NoiseAmplitude", "NoiseScale", "Time", "D
 DOCUMENTED_WARNINGS = ["No spot or point light in the renderer", "given to the pass are switched off",
                        "The cookie shapes spot and directional lights only",
                        "cookie texture has no image", "noise texture has no image",
-                       "Method ANALYTIC ignores shadows", "lattice cells in a frame"]
+                       "Method ANALYTIC ignores shadows", "lattice cells in a frame",
+                       "Method LIGHT_VOLUME has no closed form"]
 INT_PROBE = 2 ** 31 - 1
 FLOAT_PROBE = 1e300
 

@@ -209,12 +209,14 @@ def test_analytic_matches_the_unshadowed_reference(kind):
 @pytest.mark.parametrize("method,bound,energy_bound", [
     ("ray-march", FINAL_RELATIVE_RMS_BOUND, FINAL_ENERGY_BOUND),
     ("radial-blur", 0.25, 0.15),
-    ("epipolar", FINAL_RELATIVE_RMS_BOUND, FINAL_ENERGY_BOUND)])
+    ("epipolar", FINAL_RELATIVE_RMS_BOUND, FINAL_ENERGY_BOUND),
+    ("light-volume", FINAL_RELATIVE_RMS_BOUND, FINAL_ENERGY_BOUND)])
 @pytest.mark.parametrize("kind", KINDS)
 def test_every_method_against_the_reference(kind, method, bound, energy_bound):
     # No VTK output expected (conftest fails the test on any).
     code = {"ray-march": vtkLightShaftPass.RAY_MARCH, "radial-blur": vtkLightShaftPass.RADIAL_BLUR,
-            "epipolar": vtkLightShaftPass.EPIPOLAR}[method]
+            "epipolar": vtkLightShaftPass.EPIPOLAR,
+            "light-volume": vtkLightShaftPass.LIGHT_VOLUME}[method]
     scene = final_scene(kind, Method=code)
     shafts = scene[3]
     assert all(shafts.GetLastLightMethod(i) == code for i in range(len(scene[4])))

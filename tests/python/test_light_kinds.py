@@ -21,7 +21,7 @@ SPOT, POINT, DIRECTIONAL = (vtkLightShaftPass.SPOT_LIGHT, vtkLightShaftPass.POIN
 KIND_NAMES = {SPOT: "spot", POINT: "point", DIRECTIONAL: "directional"}
 METHODS = {"slices": vtkLightShaftPass.SLICES, "ray-march": vtkLightShaftPass.RAY_MARCH,
            "radial-blur": vtkLightShaftPass.RADIAL_BLUR, "analytic": vtkLightShaftPass.ANALYTIC,
-           "epipolar": vtkLightShaftPass.EPIPOLAR}
+           "epipolar": vtkLightShaftPass.EPIPOLAR, "light-volume": vtkLightShaftPass.LIGHT_VOLUME}
 
 
 def make_kind(light, kind):
@@ -453,7 +453,7 @@ def test_every_method_supports_every_kind(kind, method):
     window.Render()
     slices = rh.in_scatter(shafts)
     tolerance = {"slices": 1e-6, "ray-march": 0.05, "radial-blur": 0.5, "analytic": 0.5,
-                 "epipolar": 0.05}[method]
+                 "epipolar": 0.05, "light-volume": 0.05}[method]
     assert abs(image.sum() - slices.sum()) <= tolerance * slices.sum()
 
 

@@ -103,12 +103,14 @@ def test_parameters_set_are_kept():
     window.Render()
     chosen = shafts.GetLastErrorModelSetting()
     name = vtkLightShaftPass.GetErrorModelSettingName(chosen)
-    kind, samples = re.match(r"([SM])(\d+)", name).groups()
+    kind, samples = re.match(r"([SMEV])(\d+)", name).groups()
     if kind == "S":  # slices
         assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES
         assert shafts.GetLastNumberOfSlicesDrawn() in (int(samples), int(samples) + 1)
-    else:  # ray-march steps
-        assert shafts.GetLastMethod() == vtkLightShaftPass.RAY_MARCH
+    else:  # ray-march steps, epipolar steps per sample, light-volume cells
+        method = {"M": vtkLightShaftPass.RAY_MARCH, "E": vtkLightShaftPass.EPIPOLAR,
+                  "V": vtkLightShaftPass.LIGHT_VOLUME}[kind]
+        assert shafts.GetLastMethod() == method
     assert shafts.GetNumberOfSlices() == 40 and shafts.GetBlurRadius() == 3
     assert not shafts.GetJitter()
     shafts.SetTargetError(0.0)
@@ -117,6 +119,23 @@ def test_parameters_set_are_kept():
     assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES
     assert shafts.GetLastNumberOfSlicesDrawn() == 40
     np.testing.assert_array_equal(rh.in_scatter(shafts), before)
+
+
+@pytest.mark.parametrize("feature", ["cookie", "noise"])
+def test_a_cookie_or_noise_leaves_the_light_volume_out(feature):
+    # LIGHT_VOLUME has no closed form with them (it would give way to RAY_MARCH, with a
+    # warning): the target's choice is made among the other settings, silently.
+    from test_methods import _cookie
+    params = dict(Cookie=_cookie()) if feature == "cookie" else dict(NoiseAmplitude=0.5)
+    renderer, window, _, shafts = make_scene(**params)
+    volumes = [i for i in range(number_of_settings())
+               if vtkLightShaftPass.GetErrorModelSettingName(i).startswith("V")]
+    for target in (0.5,) + TARGETS + (1e-4,):
+        shafts.SetTargetError(target)
+        window.Render()
+        assert shafts.GetLastErrorModelSetting() not in volumes, target
+        assert shafts.GetLastMethod() != vtkLightShaftPass.LIGHT_VOLUME
+        assert feature in shafts.GetLastShaderVariant()
 
 
 @pytest.mark.parametrize("params", [

@@ -9,6 +9,7 @@ from vtkmodules.vtkCommonCore import VTK_STRING, vtkOutputWindow
 
 # The pass's documented warnings that tests meet on purpose.
 ANALYTIC_IGNORES_SHADOWS = r"Method ANALYTIC ignores shadows"
+LIGHT_VOLUME_GIVES_WAY = r"Method LIGHT_VOLUME has no closed form"
 
 
 class Messages:

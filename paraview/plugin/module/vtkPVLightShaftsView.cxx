@@ -420,6 +420,11 @@ void vtkPVLightShaftsView::SetEpipolarStep(int step)
   this->Impl->Shafts->SetEpipolarStep(step);
 }
 
+void vtkPVLightShaftsView::SetLightVolumeResolution(int cells)
+{
+  this->Impl->Shafts->SetLightVolumeResolution(cells);
+}
+
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetDecay(double decay)
 {

@@ -108,7 +108,7 @@ public:
    * The method and its own controls, forwarded to vtkLightShaftPass (SetMethod,
    * SetLatticeResolution, SetNumberOfSteps, SetInterleaveSize, SetRadialSamples, SetDecay,
    * SetDensity, SetWeight, SetRadialJitter, SetRadialGuardBand, SetEpipolarLines,
-   * SetEpipolarSamples, SetEpipolarStep; same ranges and defaults).
+   * SetEpipolarSamples, SetEpipolarStep, SetLightVolumeResolution; same ranges and defaults).
    */
   void SetShaftMethod(int method);
   void SetLatticeResolution(int resolution);
@@ -123,6 +123,7 @@ public:
   void SetEpipolarLines(int lines);
   void SetEpipolarSamples(int samples);
   void SetEpipolarStep(int step);
+  void SetLightVolumeResolution(int cells);
   ///@}
 
   /**
