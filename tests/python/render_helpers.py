@@ -239,12 +239,18 @@ def floor_shadow_masks(renderer, window, info, erode=2):
     return erode_mask(on_floor & lit_here & ~shadowed), erode_mask(on_floor & lit_here & shadowed)
 
 
-def median_frame_time(window, frames):
-    """Median wall time of `frames` renders, each finished with glFinish (one warm-up frame)."""
+def median_frame_time(window, frames, warm_up=1, warm_up_seconds=0.0):
+    """Median wall time of `frames` renders, each finished with glFinish, after `warm_up`
+    frames, or more until `warm_up_seconds` have passed. A fresh scene's first frames can be
+    slow for a while (README, Known issues: 23 frames for the sphere scene's sphere)."""
     import statistics
     import time
-    window.Render()
-    window.WaitForCompletion()
+    start = time.perf_counter()
+    done = 0
+    while done < warm_up or (time.perf_counter() - start < warm_up_seconds and done < 100):
+        window.Render()
+        window.WaitForCompletion()
+        done += 1
     samples = []
     for _ in range(frames):
         start = time.perf_counter()
