@@ -186,6 +186,18 @@ def test_epipolar_matches_the_reference_and_converges(view):
     assert ref.energy_error(rh.in_scatter(shafts), reference) < 0.005
 
 
+def camera_in_the_spheres_shadow(renderer, info):
+    """The camera 0.4 beyond the sphere, on the line from the light through its centre (inside
+    its shadow), looking out sideways across the beam."""
+    (centre, radius), = info.spheres
+    light = np.asarray(info.light.GetPosition())
+    away = (np.asarray(centre) - light) / np.linalg.norm(np.asarray(centre) - light)
+    eye = np.asarray(centre) + (radius + 0.4) * away
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(*eye)
+    camera.SetFocalPoint(*(eye + np.array([1.0, 0.4, 3.0])))
+
+
 @pytest.mark.parametrize("view", ["outside", "radial", "in-shadow", "parallel"])
 def test_light_volume_matches_the_reference_and_converges(view):
     # outside: the default view; radial: the camera pulled back until the light is in the
@@ -197,12 +209,7 @@ def test_light_volume_matches_the_reference_and_converges(view):
         if view == "radial":
             camera.Zoom(0.45)
         elif view == "in-shadow":
-            (centre, radius), = info.spheres
-            light = np.asarray(info.light.GetPosition())
-            away = (np.asarray(centre) - light) / np.linalg.norm(np.asarray(centre) - light)
-            eye = np.asarray(centre) + (radius + 0.4) * away
-            camera.SetPosition(*eye)
-            camera.SetFocalPoint(*(eye + np.array([1.0, 0.4, 3.0])))
+            camera_in_the_spheres_shadow(renderer, info)
         elif view == "parallel":
             camera.ParallelProjectionOn()
             camera.SetParallelScale(3.0)
@@ -277,17 +284,10 @@ def test_light_volume_through_many_shadow_walls():
 def test_light_volume_counts_the_medium_in_front_of_the_near_plane():
     # The lit range starts just in front of the camera plane, not at the camera's near plane:
     # the mesh's walls between the two must be drawn (clipped at the near plane, a ray that
-    # started in the sphere's shadow lost its entry: a held-out scene was 8% too dark).
-    def prepare(renderer, info, shafts):
-        (centre, radius), = info.spheres
-        light = np.asarray(info.light.GetPosition())
-        away = (np.asarray(centre) - light) / np.linalg.norm(np.asarray(centre) - light)
-        eye = np.asarray(centre) + (radius + 0.4) * away
-        camera = renderer.GetActiveCamera()
-        camera.SetPosition(*eye)
-        camera.SetFocalPoint(*(eye + np.array([1.0, 0.4, 3.0])))
-    renderer, window, info, shafts = render_scene(prepare, Method=vtkLightShaftPass.RAY_MARCH,
-                                                  NumberOfSteps=256, InterleaveSize=1)
+    # started in the sphere's shadow lost its entry: a training scene was 8% too dark).
+    renderer, window, info, shafts = render_scene(
+        lambda renderer, info, shafts: camera_in_the_spheres_shadow(renderer, info),
+        Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=256, InterleaveSize=1)
     camera = renderer.GetActiveCamera()
     camera.SetClippingRange(2.5, camera.GetClippingRange()[1])  # beyond the shadow's walls
     window.Render()
