@@ -19,7 +19,8 @@ above 1% of the peak), or whose view holds nothing (every prop behind the camera
 range collapses), is drawn again (next attempt), not reported.
 
 For every scene and setting (the Draft, Interactive and Final presets; the defaults of RAY_MARCH,
-RADIAL_BLUR and ANALYTIC; or those of --ladder, --downsampled or --epipolar): the relative RMS
+RADIAL_BLUR and ANALYTIC; or those of --ladder, --downsampled, --epipolar or --light-volume;
+--validation adds the fitted ladder's): the relative RMS
 error of the pass's in-scatter against vtkLightShaftReference (exact surfaces and shadows, float64; pixels above
 1% of the reference's peak), and the time ratio: median frame time with the pass over the median
 frame time of the same scene without it, measured in the same run (--frames frames after a warm-up

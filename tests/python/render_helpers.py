@@ -92,6 +92,23 @@ def add_sphere(renderer, centre, radius, color, resolution=32):
     return actor
 
 
+def add_box(renderer, lengths, centre=(0.0, 0.0, 0.0)):
+    """Add a box actor (`lengths` along x, y, z about `centre`) to `renderer` and return it."""
+    from vtkmodules.vtkFiltersSources import vtkCubeSource
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
+    box = vtkCubeSource()
+    box.SetCenter(*centre)
+    box.SetXLength(lengths[0])
+    box.SetYLength(lengths[1])
+    box.SetZLength(lengths[2])
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(box.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    renderer.AddActor(actor)
+    return actor
+
+
 def screenshot(window, front=False):
     """The window's RGB pixels as (height, width, 3) uint8, row 0 at the bottom: the back buffer
     (as rendered), or with front=True the front buffer (as displayed, without re-rendering)."""

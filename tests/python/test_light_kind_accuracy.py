@@ -94,26 +94,17 @@ def test_a_caster_towards_a_cube_face_corner_casts(corner):
     # shadow (two random scenes lost a box's shadow this way: 1.2% and 2.2% over their image;
     # here 22.5% and 1.4% towards the edges before the fix, 0.33% and 0.65% after; the corner
     # case measures 0.41% either way).
-    from vtkmodules.vtkFiltersSources import vtkCubeSource
-    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
     renderer, window = rh.make_window(WIDTH, HEIGHT)
     info = scenes.sphere_and_floor(renderer)
     renderer.RemoveAllViewProps()
     light_position = np.array([0.0, 2.0, 0.0])
     direction = np.asarray(corner) / np.linalg.norm(corner)
-    plate = vtkCubeSource()
-    plate.SetXLength(1.6)
-    plate.SetYLength(1.6)
-    plate.SetZLength(0.05)
-    actor = vtkActor()
-    actor.SetMapper(vtkPolyDataMapper())
-    actor.GetMapper().SetInputConnection(plate.GetOutputPort())
+    actor = rh.add_box(renderer, (1.6, 1.6, 0.05))
     actor.SetPosition(*(light_position + 2.5 * direction))
     # Face the light: the plate's normal (+z) along the direction.
     azimuth = np.degrees(np.arctan2(direction[0], direction[2]))
     elevation = np.degrees(np.arcsin(direction[1]))
     actor.SetOrientation(-elevation, azimuth, 0.0)
-    renderer.AddActor(actor)
     lights = rh.make_light_kind(renderer, info, "point-constant", tuple(light_position))
     camera = renderer.GetActiveCamera()
     camera.SetPosition(*(light_position + 2.5 * direction + 6.0 * np.cross(direction, [0.3, 0.9, 0.1])))

@@ -236,20 +236,10 @@ def test_light_volume_through_many_shadow_walls():
     # of those large terms of both signs must not lose the small difference between them (the
     # crossings behind the surface are counted as integers, not summed as G(x1) terms): the
     # image stays within its mesh's own error of the reference, nothing negative or noisy.
-    from vtkmodules.vtkFiltersSources import vtkCubeSource
-    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
     renderer, window = rh.make_window(320, 240)
-    info = scenes.sphere_and_floor(renderer)
+    scenes.sphere_and_floor(renderer)
     for k in range(20):
-        bar = vtkCubeSource()
-        bar.SetCenter(-1.9 + 0.2 * k, 4.0, 0.0)
-        bar.SetXLength(0.08)
-        bar.SetYLength(0.05)
-        bar.SetZLength(4.0)
-        actor = vtkActor()
-        actor.SetMapper(vtkPolyDataMapper())
-        actor.GetMapper().SetInputConnection(bar.GetOutputPort())
-        renderer.AddActor(actor)
+        rh.add_box(renderer, (0.08, 0.05, 4.0), centre=(-1.9 + 0.2 * k, 4.0, 0.0))
     camera = renderer.GetActiveCamera()
     camera.SetPosition(6.0, 2.5, 9.0)  # across the bars' shafts
     renderer.ResetCameraClippingRange()
@@ -306,7 +296,7 @@ def test_light_volume_gives_way_to_the_march_for_a_cookie_or_noise(feature):
     renderer, window, info, shafts = render_scene(Method=vtkLightShaftPass.LIGHT_VOLUME)
     assert shafts.GetLastLightMethod(0) == vtkLightShaftPass.LIGHT_VOLUME
     if feature == "cookie":
-        shafts.SetCookie(_cookie())
+        shafts.SetCookie(rh.uniform_cookie())
     else:
         shafts.SetNoiseAmplitude(0.5)
     for _ in range(3):
@@ -322,20 +312,6 @@ def test_light_volume_gives_way_to_the_march_for_a_cookie_or_noise(feature):
         shafts.SetNoiseAmplitude(0.0)
     window.Render()
     assert shafts.GetLastLightMethod(0) == vtkLightShaftPass.LIGHT_VOLUME
-
-
-def _cookie():
-    from vtkmodules.util.numpy_support import numpy_to_vtk
-    from vtkmodules.vtkCommonDataModel import vtkImageData
-    from vtkmodules.vtkRenderingCore import vtkTexture
-    rgb = np.full((16, 16, 3), 255, np.uint8)
-    rgb[::2, ::2] = 0
-    image = vtkImageData()
-    image.SetDimensions(16, 16, 1)
-    image.GetPointData().SetScalars(numpy_to_vtk(rgb.reshape(-1, 3), deep=1))
-    cookie = vtkTexture()
-    cookie.SetInputData(image)
-    return cookie
 
 
 def test_epipolar_with_every_sample_marched_is_the_ray_march():

@@ -125,8 +125,7 @@ def test_parameters_set_are_kept():
 def test_a_cookie_or_noise_leaves_the_light_volume_out(feature):
     # LIGHT_VOLUME has no closed form with them (it would give way to RAY_MARCH, with a
     # warning): the target's choice is made among the other settings, silently.
-    from test_methods import _cookie
-    params = dict(Cookie=_cookie()) if feature == "cookie" else dict(NoiseAmplitude=0.5)
+    params = dict(Cookie=rh.uniform_cookie()) if feature == "cookie" else dict(NoiseAmplitude=0.5)
     renderer, window, _, shafts = make_scene(**params)
     volumes = [i for i in range(number_of_settings())
                if vtkLightShaftPass.GetErrorModelSettingName(i).startswith("V")]
