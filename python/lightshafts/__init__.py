@@ -16,9 +16,12 @@ from .vtkLightShafts import (  # noqa: F401
 __all__ = ["vtkLightShaftPass", "vtkLightShaftReference", "vtkLightShaftFetchFloor",
            "add_light_shafts", "configure", "write_png", "show_or_save"]
 
-_METHODS = {"slices": vtkLightShaftPass.SLICES, "ray-march": vtkLightShaftPass.RAY_MARCH,
-            "radial-blur": vtkLightShaftPass.RADIAL_BLUR, "analytic": vtkLightShaftPass.ANALYTIC,
-            "automatic": vtkLightShaftPass.AUTOMATIC}
+# Every method by the name the pass gives it ("slices", "ray-march", ..., "light-volume").
+_METHODS = {vtkLightShaftPass.GetMethodName(m): m
+            for m in (vtkLightShaftPass.SLICES, vtkLightShaftPass.RAY_MARCH,
+                      vtkLightShaftPass.RADIAL_BLUR, vtkLightShaftPass.ANALYTIC,
+                      vtkLightShaftPass.AUTOMATIC, vtkLightShaftPass.EPIPOLAR,
+                      vtkLightShaftPass.LIGHT_VOLUME)}
 _QUALITIES = ("draft", "interactive", "final")
 
 
@@ -29,8 +32,8 @@ def add_light_shafts(renderer, light=None, quality=None, method=None, **params):
 
     light: the spotlight (a vtkLight; added to the renderer when it is not there yet), or None
     for the renderer's first spotlight. quality: "draft", "interactive" or "final" (applied
-    first). method: "slices", "ray-march", "radial-blur", "analytic", "automatic" (or the
-    vtkLightShaftPass constant). Every other keyword is a parameter: Name=value calls
+    first). method: "slices", "ray-march", "radial-blur", "analytic", "automatic", "epipolar",
+    "light-volume" (or the vtkLightShaftPass constant). Every other keyword is a parameter: Name=value calls
     SetName(value), a tuple or list is passed as separate arguments (ScatteringCoefficient=(r, g,
     b)), a bool switches NameOn()/NameOff(). A pass the renderer already had becomes the
     delegate, so the scene renders as before, with shafts. (PyVista plotters:

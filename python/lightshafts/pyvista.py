@@ -95,9 +95,9 @@ def enable_light_shafts(plotter, light=None, quality=None, method=None, **params
     light: the light whose shafts are drawn (a pyvista.Light or a vtkLight; added to the
     renderer when it is not there yet), or None for the pass's own choice (the renderer's spot
     and point lights). quality: "draft", "interactive" or "final". method: "slices",
-    "ray-march", "radial-blur", "analytic" or "automatic". Every other keyword is a parameter of
-    vtkLightShaftPass (Name=value calls SetName(value); lightshafts.add_light_shafts has the
-    rules). Called again on the same renderer, it sets up the pass it already has and returns
+    "ray-march", "radial-blur", "analytic", "automatic", "epipolar" or "light-volume". Every
+    other keyword is a parameter of vtkLightShaftPass (Name=value calls SetName(value);
+    lightshafts.add_light_shafts has the rules). Called again on the same renderer, it sets up the pass it already has and returns
     it. The picture changes at the plotter's next render (show, screenshot, render).
     """
     _render_passes_module()

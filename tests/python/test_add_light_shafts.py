@@ -62,6 +62,17 @@ def test_a_new_light_is_added_and_an_existing_pass_becomes_the_delegate():
     assert renderer.GetLights().GetNumberOfItems() == 1
 
 
+@pytest.mark.parametrize("method", [vtkLightShaftPass.SLICES, vtkLightShaftPass.RAY_MARCH,
+                                    vtkLightShaftPass.RADIAL_BLUR, vtkLightShaftPass.ANALYTIC,
+                                    vtkLightShaftPass.AUTOMATIC, vtkLightShaftPass.EPIPOLAR,
+                                    vtkLightShaftPass.LIGHT_VOLUME])
+def test_every_method_is_chosen_by_the_name_the_pass_gives_it(method):
+    renderer, _ = rh.make_window(32, 32)
+    name = vtkLightShaftPass.GetMethodName(method)
+    assert add_light_shafts(renderer, method=name).GetMethod() == method
+    assert add_light_shafts(renderer, method=name.upper()).GetMethod() == method
+
+
 def test_bad_arguments_are_refused_with_their_name():
     renderer, _ = rh.make_window(32, 32)
     with pytest.raises(TypeError, match="Exposur"):
