@@ -18,6 +18,7 @@ set(lightshafts_private_classes
   vtkLightShaftPostProcess
   vtkLightShaftRadialBlurMethod
   vtkLightShaftRayMarchMethod
+  vtkLightShaftRefinement
   vtkLightShaftResources
   vtkLightShaftSceneRenderer
   vtkLightShaftSeparableFilter

@@ -120,6 +120,7 @@ vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
     }
     SetLayoutUniforms(program, layout, step);
     program->SetUniformi("numberOfSteps", p.NumberOfSteps);
+    program->SetUniformf("samplingRotation", static_cast<float>(frame.SamplingRotation));
     for (int i = 0; i < 6; ++i)
     {
       program->SetUniformi(samplers[i], textures[i]->GetTextureUnit());

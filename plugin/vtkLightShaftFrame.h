@@ -65,6 +65,8 @@ struct vtkLightShaftParameters
   bool RadialJitter{};
   double RadialGuardBand{};
   const double* ShadowCasterBounds = nullptr; ///< set for distributed rendering, else nullptr
+  bool ProgressiveRefinement{};
+  int RefinementFrames{};
   double TargetError{}; ///< 0: off; else the SLICES parameters above are the ladder's choice
 };
 
@@ -90,6 +92,11 @@ struct vtkLightShaftStatistics
   double PredictedError = -1.0;
   int ErrorModelSetting = -1;
   vtkLightShaftErrorModel::Features ErrorFeatures;
+  /// Progressive refinement: the estimates averaged into the picture (0: off), whether it is
+  /// converged, and whether the in-scatter was the converged one, not computed again.
+  int RefinementEstimates = 0;
+  bool RefinementConverged = false;
+  bool InScatterReused = false;
 };
 
 /**
@@ -139,6 +146,11 @@ struct vtkLightShaftFrame
   /// shapes spot and directional lights.
   vtkTextureObject* Cookie = nullptr;
   vtkTextureObject* Noise = nullptr;
+  /// Progressive refinement's shift of the sampling offsets (steps, slab jitter), in [0, 1),
+  /// and where in each piece its light-space lookups are, in (0, 1); 0 and 0.5 (the midpoint)
+  /// render the picture without refinement.
+  double SamplingRotation = 0.0;
+  double LookupFraction = 0.5;
 
   /// The method whose slab program the frame readied (GetLastShaderVariant reports it).
   const vtkLightShaftMethod* ShaderMethod = nullptr;

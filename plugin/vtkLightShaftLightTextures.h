@@ -10,6 +10,8 @@
 #include "vtkSmartPointer.h" // For the textures held
 #include "vtkType.h"         // For vtkMTimeType
 
+#include <algorithm> // For std::max
+
 class vtkObject;
 class vtkOpenGLRenderWindow;
 class vtkTexture;
@@ -46,6 +48,12 @@ public:
    * (also when the user's texture has no image: one warning from `owner`).
    */
   vtkTextureObject* ReadyNoise(vtkOpenGLRenderWindow* window, vtkObject* owner);
+
+  /// When the cookie and noise images in use were last uploaded (they change with them).
+  vtkMTimeType GetImagesTime() const
+  {
+    return std::max(this->CookieUploadTime, this->NoiseUploadTime);
+  }
 
   void ReleaseGraphicsResources(vtkWindow* window);
 

@@ -140,6 +140,7 @@ void vtkLightShaftPass::Internals::ReleaseOwnResources(vtkWindow* w)
   this->InScatter.ReleaseGraphicsResources(w);
   this->SurfaceLight.ReleaseGraphicsResources(w);
   this->Composite.ReleaseGraphicsResources(w);
+  this->Refinement.ReleaseGraphicsResources(w);
   vtkLightShaftResources::ReleaseFramebuffer(this->ReadFramebuffer, w);
   this->FinalInScatter = nullptr;
   this->InScatterValid = false;
@@ -584,6 +585,10 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   }
   impl.Scene.FinishFrame(frame);
   Internals::Publish(*this, frame);
+  if (this->LastRefinementEstimates > 0 && !this->LastRefinementConverged)
+  {
+    this->InvokeEvent(RefinementNeededEvent);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -663,6 +668,8 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
   p.RadialGuardBand = self.RadialGuardBand;
   p.ShadowCasterBounds = self.UseShadowCasterBounds ? self.ShadowCasterBounds : nullptr;
   p.TargetError = self.TargetError;
+  p.ProgressiveRefinement = self.ProgressiveRefinement;
+  p.RefinementFrames = self.RefinementFrames;
   return p;
 }
 
@@ -706,6 +713,9 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
     frame.Noise = this->Textures.ReadyNoise(frame.Window, frame.Owner);
   }
   ApplyErrorModel(frame, lightFrames, cookie != nullptr || frame.Noise != nullptr);
+  // Progressive refinement: this frame's shift of the samples, or a converged picture.
+  this->Refinement.Begin(
+    frame, vtkLightShaftRefinement::Sign(frame, lights, this->Textures.GetImagesTime()));
 
   // The scene, with the samples of the target it is composited into.
   frame.Scene.Samples = vtkLightShaftResources::TargetSamples();
@@ -713,19 +723,24 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   ostate->PushFramebufferBindings();
   this->Scene.Render(frame, delegate);
 
-  // Each light: its in-scatter added to the others', its surface light corrected.
-  this->InScatter.Begin(frame);
+  // The converged picture needs no shafts computed, unless the surfaces need their light.
   this->SurfaceLight.Begin();
-  frame.Statistics.Lights.resize(lights.size());
-  for (size_t i = 0; i < lights.size(); ++i)
-  {
-    frame.LightStatistics = &frame.Statistics.Lights[i];
-    this->RenderLight(
-      frame, delegate, lights[i], std::move(lightFrames[i]), cookie, shadowSurfaces);
-  }
-  frame.LightStatistics = nullptr;
   bool computed = false;
-  vtkTextureObject* inScatter = this->InScatter.Finish(frame, computed);
+  vtkTextureObject* inScatter = nullptr;
+  if (this->Refinement.IsConverged() && !shadowSurfaces && !cookie)
+  {
+    inScatter = this->Refinement.GetHistory();
+    computed = true;
+    frame.Statistics.Lights = this->ComputedLights;
+    frame.Statistics.InScatterReused = true;
+  }
+  else
+  {
+    inScatter = this->ComputeInScatter(
+      frame, delegate, lights, lightFrames, cookie, shadowSurfaces, computed);
+  }
+  frame.Statistics.RefinementEstimates = this->Refinement.GetEstimates();
+  frame.Statistics.RefinementConverged = this->Refinement.IsConverged();
   this->FinalInScatter = inScatter;
   this->InScatterValid = computed;
   frame.Scene.SurfaceCorrection = this->SurfaceLight.GetCorrection();
@@ -736,6 +751,34 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   ostate->vtkglEnable(GL_SCISSOR_TEST);
   ostate->vtkglScissor(origin[0], origin[1], frame.Size[0], frame.Size[1]);
   this->Composite.Render(frame, inScatter);
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftPass::Internals::ComputeInScatter(vtkLightShaftFrame& frame,
+  vtkRenderPass* delegate,
+  const std::vector<vtkLight*>& lights,
+  std::vector<vtkLightShaftGeometry::LightFrame>& lightFrames,
+  vtkTextureObject* cookie,
+  bool shadowSurfaces,
+  bool& computed)
+{
+  // Each light: its in-scatter added to the others', its surface light corrected.
+  this->InScatter.Begin(frame);
+  frame.Statistics.Lights.resize(lights.size());
+  bool rotates = false; // whether any light's samples move with SamplingRotation
+  for (size_t i = 0; i < lights.size(); ++i)
+  {
+    frame.LightStatistics = &frame.Statistics.Lights[i];
+    this->RenderLight(
+      frame, delegate, lights[i], std::move(lightFrames[i]), cookie, shadowSurfaces);
+    const int method = frame.Statistics.Lights[i].Method;
+    rotates = rotates || method == RAY_MARCH || method == EPIPOLAR ||
+              (method == SLICES && frame.Parameters.Jitter);
+  }
+  frame.LightStatistics = nullptr;
+  this->ComputedLights = frame.Statistics.Lights;
+  vtkTextureObject* inScatter = this->InScatter.Finish(frame, computed);
+  return this->Refinement.Accumulate(frame, inScatter, rotates);
 }
 
 //------------------------------------------------------------------------------
@@ -923,6 +966,9 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RadialJitter: " << this->RadialJitter << "\n";
   os << indent << "RadialGuardBand: " << this->RadialGuardBand << "\n";
   os << indent << "TargetError: " << this->TargetError << "\n";
+  os << indent << "ProgressiveRefinement: " << this->ProgressiveRefinement << "\n";
+  os << indent << "RefinementFrames: " << this->RefinementFrames << "\n";
+  os << indent << "LastRefinementEstimates: " << this->LastRefinementEstimates << "\n";
   os << indent << "LastPredictedError: " << this->LastPredictedError << "\n";
   os << indent << "LastMethod: " << GetMethodName(this->LastMethod) << "\n";
   os << indent << "BlurRadius: " << this->BlurRadius << "\n";

@@ -124,7 +124,12 @@ public:
   {
     /// After the shadow map is rendered and before it is used: GetShadowMapTexture() is valid
     /// (and may be rewritten, e.g. combined over distributed processes), the context current.
-    ShadowMapRenderedEvent = vtkCommand::UserEvent + 4301
+    ShadowMapRenderedEvent = vtkCommand::UserEvent + 4301,
+    /// After a frame whose picture is still refining (ProgressiveRefinement on, the view
+    /// still, GetLastRefinementConverged() false): render again to refine it. Answer it from a
+    /// timer or the event loop (lightshafts.refine_while_still does), not by rendering inside
+    /// the callback: the renderer is still rendering this frame.
+    RefinementNeededEvent = vtkCommand::UserEvent + 4302
   };
 
   /**
@@ -654,6 +659,45 @@ public:
 
   ///@{
   /**
+   * Progressive refinement of a still view. While nothing that decides the picture changes
+   * (camera, viewport, the pass's parameters and Time, the lights, the props and their data,
+   * cookie and noise images), each frame computes one more estimate of the in-scatter with
+   * its samples shifted (the steps of RAY_MARCH and EPIPOLAR, SLICES' jittered slab
+   * boundaries, and where in each step the shadow, cookie and noise are looked up) and shows
+   * the mean of the estimates so far: the first is the picture without refinement, and n
+   * estimates of s steps come close to one frame of n * s. After RefinementFrames estimates
+   * (after one where nothing shifts: ANALYTIC, LIGHT_VOLUME, RADIAL_BLUR, unjittered slices)
+   * the picture is converged: later frames reuse it without computing the shafts (unless
+   * ShadowSurfaces or a cookie needs the surfaces' light) and it does not change. Any change
+   * starts again from one estimate. Until converged, each frame ends with
+   * RefinementNeededEvent. Default is off.
+   */
+  vtkSetMacro(ProgressiveRefinement, bool);
+  vtkGetMacro(ProgressiveRefinement, bool);
+  vtkBooleanMacro(ProgressiveRefinement, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The estimates a still view's picture converges with, in [1, 4096]. Default is 16.
+   */
+  vtkSetClampMacro(RefinementFrames, int, 1, 4096);
+  vtkGetMacro(RefinementFrames, int);
+  ///@}
+
+  ///@{
+  /**
+   * Progressive refinement's state after the last frame: the estimates averaged into its
+   * picture (0: refinement off, or nothing computed), whether that picture is converged, and
+   * whether the frame reused the converged in-scatter instead of computing it.
+   */
+  vtkGetMacro(LastRefinementEstimates, int);
+  vtkGetMacro(LastRefinementConverged, bool);
+  vtkGetMacro(LastInScatterReused, bool);
+  ///@}
+
+  ///@{
+  /**
    * The error model's view of the last frame. The predicted relative RMS error: that of the
    * setting TargetError chose, or of the parameters set when they equal a setting of the
    * model's ladder (the presets do); -1 when there was no prediction (another method or
@@ -817,6 +861,8 @@ protected:
   bool RadialJitter = true;
   double RadialGuardBand = 1.0;
   double TargetError = 0.0;
+  bool ProgressiveRefinement = false;
+  int RefinementFrames = 16;
 
   // Last-frame statistics.
   int LastNumberOfSlicesDrawn = 0;
@@ -845,6 +891,9 @@ protected:
   double LastOpticalDepth = 0.0;
   double LastShadowTexelInPixels = 0.0;
   bool LastLightInView = false;
+  int LastRefinementEstimates = 0;
+  bool LastRefinementConverged = false;
+  bool LastInScatterReused = false;
 
 private:
   void RenderFrame(const vtkRenderState* s);

@@ -15,6 +15,7 @@
 #include "vtkLightShaftInScatter.h"     // For the in-scatter
 #include "vtkLightShaftLightTextures.h" // For the cookie and noise
 #include "vtkLightShaftLights.h"        // For the lights
+#include "vtkLightShaftRefinement.h"    // For the progressive refinement
 #include "vtkLightShaftSceneRenderer.h" // For the scene
 #include "vtkLightShaftSurfaceLight.h"  // For the surface light
 
@@ -49,11 +50,14 @@ public:
   vtkLightShaftInScatter InScatter;
   vtkLightShaftSurfaceLight SurfaceLight;
   vtkLightShaftComposite Composite;
+  vtkLightShaftRefinement Refinement;
 
   // The last frame's L_in (full resolution) when InScatterValid, and what it did per light.
   vtkTextureObject* FinalInScatter = nullptr;
   bool InScatterValid = false;
   std::vector<vtkLightShaftLightStatistics> LastLights;
+  /// What the last frame that computed the shafts did per light (a converged frame's too).
+  std::vector<vtkLightShaftLightStatistics> ComputedLights;
   std::string Variants; ///< GetLastShaderVariant's string
   vtkSmartPointer<vtkOpenGLFramebufferObject> ReadFramebuffer;
 
@@ -70,6 +74,15 @@ public:
   static void ApplyErrorModel(vtkLightShaftFrame& frame,
     const std::vector<vtkLightShaftGeometry::LightFrame>& lights,
     bool cookieOrNoise);
+  /// Every light's in-scatter added up, post-processed, refined (each light's surface light
+  /// too); false when nothing was computed (the target holds zeros).
+  vtkTextureObject* ComputeInScatter(vtkLightShaftFrame& frame,
+    vtkRenderPass* delegate,
+    const std::vector<vtkLight*>& lights,
+    std::vector<vtkLightShaftGeometry::LightFrame>& lightFrames,
+    vtkTextureObject* cookie,
+    bool shadowSurfaces,
+    bool& computed);
   void RenderLight(vtkLightShaftFrame& frame,
     vtkRenderPass* delegate,
     vtkLight* light,

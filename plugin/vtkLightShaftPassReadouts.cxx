@@ -99,6 +99,9 @@ void vtkLightShaftPass::Internals::Publish(vtkLightShaftPass& self, const vtkLig
   self.LastRadialGuardBand = stats.RadialGuardBand;
   self.LastPredictedError = stats.PredictedError;
   self.LastErrorModelSetting = stats.ErrorModelSetting;
+  self.LastRefinementEstimates = stats.RefinementEstimates;
+  self.LastRefinementConverged = stats.RefinementConverged;
+  self.LastInScatterReused = stats.InScatterReused;
   self.LastDepthRangeInBeamWidths = stats.ErrorFeatures.DepthRangeInBeamWidths;
   self.LastBeamWidthInPixels = stats.ErrorFeatures.BeamWidthInPixels;
   self.LastOpticalDepth = stats.ErrorFeatures.OpticalDepth;

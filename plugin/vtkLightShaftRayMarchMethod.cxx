@@ -41,6 +41,7 @@ vtkTextureObject* vtkLightShaftRayMarchMethod::Render(vtkLightShaftFrame& frame,
   }
   program->SetUniformi("numberOfSteps", p.NumberOfSteps);
   program->SetUniformi("interleaveSize", p.InterleaveSize);
+  program->SetUniformf("samplingRotation", static_cast<float>(frame.SamplingRotation));
 
   target.Bind();
   vtkLightShaftSlabDrawer::Slabs slabs =

@@ -101,6 +101,9 @@ Variant IntegrandVariant(const char* methodName,
   variant.Feature(shadows, "LIGHTSHAFT_SHADOW", "shadow");
   variant.Feature(frame.Cookie != nullptr, "LIGHTSHAFT_COOKIE", "cookie");
   variant.Feature(frame.Noise != nullptr, "LIGHTSHAFT_NOISE", "noise");
+  // Progressive refinement moves the lookups within each piece (none: nothing to move).
+  const bool lookups = shadows || frame.Cookie != nullptr || frame.Noise != nullptr;
+  variant.Feature(lookups && frame.LookupFraction != 0.5, "LIGHTSHAFT_REFINE", "refine");
   return variant;
 }
 
@@ -170,6 +173,10 @@ void SetIntegrandUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& f
   program->SetUniform3f("lightRadiantIntensity", light.Model.RadiantIntensity);
   program->SetUniform3f("sigmaS", frame.Medium.SigmaS);
   program->SetUniform3f("sigmaT", frame.Medium.SigmaT);
+  if (frame.LookupFraction != 0.5)
+  {
+    program->SetUniformf("lookupFraction", static_cast<float>(frame.LookupFraction));
+  }
   if (frame.Medium.Phase == vtkLightShaftPass::HENYEY_GREENSTEIN)
   {
     program->SetUniformf("anisotropy", static_cast<float>(frame.Medium.Anisotropy));

@@ -118,6 +118,7 @@ vtkTextureObject* vtkLightShaftSlicesMethod::Render(vtkLightShaftFrame& frame,
   {
     return nullptr;
   }
+  program->SetUniformf("samplingRotation", static_cast<float>(frame.SamplingRotation));
   if (eightBit)
   {
     program->SetUniformf(

@@ -18,6 +18,7 @@ set(lightshafts_pass_shaders
   vtkLightShaftOcclusionFS
   vtkLightShaftRadialBlurFS
   vtkLightShaftRayMarchFS
+  vtkLightShaftRefineFS
   vtkLightShaftResolveFS
   vtkLightShaftSegment
   vtkLightShaftSlabVS

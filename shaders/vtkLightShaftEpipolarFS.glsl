@@ -26,6 +26,7 @@
 uniform float slabStart; // the lit depth range
 uniform float slabEnd;
 uniform int numberOfSteps;
+uniform float samplingRotation; // in [0, 1): progressive refinement's shift of the steps
 
 uniform int epipolarLines;
 uniform int epipolarSamples;
@@ -68,7 +69,7 @@ vec3 epipolarMarch(vec2 pixel, float depth)
   {
     return vec3(0.0);
   }
-  return lightShaftMarch(ray, numberOfSteps, 1.0);
+  return lightShaftMarch(ray, numberOfSteps, 1.0 - samplingRotation);
 }
 
 // Stage 0: where sample `sampleIndex` of line `line` lies (kept inside the outer pixel
@@ -322,6 +323,6 @@ void main()
   {
     discard;
   }
-  gl_FragData[0] = vec4(lightShaftMarch(ray, numberOfSteps, 1.0), 0.0);
+  gl_FragData[0] = vec4(lightShaftMarch(ray, numberOfSteps, 1.0 - samplingRotation), 0.0);
 #endif
 }

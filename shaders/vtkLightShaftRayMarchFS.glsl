@@ -11,6 +11,7 @@ uniform float slabStart; // the lit depth range
 uniform float slabEnd;
 uniform int numberOfSteps;
 uniform int interleaveSize; // M: the pixels of an M x M block march with M^2 offsets
+uniform float samplingRotation; // in [0, 1): progressive refinement's shift of every offset
 
 //VTK::LightShaft::Common
 //VTK::LightShaft::Integrand
@@ -37,5 +38,8 @@ void main()
     int scrambled = (cellIndex * (cells / 2 + 1)) % cells;
     offset = (float(scrambled) + 0.5) / float(cells);
   }
+  // Refinement's estimates shift the offsets together (0: unchanged), within (0, 1].
+  offset -= samplingRotation;
+  offset += offset <= 0.0 ? 1.0 : 0.0;
   gl_FragData[0] = vec4(lightShaftMarch(ray, numberOfSteps, offset), 0.0);
 }

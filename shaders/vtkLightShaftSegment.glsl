@@ -58,6 +58,10 @@ float lightShaftAttenuationIntegral(float x0, float x1, float h2)
 // x = t + b is measured from the foot of the perpendicular from the light (squared length h2)
 // and the piece lies inside the cone and in front of the surface. Shadow, cookie and noise are
 // looked up once, at the piece's (equiangular) midpoint.
+#ifdef LIGHTSHAFT_REFINE
+uniform float lookupFraction; // where in a piece (of u) its lookups are; 0.5: the midpoint
+#endif
+
 vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, float x1)
 {
   // Product rule: the exact integral of A(r) over the segment times the A-weighted mean of the
@@ -76,6 +80,12 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
     sampleSinTheta);
 #else
   vec3 smoothMean = lightShaftSmoothMean(originVC, dirVC, b, h, constantA, u0, u1, sampleVC,
+    sampleR, sampleSinTheta);
+#endif
+#ifdef LIGHTSHAFT_REFINE
+  // Progressive refinement: each estimate looks up at another point of the piece (uniform in
+  // u, where A dt is), so that the estimates' mean averages the shadow over the piece.
+  lightShaftNode(originVC, dirVC, b, h, constantA, mix(u0, u1, lookupFraction), sampleVC,
     sampleR, sampleSinTheta);
 #endif
 

@@ -15,6 +15,7 @@ uniform float slabStart;
 uniform float slabEnd;
 uniform float slabThickness;
 uniform float lastSlab;
+uniform float samplingRotation; // in [0, 1): progressive refinement's shift of the offsets
 
 #ifdef LIGHTSHAFT_ACCUMULATE_8BIT
 uniform float accumulationScale; // Exposure: the talk's buffers hold displayed values
@@ -32,7 +33,9 @@ void main()
   ivec2 cell = ivec2(gl_FragCoord.xy) & 3;
   const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0,
     9.0, 15.0, 7.0, 13.0, 5.0);
-  slabOffset = (bayer[cell.y * 4 + cell.x] + 0.5) / 16.0 - 1.0;
+  // Refinement's estimates shift every pixel's offset by the same fraction of a slab (0:
+  // unchanged), so that each pixel's boundaries visit the whole slab over the estimates.
+  slabOffset = fract((bayer[cell.y * 4 + cell.x] + 0.5) / 16.0 + samplingRotation) - 1.0;
 #endif
   // Neighbouring slabs compute their shared boundary with the same expression: no gap.
   float nearDepth =

@@ -6,6 +6,7 @@
 #   tools/measure.sh quality-controls  # each speed/error control (docs/quality-controls.md)
 #   tools/measure.sh benchmark         # every method's settings, three scenes (docs/benchmark.md)
 #   tools/measure.sh light-kinds       # per light kind and several lights (docs/light-kinds.md)
+#   tools/measure.sh refinement        # a still view's progressive refinement (docs/refinement.md)
 #   tools/measure.sh worst-corners     # the slider corners (docs/robustness.md)
 #   tools/measure.sh random-scenes     # 50 random scenes: presets, methods, targets, the
 #                                      # fitted ladder (TargetError's cost against the oracle)
@@ -43,6 +44,7 @@ case "$what" in
   quality-controls) run tests/benchmarks/quality_controls.py --output docs/quality-controls.md "$@" ;;
   benchmark) run tests/benchmarks/benchmark.py --output-dir docs "$@" ;;
   light-kinds) run tests/benchmarks/light_kinds.py --output-dir docs "$@" ;;
+  refinement) run tests/benchmarks/refinement.py --output-dir docs "$@" ;;
   worst-corners) run tests/benchmarks/worst_corners.py "$@" ;;
   random-scenes)
     run tests/benchmarks/random_scenes.py --validation --seed 0 --scenes 50 --max-height 720 \

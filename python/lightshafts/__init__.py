@@ -14,7 +14,8 @@ from .vtkLightShafts import (  # noqa: F401
     vtkLightShaftFetchFloor, vtkLightShaftPass, vtkLightShaftReference)
 
 __all__ = ["vtkLightShaftPass", "vtkLightShaftReference", "vtkLightShaftFetchFloor",
-           "add_light_shafts", "configure", "write_png", "show_or_save"]
+           "add_light_shafts", "configure", "write_png", "show_or_save", "render_converged",
+           "refine_while_still"]
 
 # Every method by the name the pass gives it ("slices", "ray-march", ..., "light-volume").
 _METHODS = {vtkLightShaftPass.GetMethodName(m): m
@@ -78,6 +79,51 @@ def configure(shafts, renderer, light=None, quality=None, method=None, **params)
             renderer.AddLight(light)
         shafts.SetLight(light)
     return shafts
+
+
+def render_converged(window, shafts, max_frames=None):
+    """Render `window` until the still picture of `shafts` (a vtkLightShaftPass) is converged:
+    switches its ProgressiveRefinement on (and leaves it on) and renders until
+    GetLastRefinementConverged(), at most `max_frames` frames (default: its RefinementFrames).
+    Returns the number of frames rendered. For offscreen batch renders:
+
+        frames = lightshafts.render_converged(window, shafts)
+        lightshafts.write_png(window, "still.png")
+    """
+    shafts.ProgressiveRefinementOn()
+    limit = shafts.GetRefinementFrames() if max_frames is None else int(max_frames)
+    frames = 0
+    while frames < max(limit, 1):
+        window.Render()
+        frames += 1
+        # Converged, or nothing to refine (no shafts were computed).
+        if shafts.GetLastRefinementConverged() or shafts.GetLastRefinementEstimates() == 0:
+            break
+    return frames
+
+
+def refine_while_still(interactor, shafts):
+    """Refine the still view of an interactive window until it is converged: each
+    RefinementNeededEvent of `shafts` asks `interactor` for a one-shot timer, whose TimerEvent
+    renders once more (never a render inside the pass's own render). Moving the camera starts
+    a new picture, refined again once the view rests. Switches ProgressiveRefinement on.
+    Returns the two observer tags: (on `shafts`, on `interactor`)."""
+    from vtkmodules.vtkCommonCore import vtkCommand
+
+    shafts.ProgressiveRefinementOn()
+    pending = []
+
+    def on_refinement_needed(caller, event):
+        if not pending:
+            pending.append(interactor.CreateOneShotTimer(1))
+
+    def on_timer(caller, event):
+        if pending:
+            pending.clear()
+            interactor.Render()
+
+    return (shafts.AddObserver(vtkLightShaftPass.RefinementNeededEvent, on_refinement_needed),
+            interactor.AddObserver(vtkCommand.TimerEvent, on_timer))
 
 
 def write_png(window, filename):

@@ -146,3 +146,17 @@ def test_fixed_cost_smoke():
     assert [label for label, _ in ratios] == [
         "ANALYTIC", "ANALYTIC d8", "ANALYTIC d8, no AttenuateScene"], result.stdout
     assert all(float(ratio) > 0.0 for _, ratio in ratios)
+
+
+def test_refinement_benchmark_smoke(tmp_path):
+    script = os.path.join(os.path.dirname(BENCHMARK), "refinement.py")
+    result = subprocess.run([sys.executable, script, "--size", "96", "54", "--estimates", "4",
+                             "--frames", "1", "--output-dir", str(tmp_path),
+                             "--settings", "RAY_MARCH 4 steps, 1024² map"],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    text = (tmp_path / "refinement.md").read_text()
+    rows = [line for line in text.splitlines() if line.startswith("| ") and "%" in line]
+    assert [row.split("|")[1].strip() for row in rows] == ["1", "2", "4"]
+    errors = [float(row.split("|")[4].strip().rstrip("%")) for row in rows]
+    assert all(0.0 <= e < 100.0 for e in errors) and errors[-1] < errors[0]

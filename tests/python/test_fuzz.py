@@ -48,14 +48,15 @@ SCALARS = [
     ("Method", True, False), ("LatticeResolution", True, True), ("NumberOfSteps", True, True),
     ("InterleaveSize", True, False), ("RadialSamples", True, True),
     ("EpipolarLines", True, True), ("EpipolarSamples", True, True), ("EpipolarStep", True, True),
-    ("LightVolumeResolution", True, True),
+    ("LightVolumeResolution", True, True), ("RefinementFrames", True, True),
     ("Exposure", False, True), ("Anisotropy", False, False), ("NoiseAmplitude", False, False),
     ("NoiseScale", False, True), ("Time", False, False), ("Decay", False, False),
     ("Density", False, False), ("Weight", False, False), ("RadialGuardBand", False, False),
 ]
 VECTORS = [("ScatteringCoefficient", 3), ("AbsorptionCoefficient", 3),
            ("NoiseVelocity1", 2), ("NoiseVelocity2", 2)]
-BOOLEANS = ["AttenuateScene", "ShadowSurfaces", "AutomaticSliceCount", "Jitter", "RadialJitter"]
+BOOLEANS = ["AttenuateScene", "ShadowSurfaces", "AutomaticSliceCount", "Jitter", "RadialJitter",
+            "ProgressiveRefinement"]
 # Setters that refuse non-finite values (with an error naming the parameter).
 REFUSING = {"Exposure", "Anisotropy", "NoiseAmplitude", "NoiseScale", "Time", "Decay",
             "Density", "Weight", "RadialGuardBand", "ScatteringCoefficient",
@@ -307,6 +308,11 @@ class Fuzzer:
         self.shafts.SetDelegatePass(delegate)
         return f"SetDelegatePass({'steps' if delegate else None})"
 
+    def still(self):
+        # Nothing changes: with ProgressiveRefinement on, one more estimate (or the converged
+        # picture again).
+        return "still"
+
     def selection(self):
         w, h = self.window.GetSize()
         selector = vtkHardwareSelector()
@@ -318,7 +324,7 @@ class Fuzzer:
 
     ACTIONS = [(set_scalar, 30), (set_vector, 8), (set_boolean, 6), (preset, 2), (textures, 5),
                (light, 10), (several_lights, 8), (usable_light, 5), (camera, 10), (window_size, 6), (viewport, 4), (multisamples, 3),
-               (delegate, 2), (selection, 2)]
+               (delegate, 2), (selection, 2), (still, 6)]
 
     # --- one frame --------------------------------------------------------------------------
     def step(self, index):
@@ -354,6 +360,10 @@ class Fuzzer:
                 problems.append(f"warning: {warning.strip()}")
         problems += [f"VTK {kind}: {text.strip()}" for kind, text in VTK_OUTPUT.unexpected()]
         VTK_OUTPUT.messages.clear()
+        estimates = self.shafts.GetLastRefinementEstimates()
+        if estimates > self.shafts.GetRefinementFrames() or (
+                estimates and not self.shafts.GetProgressiveRefinement()):
+            problems.append(f"{estimates} refinement estimates")
         w, h = self.shafts.GetLastViewportSize()
         if w > 0 and h > 0 and not self.shafts.GetLastPlainScene():
             image = rh.in_scatter(self.shafts)

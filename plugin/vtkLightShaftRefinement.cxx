@@ -1,0 +1,201 @@
+#include "vtkLightShaftRefinement.h"
+
+#include "vtkLightShaftFrame.h"
+#include "vtkLightShaftModel.h"
+
+#include "vtkLight.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkProp.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include "vtkLightShaftRefineFS.h"
+
+#include <algorithm>
+#include <cmath>
+
+using vtkLightShaftResources::TextureKind;
+
+//------------------------------------------------------------------------------
+vtkLightShaftRefinement::vtkLightShaftRefinement() = default;
+vtkLightShaftRefinement::~vtkLightShaftRefinement() = default;
+
+//------------------------------------------------------------------------------
+namespace
+{
+// Equal to within rounding: a re-render for a screenshot (vtkWindowToImageFilter) rebuilds the
+// projection through the tile scale, a few 1e-8 off the window's own.
+bool NearlyEqual(const glm::dmat4& a, const glm::dmat4& b)
+{
+  for (int column = 0; column < 4; ++column)
+  {
+    for (int row = 0; row < 4; ++row)
+    {
+      const double x = a[column][row];
+      const double y = b[column][row];
+      if (!(std::abs(x - y) <= 1e-6 * std::max({ 1.0, std::abs(x), std::abs(y) })))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+}
+
+bool vtkLightShaftRefinement::Signature::operator==(const Signature& other) const
+{
+  return NearlyEqual(this->WorldToView, other.WorldToView) &&
+         NearlyEqual(this->ViewToClip, other.ViewToClip) && this->Origin[0] == other.Origin[0] &&
+         this->Origin[1] == other.Origin[1] && this->Size[0] == other.Size[0] &&
+         this->Size[1] == other.Size[1] && this->Objects == other.Objects &&
+         this->Lights == other.Lights;
+}
+
+vtkLightShaftRefinement::Signature vtkLightShaftRefinement::Sign(const vtkLightShaftFrame& frame,
+  const std::vector<vtkLight*>& lights,
+  vtkMTimeType imagesTime)
+{
+  Signature signature;
+  signature.Objects.emplace_back(frame.Owner, frame.Owner->GetMTime());
+  signature.Objects.emplace_back(nullptr, imagesTime);
+  for (vtkLight* light : lights)
+  {
+    signature.Objects.emplace_back(light, 0);
+    const vtkLightShaftModel::Light model = vtkLightShaftModel::DescribeLight(light);
+    signature.Lights.insert(signature.Lights.end(),
+      { static_cast<double>(model.Kind),
+        model.Position.x,
+        model.Position.y,
+        model.Position.z,
+        model.Axis.x,
+        model.Axis.y,
+        model.Axis.z,
+        model.ConeHalfAngle,
+        model.Exponent,
+        model.Attenuation[0],
+        model.Attenuation[1],
+        model.Attenuation[2],
+        model.RadiantIntensity[0],
+        model.RadiantIntensity[1],
+        model.RadiantIntensity[2],
+        model.SquareSide });
+  }
+  vtkPropCollection* props = frame.Renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (prop->GetVisibility())
+    {
+      signature.Objects.emplace_back(prop, prop->GetRedrawMTime());
+    }
+  }
+  signature.WorldToView = frame.Camera.WorldToView;
+  signature.ViewToClip = frame.Camera.ViewToClip;
+  for (int i = 0; i < 2; ++i)
+  {
+    signature.Origin[i] = frame.Origin[i];
+    signature.Size[i] = frame.Size[i];
+  }
+  return signature;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftRefinement::Begin(vtkLightShaftFrame& frame, Signature&& signature)
+{
+  const bool on = frame.Parameters.ProgressiveRefinement;
+  if (!on || !this->HasLast || !(signature == this->Last))
+  {
+    this->Estimates = 0;
+    this->Converged = false;
+  }
+  this->Last = std::move(signature);
+  this->HasLast = on;
+  // The R2 sequence (Roberts 2018), two dimensions: the n-th estimate's shifts fall where the
+  // earlier ones left the largest gaps, so n estimates of s steps sample their (shift, lookup)
+  // square about as evenly as a grid would.
+  const double n = on ? this->Estimates : 0.0;
+  double whole = 0.0;
+  frame.SamplingRotation = std::modf(n * 0.7548776662466927, &whole);
+  frame.LookupFraction = std::modf(0.5 + n * 0.5698402909980532, &whole);
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftRefinement::Accumulate(vtkLightShaftFrame& frame,
+  vtkTextureObject* estimate,
+  bool rotates)
+{
+  if (!frame.Parameters.ProgressiveRefinement)
+  {
+    this->Estimates = 0;
+    return estimate;
+  }
+  if (this->Converged)
+  {
+    return this->GetHistory();
+  }
+  const int w = frame.Size[0];
+  const int h = frame.Size[1];
+  const int next = this->Estimates == 0 ? this->Current : 1 - this->Current;
+  vtkTextureObject* previous = this->History[this->Current].Object;
+  vtkTextureObject* target = this->History[next].Ensure(frame.Window, TextureKind::RGBA32F, w, h);
+  vtkLightShaftResources::BindTargets(
+    vtkLightShaftResources::EnsureFramebuffer(this->Framebuffer, frame.Window),
+    { target },
+    nullptr,
+    w,
+    h);
+  vtkShaderProgram* program = this->Average.Ready(frame.Window, vtkLightShaftRefineFS);
+  if (!program)
+  {
+    return estimate;
+  }
+  // The first estimate reads no history (its weight is 1): the estimate stands in for it.
+  vtkTextureObject* mean = (this->Estimates == 0 || !previous) ? nullptr : previous;
+  estimate->Activate();
+  program->SetUniformi("estimate", estimate->GetTextureUnit());
+  if (mean)
+  {
+    mean->Activate();
+  }
+  program->SetUniformi("history", (mean ? mean : estimate)->GetTextureUnit());
+  program->SetUniformf(
+    "estimateWeight", mean ? 1.0f / static_cast<float>(this->Estimates + 1) : 1.0f);
+  this->Average.Render();
+  ++frame.Statistics.PostPasses;
+  if (mean)
+  {
+    mean->Deactivate();
+  }
+  estimate->Deactivate();
+  this->Current = next;
+  ++this->Estimates;
+  this->Converged = !rotates || this->Estimates >= frame.Parameters.RefinementFrames;
+  return target;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftRefinement::GetHistory() const
+{
+  return this->History[this->Current].Object;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftRefinement::Reset()
+{
+  this->HasLast = false;
+  this->Estimates = 0;
+  this->Converged = false;
+}
+
+void vtkLightShaftRefinement::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Reset();
+  this->History[0].Release(window);
+  this->History[1].Release(window);
+  this->Average.Release(window);
+  vtkLightShaftResources::ReleaseFramebuffer(this->Framebuffer, window);
+}

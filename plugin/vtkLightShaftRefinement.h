@@ -1,0 +1,102 @@
+/**
+ * @file   vtkLightShaftRefinement.h
+ * @brief  Progressive refinement of a still view's in-scatter (private, not installed).
+ */
+
+#ifndef vtkLightShaftRefinement_h
+#define vtkLightShaftRefinement_h
+
+#include "vtkLightShaftGeometry.h"  // For the camera matrices of the signature
+#include "vtkLightShaftResources.h" // For the owned textures and the full-screen pass
+#include "vtkSmartPointer.h"        // For the framebuffer held
+#include "vtkType.h"                // For vtkMTimeType
+
+#include <utility> // For the signature's (object, MTime) pairs
+#include <vector>  // For the signature's objects
+
+class vtkLight;
+class vtkObject;
+class vtkOpenGLFramebufferObject;
+class vtkTextureObject;
+class vtkWindow;
+struct vtkLightShaftFrame;
+
+/**
+ * @class   vtkLightShaftRefinement
+ * @brief   While nothing that decides the picture changes, each frame's in-scatter is one more
+ *          estimate, its samples rotated (SamplingRotation), averaged into a float history;
+ *          after RefinementFrames estimates (or one, when nothing of the frame's sampling
+ *          rotates) the history is converged and the shafts need not be computed again.
+ *
+ * What decides the picture (the signature): the camera's matrices, the viewport, the pass's
+ * parameters (its MTime, Time included), each light's values, and each visible prop, cookie
+ * and noise image with its MTime (a prop's redraw MTime: its mapper and input data). Any change
+ * starts a new history.
+ */
+class vtkLightShaftRefinement
+{
+public:
+  vtkLightShaftRefinement();
+  ~vtkLightShaftRefinement();
+
+  /// What decides the picture: the frame's camera and viewport, and (object, MTime) pairs.
+  struct Signature
+  {
+    glm::dmat4 WorldToView{ 1.0 };
+    glm::dmat4 ViewToClip{ 1.0 };
+    int Origin[2] = { 0, 0 };
+    int Size[2] = { 0, 0 };
+    std::vector<std::pair<const vtkObject*, vtkMTimeType>> Objects;
+    /// The lights as the pass reads them (vtkLightShaftModel::DescribeLight), not their MTimes:
+    /// the surface light switches a light off and on again within each frame.
+    std::vector<double> Lights;
+    bool operator==(const Signature& other) const;
+  };
+  /**
+   * What decides the frame's picture: its camera and viewport, the pass (frame.Owner), the
+   * `lights` and their values, the renderer's visible props with their redraw MTimes, and
+   * `imagesTime`, the cookie and noise images' (vtkLightShaftLightTextures::GetImagesTime).
+   */
+  static Signature Sign(const vtkLightShaftFrame& frame,
+    const std::vector<vtkLight*>& lights,
+    vtkMTimeType imagesTime);
+
+  /**
+   * Start the frame: a new history when `signature` differs from the last one's or refinement
+   * is off. Sets the frame's SamplingRotation and LookupFraction for its estimate: 0 and 0.5
+   * for a history's first (the picture without refinement), then the R2 sequence.
+   */
+  void Begin(vtkLightShaftFrame& frame, Signature&& signature);
+  /// Whether the history already holds the converged picture of this frame's signature.
+  bool IsConverged() const { return this->Converged; }
+
+  /**
+   * Add the frame's estimate (full resolution) into the history and return the history;
+   * `rotates` says whether the estimate's samples moved with the rotation (when not, one
+   * estimate is the converged picture). Refinement off: returns `estimate` unchanged.
+   */
+  vtkTextureObject* Accumulate(vtkLightShaftFrame& frame, vtkTextureObject* estimate, bool rotates);
+  /// The converged history (valid when IsConverged()).
+  vtkTextureObject* GetHistory() const;
+  /// Estimates in the picture the last frame showed (0: refinement off).
+  int GetEstimates() const { return this->Estimates; }
+
+  /// Forget the history (the next frame starts a new one).
+  void Reset();
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkLightShaftRefinement(const vtkLightShaftRefinement&) = delete;
+  void operator=(const vtkLightShaftRefinement&) = delete;
+
+  Signature Last;
+  bool HasLast = false;
+  int Estimates = 0;
+  bool Converged = false;
+  int Current = 0; ///< which of History holds the average
+  vtkLightShaftResources::OwnedTexture History[2];
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkLightShaftResources::FullScreenPass Average;
+};
+
+#endif
