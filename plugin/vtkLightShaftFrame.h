@@ -151,6 +151,8 @@ struct vtkLightShaftFrame
   /// render the picture without refinement.
   double SamplingRotation = 0.0;
   double LookupFraction = 0.5;
+  /// Progressive refinement's shift of the shadow maps' texel grid, in texels ([-0.5, 0.5)).
+  double ShadowMapOffset[2] = { 0.0, 0.0 };
 
   /// The method whose slab program the frame readied (GetLastShaderVariant reports it).
   const vtkLightShaftMethod* ShaderMethod = nullptr;

@@ -470,6 +470,24 @@ LightFrame ComputeLightFrame(const vtkLightShaftModel::Light& light,
 }
 
 //------------------------------------------------------------------------------
+void OffsetShadowCameras(LightFrame& light, double dx, double dy)
+{
+  // In clip coordinates an NDC shift is a shift by w: x' = x + dx w.
+  glm::dmat4 shift(1.0);
+  shift[3][0] = dx;
+  shift[3][1] = dy;
+  for (LightView& view : light.Views)
+  {
+    view.Projection = shift * view.Projection;
+    view.WorldToClip = shift * view.WorldToClip;
+    view.ViewToClip = shift * view.ViewToClip;
+  }
+  light.Projection = shift * light.Projection;
+  light.WorldToLightClip = shift * light.WorldToLightClip;
+  light.ViewToLightClip = shift * light.ViewToLightClip;
+}
+
+//------------------------------------------------------------------------------
 void ConvexPolytope::Clip(const glm::dvec4& plane)
 {
   const glm::dvec3 n(plane);

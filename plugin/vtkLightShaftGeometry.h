@@ -138,6 +138,14 @@ LightFrame ComputeLightFrame(const vtkLightShaftModel::Light& light,
   const double* casterBounds);
 
 /**
+ * Shift the texel grid of `light`'s shadow cameras by (dx, dy) in their normalised device
+ * coordinates (a texel of an N^2 map is 2 / N): progressive refinement's estimates render the
+ * map shifted by parts of a texel, so that their mean smooths the map's staircase. Every
+ * matrix that renders or looks up the map moves together; the cookie's square does not.
+ */
+void OffsetShadowCameras(LightFrame& light, double dx, double dy);
+
+/**
  * A convex polytope as a list of convex faces, clipped by half-spaces.
  */
 struct ConvexPolytope

@@ -716,6 +716,15 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   // Progressive refinement: this frame's shift of the samples, or a converged picture.
   this->Refinement.Begin(
     frame, vtkLightShaftRefinement::Sign(frame, lights, this->Textures.GetImagesTime()));
+  if (frame.ShadowMapOffset[0] != 0.0 || frame.ShadowMapOffset[1] != 0.0)
+  {
+    const double texel = 2.0 / frame.Parameters.ShadowMapSize; // in the map's NDC
+    for (vtkLightShaftGeometry::LightFrame& light : lightFrames)
+    {
+      vtkLightShaftGeometry::OffsetShadowCameras(
+        light, texel * frame.ShadowMapOffset[0], texel * frame.ShadowMapOffset[1]);
+    }
+  }
 
   // The scene, with the samples of the target it is composited into.
   frame.Scene.Samples = vtkLightShaftResources::TargetSamples();
@@ -765,12 +774,14 @@ vtkTextureObject* vtkLightShaftPass::Internals::ComputeInScatter(vtkLightShaftFr
   // Each light: its in-scatter added to the others', its surface light corrected.
   this->InScatter.Begin(frame);
   frame.Statistics.Lights.resize(lights.size());
-  bool rotates = false; // whether any light's samples move with SamplingRotation
+  bool rotates = false; // whether anything of this estimate moves with the next one's shifts
   for (size_t i = 0; i < lights.size(); ++i)
   {
     frame.LightStatistics = &frame.Statistics.Lights[i];
     this->RenderLight(
       frame, delegate, lights[i], std::move(lightFrames[i]), cookie, shadowSurfaces);
+    // Samples that shift. (The shadow map's texel grid shifts too, but alone, for
+    // LIGHT_VOLUME, it gains little: 0.39% -> 0.36% in 32 estimates on the sphere scene.)
     const int method = frame.Statistics.Lights[i].Method;
     rotates = rotates || method == RAY_MARCH || method == EPIPOLAR ||
               (method == SLICES && frame.Parameters.Jitter);

@@ -114,13 +114,18 @@ void vtkLightShaftRefinement::Begin(vtkLightShaftFrame& frame, Signature&& signa
   }
   this->Last = std::move(signature);
   this->HasLast = on;
-  // The R2 sequence (Roberts 2018), two dimensions: the n-th estimate's shifts fall where the
-  // earlier ones left the largest gaps, so n estimates of s steps sample their (shift, lookup)
-  // square about as evenly as a grid would.
+  // The R4 sequence (Roberts 2018): the n-th estimate's shifts fall where the earlier ones left
+  // the largest gaps, so n estimates sample their (step offset, lookup, map offset) space about
+  // as evenly as a grid would. Estimate 0 has no shift.
   const double n = on ? this->Estimates : 0.0;
+  const double alpha[4] = {
+    0.8566748838545029, 0.7338918566271260, 0.6287067210378087, 0.5385972572236101
+  }; // 1 / g^i, g^5 = g + 1
   double whole = 0.0;
-  frame.SamplingRotation = std::modf(n * 0.7548776662466927, &whole);
-  frame.LookupFraction = std::modf(0.5 + n * 0.5698402909980532, &whole);
+  frame.SamplingRotation = std::modf(n * alpha[0], &whole);
+  frame.LookupFraction = std::modf(0.5 + n * alpha[1], &whole);
+  frame.ShadowMapOffset[0] = std::modf(0.5 + n * alpha[2], &whole) - 0.5;
+  frame.ShadowMapOffset[1] = std::modf(0.5 + n * alpha[3], &whole) - 0.5;
 }
 
 //------------------------------------------------------------------------------

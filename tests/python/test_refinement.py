@@ -2,17 +2,17 @@
 more estimate with its samples shifted, averaged into the picture; any change starts again.
 
 Scene: scenes.sphere_and_floor at 160x120 with a 2048^2 shadow map, no blur; errors against the
-float64 reference (relative RMS over the pixels above 1% of its peak). Bounds, with what was
+float64 reference (exact surfaces and shadows; relative RMS over the pixels above 1% of its
+peak). Bounds, with what was
 measured on llvmpipe (`pytest -s` prints the figures):
 - the first estimate is the picture without refinement, bit for bit;
 - RAY_MARCH (4 steps), SLICES (8 jittered slabs) and EPIPOLAR (4 steps): the error never grows
   by more than 5% from 1 to 2, 4, 8, 16 and 32 estimates, and 32 estimates end below a quarter
-  of one's (measured 4.66% -> 0.36%, 4.57% -> 0.50%, 4.41% -> 0.76%: EPIPOLAR keeps the error
+  of one's (measured 4.63% -> 0.30%, 4.57% -> 0.30%, 4.42% -> 0.71%: EPIPOLAR keeps the error
   of its interpolation between samples);
-- 16 estimates of 4 steps are within 1.5 times the error of one frame of 64 steps (measured
-  0.42% against 0.29%).
-The reference here takes its visibility from the pass's own shadow map
-(vtkLightShaftReference SHADOW_MAP mode): refinement averages the sampling, not the map.
+- 16 estimates of 4 steps are within twice the error of one frame of 64 steps, 32 within 1.25
+  times (measured 0.47% and 0.30% against 0.30%): the estimates also shift the shadow map's
+  texel grid, which costs a little early and leaves less of the map's staircase late.
 """
 
 import numpy as np
@@ -39,7 +39,7 @@ SAMPLED = {
 
 def still_scene(width=WIDTH, height=HEIGHT, **params):
     renderer, window = rh.make_window(width, height)
-    info = scenes.sphere_and_floor(renderer, sphere_resolution=32)
+    info = scenes.sphere_and_floor(renderer)
     shafts = rh.plain_slab_pass(shadow_map=2048)
     for name, value in params.items():
         getattr(shafts, "Set" + name)(value)
@@ -48,19 +48,15 @@ def still_scene(width=WIDTH, height=HEIGHT, **params):
     return renderer, window, info, shafts
 
 
-def reference(renderer, shafts):
-    """vtkLightShaftReference's float64 in-scatter with the pass's own shadow map for
-    visibility: what the estimates converge to (the map's own error is not refinement's)."""
-    from lightshafts import vtkLightShaftReference
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    reference = vtkLightShaftReference()
-    reference.SetRenderer(renderer)
-    reference.SetLightShaftPass(shafts)
-    reference.SetVisibilityModeToShadowMap()
-    reference.Update()
-    image = reference.GetOutput()
-    w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, 3).astype(np.float64)
+_references = {}
+
+
+def reference(renderer, window, info, shafts):
+    """The float64 reference (exact surfaces and shadows) for the scene as set up."""
+    key = tuple(window.GetSize())
+    if key not in _references:
+        _references[key] = rh.reference_for(renderer, window, info, shafts)
+    return _references[key]
 
 
 def error(image, expected):
@@ -114,7 +110,7 @@ def test_the_estimates_converge_to_the_reference(method):
     expected = None
     for estimates in range(1, 33):
         image = render(window, shafts)
-        expected = reference(renderer, shafts) if expected is None else expected
+        expected = reference(renderer, window, info, shafts) if expected is None else expected
         assert shafts.GetLastRefinementEstimates() == estimates
         if estimates in (1, 2, 4, 8, 16, 32):
             errors[estimates] = error(image, expected)
@@ -127,17 +123,23 @@ def test_the_estimates_converge_to_the_reference(method):
     assert "refine" in shafts.GetLastShaderVariant()
 
 
-def test_sixteen_estimates_of_four_steps_are_about_one_frame_of_sixty_four():
-    renderer, window, info, shafts = still_scene(**SAMPLED["ray-march"])
+def test_estimates_of_four_steps_come_close_to_one_frame_of_sixty_four():
+    renderer, window, info, shafts = still_scene(RefinementFrames=32, **SAMPLED["ray-march"])
     shafts.SetNumberOfSteps(64)
     one_frame = render(window, shafts)
-    expected = reference(renderer, shafts)
+    expected = reference(renderer, window, info, shafts)
     shafts.SetNumberOfSteps(4)
-    refined = lightshafts.render_converged(window, shafts)
-    assert refined == 16
-    one_frame, sixteen = error(one_frame, expected), error(rh.in_scatter(shafts), expected)
-    print(f"64 steps {100 * one_frame:.3f}%, 16 x 4 steps {100 * sixteen:.3f}%")
-    assert sixteen < 1.5 * one_frame
+    shafts.ProgressiveRefinementOn()
+    refined = {}
+    for estimates in range(1, 33):
+        image = render(window, shafts)
+        if estimates in (16, 32):
+            refined[estimates] = error(image, expected)
+    one_frame = error(one_frame, expected)
+    print(f"64 steps {100 * one_frame:.3f}%; 4 steps, 16 estimates {100 * refined[16]:.3f}%, "
+          f"32 estimates {100 * refined[32]:.3f}%")
+    assert refined[16] < 2.0 * one_frame
+    assert refined[32] < 1.25 * one_frame
 
 
 @pytest.mark.parametrize("kind", ["point", "directional", "pair"])
@@ -194,6 +196,8 @@ def test_surfaces_shadowed_keep_their_light_computed_and_the_picture_stays():
     assert np.array_equal(rh.screenshot(window), picture)
 
 
+# LIGHT_VOLUME has no samples to shift; its shadow map's grid alone would gain little (0.39% ->
+# 0.36% in 32 estimates on the sphere scene at 320x240 with a 512^2 map).
 @pytest.mark.parametrize("method", ["analytic", "light-volume", "radial-blur", "unjittered"])
 def test_methods_with_nothing_to_shift_converge_at_once(method):
     VTK_OUTPUT.expect(ANALYTIC_IGNORES_SHADOWS)
