@@ -3,6 +3,7 @@
 set(lightshafts_private_classes
   vtkLightShaftAnalyticMethod
   vtkLightShaftComposite
+  vtkLightShaftCostModel
   vtkLightShaftEpipolar
   vtkLightShaftEpipolarMethod
   vtkLightShaftErrorModel
@@ -27,8 +28,10 @@ set(lightshafts_private_classes
   vtkLightShaftSlabDrawer
   vtkLightShaftSlicesMethod
   vtkLightShaftSurfaceLight)
-# vtkLightShaftPass's read-outs are compiled with it (the public class's second source file).
-set(lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassReadouts.cxx")
+# vtkLightShaftPass's read-outs and its choice of sampling are compiled with it (the public
+# class's second and third source files).
+set(lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassReadouts.cxx"
+  "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassSampling.cxx")
 set(lightshafts_private_headers
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftFrame.h"
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftErrorModelTable.h"

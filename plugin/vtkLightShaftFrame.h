@@ -67,6 +67,8 @@ struct vtkLightShaftParameters
   const double* ShadowCasterBounds = nullptr; ///< set for distributed rendering, else nullptr
   bool ProgressiveRefinement{};
   int RefinementFrames{};
+  double TimeBudget{};
+  bool UseAllocatedRenderTime{};
   double TargetError{}; ///< 0: off; else the SLICES parameters above are the ladder's choice
 };
 
@@ -97,6 +99,13 @@ struct vtkLightShaftStatistics
   int RefinementEstimates = 0;
   bool RefinementConverged = false;
   bool InScatterReused = false;
+  /// The frame budget (seconds; 0: none), the frame time the cost model predicted for the
+  /// choice (-1: none), the measured time of the shafts' part of the frame (-1: not measured,
+  /// measured only under a budget), and the lit lights the budget counted.
+  double TimeBudget = 0.0;
+  double PredictedFrameTime = -1.0;
+  double FrameTime = -1.0;
+  int BudgetLights = 0;
 };
 
 /**

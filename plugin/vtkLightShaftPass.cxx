@@ -40,6 +40,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <initializer_list>
 #include <string>
@@ -272,6 +273,11 @@ void vtkLightShaftPass::SetTime(double time)
 void vtkLightShaftPass::SetRadialGuardBand(double extent)
 {
   SetClamped(this, "RadialGuardBand", &this->RadialGuardBand, { extent }, 1.0, 4.0);
+}
+
+void vtkLightShaftPass::SetTimeBudget(double seconds)
+{
+  SetClamped(this, "TimeBudget", &this->TimeBudget, { seconds }, 0.0, 3600.0);
 }
 
 void vtkLightShaftPass::SetTargetError(double error)
@@ -670,6 +676,8 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
   p.TargetError = self.TargetError;
   p.ProgressiveRefinement = self.ProgressiveRefinement;
   p.RefinementFrames = self.RefinementFrames;
+  p.TimeBudget = self.TimeBudget;
+  p.UseAllocatedRenderTime = self.UseAllocatedRenderTime;
   return p;
 }
 
@@ -705,26 +713,15 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
         frame.Renderer->GetViewProps(),
         frame.Parameters.ShadowCasterBounds));
   }
-  // The cookie and noise decided once (a target error leaves out the settings that have no
-  // closed form with them).
-  vtkTextureObject* cookie = this->Textures.ReadyCookie(frame.Window, frame.Owner);
-  if (frame.Parameters.NoiseAmplitude > 0.0 && frame.Medium.Scatters())
+  vtkTextureObject* cookie = this->ChooseSampling(frame, lights, lightFrames);
+  // Under a frame budget the frame is measured (each part finished) for the cost model.
+  const bool timed = frame.Statistics.TimeBudget > 0.0;
+  using Clock = std::chrono::steady_clock;
+  if (timed)
   {
-    frame.Noise = this->Textures.ReadyNoise(frame.Window, frame.Owner);
+    glFinish();
   }
-  ApplyErrorModel(frame, lightFrames, cookie != nullptr || frame.Noise != nullptr);
-  // Progressive refinement: this frame's shift of the samples, or a converged picture.
-  this->Refinement.Begin(
-    frame, vtkLightShaftRefinement::Sign(frame, lights, this->Textures.GetImagesTime()));
-  if (frame.ShadowMapOffset[0] != 0.0 || frame.ShadowMapOffset[1] != 0.0)
-  {
-    const double texel = 2.0 / frame.Parameters.ShadowMapSize; // in the map's NDC
-    for (vtkLightShaftGeometry::LightFrame& light : lightFrames)
-    {
-      vtkLightShaftGeometry::OffsetShadowCameras(
-        light, texel * frame.ShadowMapOffset[0], texel * frame.ShadowMapOffset[1]);
-    }
-  }
+  const Clock::time_point start = Clock::now();
 
   // The scene, with the samples of the target it is composited into.
   frame.Scene.Samples = vtkLightShaftResources::TargetSamples();
@@ -736,6 +733,7 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   this->SurfaceLight.Begin();
   bool computed = false;
   vtkTextureObject* inScatter = nullptr;
+  double shafts = 0.0;
   if (this->Refinement.IsConverged() && !shadowSurfaces && !cookie)
   {
     inScatter = this->Refinement.GetHistory();
@@ -745,8 +743,18 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   }
   else
   {
+    if (timed)
+    {
+      glFinish();
+    }
+    const Clock::time_point shaftsStart = Clock::now();
     inScatter = this->ComputeInScatter(
       frame, delegate, lights, lightFrames, cookie, shadowSurfaces, computed);
+    if (timed)
+    {
+      glFinish();
+    }
+    shafts = std::chrono::duration<double>(Clock::now() - shaftsStart).count();
   }
   frame.Statistics.RefinementEstimates = this->Refinement.GetEstimates();
   frame.Statistics.RefinementConverged = this->Refinement.IsConverged();
@@ -760,6 +768,12 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   ostate->vtkglEnable(GL_SCISSOR_TEST);
   ostate->vtkglScissor(origin[0], origin[1], frame.Size[0], frame.Size[1]);
   this->Composite.Render(frame, inScatter);
+  if (timed)
+  {
+    glFinish();
+    this->ObserveFrameTime(
+      frame, shafts, std::chrono::duration<double>(Clock::now() - start).count());
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -790,93 +804,6 @@ vtkTextureObject* vtkLightShaftPass::Internals::ComputeInScatter(vtkLightShaftFr
   this->ComputedLights = frame.Statistics.Lights;
   vtkTextureObject* inScatter = this->InScatter.Finish(frame, computed);
   return this->Refinement.Accumulate(frame, inScatter, rotates);
-}
-
-//------------------------------------------------------------------------------
-// The error model: with a target error, the cheapest setting of its ladder predicted to meet
-// it on every lit light (AUTOMATIC keeps its exact integral where nothing shadows); without
-// one, its prediction for the parameters set when they are one of its settings.
-void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
-  const std::vector<vtkLightShaftGeometry::LightFrame>& lights,
-  bool cookieOrNoise)
-{
-  namespace model = vtkLightShaftErrorModel;
-  std::vector<model::Features> features;
-  for (const vtkLightShaftGeometry::LightFrame& light : lights)
-  {
-    if (light.Model.Radiates())
-    {
-      features.push_back(model::Describe(light, frame.Camera, frame.Medium, frame.Size[0]));
-      if (features.back().Lit && !frame.Statistics.ErrorFeatures.Lit)
-      {
-        frame.Statistics.ErrorFeatures = features.back();
-      }
-    }
-  }
-  vtkLightShaftParameters& p = frame.Parameters;
-  if (!frame.Medium.Scatters() || !frame.Statistics.ErrorFeatures.Lit)
-  {
-    return; // no shafts to predict
-  }
-  int setting = -1;
-  double predicted = -1.0;
-  if (p.TargetError > 0.0)
-  {
-    setting = model::Choose(p.TargetError, features, !cookieOrNoise, predicted);
-    const model::Setting& chosen = model::GetSetting(setting);
-    // AUTOMATIC keeps its exact integral where nothing can shadow; else the chosen method.
-    const bool exact =
-      p.Method == vtkLightShaftPass::AUTOMATIC && p.NoiseAmplitude <= 0.0 &&
-      std::none_of(lights.begin(),
-        lights.end(),
-        [](const vtkLightShaftGeometry::LightFrame& l) { return l.ShadowsPossible; });
-    p.Method = exact ? p.Method : chosen.Method;
-    p.AutomaticSliceCount = false;
-    p.NumberOfSlices =
-      chosen.Method == vtkLightShaftPass::SLICES ? chosen.Samples : p.NumberOfSlices;
-    const bool marched =
-      chosen.Method == vtkLightShaftPass::RAY_MARCH || chosen.Method == vtkLightShaftPass::EPIPOLAR;
-    p.NumberOfSteps = marched ? chosen.Samples : p.NumberOfSteps;
-    if (chosen.Method == vtkLightShaftPass::EPIPOLAR)
-    {
-      p.EpipolarLines = chosen.EpipolarLines;
-      p.EpipolarSamples = chosen.EpipolarSamples;
-      p.EpipolarStep = chosen.EpipolarStep;
-    }
-    p.LightVolumeResolution =
-      chosen.Method == vtkLightShaftPass::LIGHT_VOLUME ? chosen.Samples : p.LightVolumeResolution;
-    p.Jitter = chosen.Jitter;
-    p.InterleaveSize = chosen.InterleaveSize;
-    p.BlurRadius = chosen.BlurRadius;
-    p.DownsampleFactor = chosen.DownsampleFactor;
-    p.ShadowMapSize = chosen.ShadowMapSize;
-    p.AccumulationPrecision = vtkLightShaftPass::ACCUMULATE_FLOAT32;
-    frame.Reduced[0] = (frame.Size[0] + p.DownsampleFactor - 1) / p.DownsampleFactor;
-    frame.Reduced[1] = (frame.Size[1] + p.DownsampleFactor - 1) / p.DownsampleFactor;
-  }
-  else if ((p.Method == vtkLightShaftPass::SLICES && !p.AutomaticSliceCount) ||
-           p.Method == vtkLightShaftPass::RAY_MARCH || p.Method == vtkLightShaftPass::EPIPOLAR ||
-           p.Method == vtkLightShaftPass::LIGHT_VOLUME)
-  {
-    const bool slices = p.Method == vtkLightShaftPass::SLICES;
-    const bool volume = p.Method == vtkLightShaftPass::LIGHT_VOLUME;
-    const model::Setting current{ "",
-      p.Method,
-      slices ? p.NumberOfSlices : (volume ? p.LightVolumeResolution : p.NumberOfSteps),
-      p.Jitter,
-      p.BlurRadius,
-      p.DownsampleFactor,
-      p.ShadowMapSize,
-      p.InterleaveSize,
-      p.EpipolarLines,
-      p.EpipolarSamples,
-      p.EpipolarStep };
-    const bool float32 = p.AccumulationPrecision == vtkLightShaftPass::ACCUMULATE_FLOAT32;
-    setting = float32 ? model::FindSetting(current) : -1;
-    predicted = setting >= 0 ? model::Predict(setting, features) : -1.0;
-  }
-  frame.Statistics.ErrorModelSetting = setting;
-  frame.Statistics.PredictedError = predicted;
 }
 
 //------------------------------------------------------------------------------
@@ -979,6 +906,8 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TargetError: " << this->TargetError << "\n";
   os << indent << "ProgressiveRefinement: " << this->ProgressiveRefinement << "\n";
   os << indent << "RefinementFrames: " << this->RefinementFrames << "\n";
+  os << indent << "TimeBudget: " << this->TimeBudget << "\n";
+  os << indent << "UseAllocatedRenderTime: " << this->UseAllocatedRenderTime << "\n";
   os << indent << "LastRefinementEstimates: " << this->LastRefinementEstimates << "\n";
   os << indent << "LastPredictedError: " << this->LastPredictedError << "\n";
   os << indent << "LastMethod: " << GetMethodName(this->LastMethod) << "\n";

@@ -687,6 +687,51 @@ public:
 
   ///@{
   /**
+   * Frame budget in seconds, in [0, 3600]; 0 turns it off. While a budget applies, each frame
+   * renders the most accurate sampling the pass predicts will fit it: a setting of the error
+   * model's ladder (EPIPOLAR, LIGHT_VOLUME and RAY_MARCH settings, as TargetError's), at full
+   * resolution if any fits, else at half, else at quarter resolution (DownsampleFactor), the
+   * lowest predicted error first; with a TargetError as well, the cheapest of those that fit
+   * and meet it at full resolution; when nothing fits, the cheapest. The frame's time is predicted by a cost
+   * model learnt from the frames the pass renders under a budget (each finished with glFinish
+   * to be measured), starting from the costs measured on the random scenes. While the view is
+   * still the choice is kept (progressive refinement can then converge). The choice overrides
+   * the parameters set for that frame as TargetError's does. Non-finite values are refused.
+   * Default is 0 (off).
+   */
+  void SetTimeBudget(double seconds);
+  vtkGetMacro(TimeBudget, double);
+  ///@}
+
+  ///@{
+  /**
+   * Follow VTK's interaction idiom: while the renderer's AllocatedRenderTime is under 10 s (an
+   * interactor sets the window's DesiredUpdateRate while the user drags, 15 frames per second
+   * by default: 1/15 s), it is the frame budget (the smaller of the two with TimeBudget); at
+   * rest (StillUpdateRate: 10000 s) and in scripts that never set a rate there is none. Default
+   * is on.
+   */
+  vtkSetMacro(UseAllocatedRenderTime, bool);
+  vtkGetMacro(UseAllocatedRenderTime, bool);
+  vtkBooleanMacro(UseAllocatedRenderTime, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The frame budget after the last frame: the budget it had (seconds; 0: none), the frame time
+   * predicted for the sampling chosen (-1: no budget), the time it measured (the shafts' part
+   * of the frame, scene and composite included; -1: not measured, only frames under a budget
+   * are), and the in-scatter's resolution factor it rendered with (DownsampleFactor, or the
+   * budget's or target's choice). GetLastErrorModelSetting() names the setting.
+   */
+  vtkGetMacro(LastTimeBudget, double);
+  vtkGetMacro(LastPredictedFrameTime, double);
+  vtkGetMacro(LastFrameTime, double);
+  vtkGetMacro(LastDownsampleFactor, int);
+  ///@}
+
+  ///@{
+  /**
    * Progressive refinement's state after the last frame: the estimates averaged into its
    * picture (0: refinement off, or nothing computed), whether that picture is converged, and
    * whether the frame reused the converged in-scatter instead of computing it.
@@ -863,6 +908,8 @@ protected:
   double TargetError = 0.0;
   bool ProgressiveRefinement = false;
   int RefinementFrames = 16;
+  double TimeBudget = 0.0;
+  bool UseAllocatedRenderTime = true;
 
   // Last-frame statistics.
   int LastNumberOfSlicesDrawn = 0;
@@ -894,6 +941,10 @@ protected:
   int LastRefinementEstimates = 0;
   bool LastRefinementConverged = false;
   bool LastInScatterReused = false;
+  double LastTimeBudget = 0.0;
+  double LastPredictedFrameTime = -1.0;
+  double LastFrameTime = -1.0;
+  int LastDownsampleFactor = 1;
 
 private:
   void RenderFrame(const vtkRenderState* s);

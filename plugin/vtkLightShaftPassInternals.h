@@ -10,6 +10,7 @@
 #include "vtkLightShaftPass.h"
 
 #include "vtkLightShaftComposite.h"     // For the composite
+#include "vtkLightShaftCostModel.h"     // For the frame budget's cost model
 #include "vtkLightShaftErrorModel.h"    // For the error model's features
 #include "vtkLightShaftFrame.h"         // For the frame
 #include "vtkLightShaftInScatter.h"     // For the in-scatter
@@ -51,6 +52,9 @@ public:
   vtkLightShaftSurfaceLight SurfaceLight;
   vtkLightShaftComposite Composite;
   vtkLightShaftRefinement Refinement;
+  vtkLightShaftCostModel Costs;
+  vtkLightShaftCostModel::Choice BudgetChoice; ///< kept while the view is still
+  bool HasBudgetChoice = false;
 
   // The last frame's L_in (full resolution) when InScatterValid, and what it did per light.
   vtkTextureObject* FinalInScatter = nullptr;
@@ -71,9 +75,20 @@ public:
     vtkRenderPass* delegate,
     const std::vector<vtkLight*>& lights,
     bool shadowSurfaces);
-  static void ApplyErrorModel(vtkLightShaftFrame& frame,
+  /// Cookie and noise readied, the sampling chosen, refinement begun (and its shadow-map
+  /// shift applied to `lightFrames`); returns the cookie texture (vtkLightShaftPassSampling.cxx).
+  vtkTextureObject* ChooseSampling(vtkLightShaftFrame& frame,
+    const std::vector<vtkLight*>& lights,
+    std::vector<vtkLightShaftGeometry::LightFrame>& lightFrames);
+  /// The frame's budget in seconds (0: none): TimeBudget, or the renderer's allocated time
+  /// while interacting (vtkLightShaftPassSampling.cxx).
+  static double FrameBudget(const vtkLightShaftFrame& frame);
+  void ApplyErrorModel(vtkLightShaftFrame& frame,
     const std::vector<vtkLightShaftGeometry::LightFrame>& lights,
-    bool cookieOrNoise);
+    bool cookieOrNoise,
+    bool still);
+  /// A measured frame: `shafts` seconds of in-scatter of `total` (the cost model learns).
+  void ObserveFrameTime(vtkLightShaftFrame& frame, double shafts, double total);
   /// Every light's in-scatter added up, post-processed, refined (each light's surface light
   /// too); false when nothing was computed (the target holds zeros).
   vtkTextureObject* ComputeInScatter(vtkLightShaftFrame& frame,

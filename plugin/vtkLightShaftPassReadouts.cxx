@@ -102,6 +102,10 @@ void vtkLightShaftPass::Internals::Publish(vtkLightShaftPass& self, const vtkLig
   self.LastRefinementEstimates = stats.RefinementEstimates;
   self.LastRefinementConverged = stats.RefinementConverged;
   self.LastInScatterReused = stats.InScatterReused;
+  self.LastTimeBudget = stats.TimeBudget;
+  self.LastPredictedFrameTime = stats.TimeBudget > 0.0 ? stats.PredictedFrameTime : -1.0;
+  self.LastFrameTime = stats.FrameTime;
+  self.LastDownsampleFactor = frame.Parameters.DownsampleFactor;
   self.LastDepthRangeInBeamWidths = stats.ErrorFeatures.DepthRangeInBeamWidths;
   self.LastBeamWidthInPixels = stats.ErrorFeatures.BeamWidthInPixels;
   self.LastOpticalDepth = stats.ErrorFeatures.OpticalDepth;

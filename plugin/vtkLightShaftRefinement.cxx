@@ -45,13 +45,42 @@ bool NearlyEqual(const glm::dmat4& a, const glm::dmat4& b)
 }
 }
 
-bool vtkLightShaftRefinement::Signature::operator==(const Signature& other) const
+bool vtkLightShaftRefinement::Signature::SameScene(const Signature& other) const
 {
   return NearlyEqual(this->WorldToView, other.WorldToView) &&
          NearlyEqual(this->ViewToClip, other.ViewToClip) && this->Origin[0] == other.Origin[0] &&
          this->Origin[1] == other.Origin[1] && this->Size[0] == other.Size[0] &&
          this->Size[1] == other.Size[1] && this->Objects == other.Objects &&
          this->Lights == other.Lights;
+}
+
+bool vtkLightShaftRefinement::Signature::operator==(const Signature& other) const
+{
+  return this->SameScene(other) && this->Sampling == other.Sampling;
+}
+
+void vtkLightShaftRefinement::SetSampling(Signature& signature, const vtkLightShaftFrame& frame)
+{
+  const vtkLightShaftParameters& p = frame.Parameters;
+  signature.Sampling = { double(p.Method),
+    double(p.NumberOfSlices),
+    double(p.AutomaticSliceCount),
+    double(p.NumberOfSteps),
+    double(p.InterleaveSize),
+    double(p.LightVolumeResolution),
+    double(p.EpipolarLines),
+    double(p.EpipolarSamples),
+    double(p.EpipolarStep),
+    double(p.Jitter),
+    double(p.BlurRadius),
+    double(p.DownsampleFactor),
+    double(p.ShadowMapSize),
+    double(p.AccumulationPrecision) };
+}
+
+bool vtkLightShaftRefinement::IsStill(const Signature& signature) const
+{
+  return this->HasLast && signature.SameScene(this->Last);
 }
 
 vtkLightShaftRefinement::Signature vtkLightShaftRefinement::Sign(const vtkLightShaftFrame& frame,
@@ -113,7 +142,7 @@ void vtkLightShaftRefinement::Begin(vtkLightShaftFrame& frame, Signature&& signa
     this->Converged = false;
   }
   this->Last = std::move(signature);
-  this->HasLast = on;
+  this->HasLast = true; // also off: IsStill tells a frame budget the view is still
   // The R4 sequence (Roberts 2018): the n-th estimate's shifts fall where the earlier ones left
   // the largest gaps, so n estimates sample their (step offset, lookup, map offset) space about
   // as evenly as a grid would. Estimate 0 has no shift.

@@ -50,6 +50,11 @@ public:
     /// The lights as the pass reads them (vtkLightShaftModel::DescribeLight), not their MTimes:
     /// the surface light switches a light off and on again within each frame.
     std::vector<double> Lights;
+    /// The sampling the frame renders with (SetSampling): a target error or a frame budget
+    /// may choose another than the parameters set, for the same scene.
+    std::vector<double> Sampling;
+    /// Everything but the sampling is equal: the same scene seen the same way.
+    bool SameScene(const Signature& other) const;
     bool operator==(const Signature& other) const;
   };
   /**
@@ -60,6 +65,11 @@ public:
   static Signature Sign(const vtkLightShaftFrame& frame,
     const std::vector<vtkLight*>& lights,
     vtkMTimeType imagesTime);
+
+  /// Record in `signature` the sampling of the frame's parameters (after the error model).
+  static void SetSampling(Signature& signature, const vtkLightShaftFrame& frame);
+  /// Whether `signature` shows the scene of the last frame's, the same way (sampling aside).
+  bool IsStill(const Signature& signature) const;
 
   /**
    * Start the frame: a new history when `signature` differs from the last one's or refinement

@@ -61,6 +61,8 @@ def test_defaults():
     ("DownsampleFactor", 4),
     ("AccumulationPrecision", vtkLightShaftPass.ACCUMULATE_8BIT),
     ("TargetError", 0.02),
+    ("TimeBudget", 0.05),
+    ("RefinementFrames", 64),
 ])
 def test_scalar_round_trip(name, value):
     p = vtkLightShaftPass()
@@ -114,6 +116,8 @@ def test_boolean_macros():
     ("DownsampleFactor", 0, 100, 1, 4),
     ("AccumulationPrecision", -1, 7, 0, 2),
     ("TargetError", -0.5, 3.0, 0.0, 1.0),
+    ("TimeBudget", -1.0, 1e9, 0.0, 3600.0),
+    ("RefinementFrames", 0, 10 ** 6, 1, 4096),
 ])
 def test_scalar_clamping(name, low, high, expect_low, expect_high):
     p = vtkLightShaftPass()
@@ -145,6 +149,8 @@ def test_vector_clamping(name):
     ("Time", (math.nan,)),
     ("Time", (math.inf,)),
     ("TargetError", (math.nan,)),
+    ("TimeBudget", (math.nan,)),
+    ("TimeBudget", (math.inf,)),
 ])
 def test_non_finite_refused(messages, name, args):
     p = vtkLightShaftPass()

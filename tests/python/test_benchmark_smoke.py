@@ -160,3 +160,16 @@ def test_refinement_benchmark_smoke(tmp_path):
     assert [row.split("|")[1].strip() for row in rows] == ["1", "2", "4"]
     errors = [float(row.split("|")[4].strip().rstrip("%")) for row in rows]
     assert all(0.0 <= e < 100.0 for e in errors) and errors[-1] < errors[0]
+
+
+def test_budget_benchmark_smoke(tmp_path):
+    script = os.path.join(os.path.dirname(BENCHMARK), "budget.py")
+    result = subprocess.run([sys.executable, script, "--size", "96", "54", "--frames", "4",
+                             "--every", "2", "--estimates", "2", "--output-dir", str(tmp_path)],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    text = (tmp_path / "budget.md").read_text()
+    assert "Budget: 1/15 s = 67 ms" in text
+    frames = [line for line in text.splitlines() if line.startswith("| ") and " ms |" in line]
+    assert len(frames) == 4 and all(" ms | " in row for row in frames)
+    assert "| estimates | seconds since the camera stopped | error |" in text

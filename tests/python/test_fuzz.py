@@ -49,6 +49,7 @@ SCALARS = [
     ("InterleaveSize", True, False), ("RadialSamples", True, True),
     ("EpipolarLines", True, True), ("EpipolarSamples", True, True), ("EpipolarStep", True, True),
     ("LightVolumeResolution", True, True), ("RefinementFrames", True, True),
+    ("TimeBudget", False, True),
     ("Exposure", False, True), ("Anisotropy", False, False), ("NoiseAmplitude", False, False),
     ("NoiseScale", False, True), ("Time", False, False), ("Decay", False, False),
     ("Density", False, False), ("Weight", False, False), ("RadialGuardBand", False, False),
@@ -56,11 +57,11 @@ SCALARS = [
 VECTORS = [("ScatteringCoefficient", 3), ("AbsorptionCoefficient", 3),
            ("NoiseVelocity1", 2), ("NoiseVelocity2", 2)]
 BOOLEANS = ["AttenuateScene", "ShadowSurfaces", "AutomaticSliceCount", "Jitter", "RadialJitter",
-            "ProgressiveRefinement"]
+            "ProgressiveRefinement", "UseAllocatedRenderTime"]
 # Setters that refuse non-finite values (with an error naming the parameter).
 REFUSING = {"Exposure", "Anisotropy", "NoiseAmplitude", "NoiseScale", "Time", "Decay",
             "Density", "Weight", "RadialGuardBand", "ScatteringCoefficient",
-            "AbsorptionCoefficient", "NoiseVelocity1", "NoiseVelocity2"}
+            "AbsorptionCoefficient", "NoiseVelocity1", "NoiseVelocity2", "TimeBudget"}
 # The pass's documented warnings (README "Behaviour with any scene").
 DOCUMENTED_WARNINGS = ["No spot or point light in the renderer", "given to the pass are switched off",
                        "The cookie shapes spot and directional lights only",
@@ -308,6 +309,12 @@ class Fuzzer:
         self.shafts.SetDelegatePass(delegate)
         return f"SetDelegatePass({'steps' if delegate else None})"
 
+    def update_rate(self):
+        # What an interactor does while the user drags (15) and at rest (0.0001).
+        rate = self.rng.choice([0.0001, 0.0001, 0.5, 15.0, 60.0, 1000.0])
+        self.window.SetDesiredUpdateRate(rate)
+        return f"SetDesiredUpdateRate({rate})"
+
     def still(self):
         # Nothing changes: with ProgressiveRefinement on, one more estimate (or the converged
         # picture again).
@@ -324,7 +331,7 @@ class Fuzzer:
 
     ACTIONS = [(set_scalar, 30), (set_vector, 8), (set_boolean, 6), (preset, 2), (textures, 5),
                (light, 10), (several_lights, 8), (usable_light, 5), (camera, 10), (window_size, 6), (viewport, 4), (multisamples, 3),
-               (delegate, 2), (selection, 2), (still, 6)]
+               (delegate, 2), (selection, 2), (still, 6), (update_rate, 3)]
 
     # --- one frame --------------------------------------------------------------------------
     def step(self, index):
@@ -393,6 +400,7 @@ def test_fuzz(request):
                 f"--fuzz-frames {index + 1}")
     finally:
         fuzzer.window.SetMultiSamples(0)
+        fuzzer.window.SetDesiredUpdateRate(0.0001)
         fuzzer.renderer.SetViewport(0.0, 0.0, 1.0, 1.0)
     slowest = max(fuzzer.frame_times)
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024

@@ -462,6 +462,27 @@ void vtkPVLightShaftsView::SetShaftTargetError(double error)
 }
 
 //------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetTimeBudget(double seconds)
+{
+  this->Impl->Shafts->SetTimeBudget(seconds);
+}
+
+void vtkPVLightShaftsView::SetUseAllocatedRenderTime(bool use)
+{
+  this->Impl->Shafts->SetUseAllocatedRenderTime(use);
+}
+
+void vtkPVLightShaftsView::SetProgressiveRefinement(bool refine)
+{
+  this->Impl->Shafts->SetProgressiveRefinement(refine);
+}
+
+void vtkPVLightShaftsView::SetRefinementFrames(int frames)
+{
+  this->Impl->Shafts->SetRefinementFrames(frames);
+}
+
+//------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetAttenuateScene(bool attenuate)
 {
   this->Impl->Shafts->SetAttenuateScene(attenuate);

@@ -134,6 +134,17 @@ public:
 
   ///@{
   /**
+   * Interaction (forwarded to vtkLightShaftPass: SetTimeBudget, SetUseAllocatedRenderTime,
+   * SetProgressiveRefinement, SetRefinementFrames; same ranges and defaults).
+   */
+  void SetTimeBudget(double seconds);
+  void SetUseAllocatedRenderTime(bool use);
+  void SetProgressiveRefinement(bool refine);
+  void SetRefinementFrames(int frames);
+  ///@}
+
+  ///@{
+  /**
    * Sampling: forwarded to vtkLightShaftPass, unless ShaftQuality is a preset (DRAFT,
    * INTERACTIVE, FINAL), which then decides slices, jitter, blur, downsampling and shadow-map
    * size (the values set here are kept and come back with CUSTOM). Default is CUSTOM with the

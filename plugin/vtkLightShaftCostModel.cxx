@@ -1,0 +1,186 @@
+#include "vtkLightShaftCostModel.h"
+
+#include "vtkLightShaftPass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace
+{
+/// Seconds per pixel of a plain frame on the machine the priors were measured on (llvmpipe,
+/// 2 cores: 9-11 ms at 1280x720).
+constexpr double PlainSecondsPerPixel = 1.1e-8;
+
+/// A setting's prior cost in plain frames: its median time over the plain frame on the 50
+/// held-out random scenes (docs/random-scenes.md, seed 0), less the plain frame itself; for a
+/// setting not measured there, a guess from its method and samples.
+double PriorPlainFrames(const vtkLightShaftErrorModel::Setting& setting)
+{
+  static const struct
+  {
+    const char* Name;
+    double Ratio;
+  } measured[] = { { "E16 l128 s256 k8 m512", 8.7 },
+    { "E32 l256 s256 k8 m1024", 12.5 },
+    { "V128 m512", 21.0 },
+    { "V256 m1024", 29.0 },
+    { "V512 m2048", 49.0 },
+    { "V1024 m2048", 91.0 },
+    { "M128 i1 m2048", 282.0 },
+    { "M256 i1 m2048", 532.0 } };
+  for (const auto& entry : measured)
+  {
+    if (std::strcmp(entry.Name, setting.Name) == 0)
+    {
+      return entry.Ratio - 1.0;
+    }
+  }
+  switch (setting.Method)
+  {
+    case vtkLightShaftPass::RAY_MARCH:
+      return 2.0 * setting.Samples;
+    case vtkLightShaftPass::EPIPOLAR:
+      return 0.5 * setting.Samples;
+    case vtkLightShaftPass::LIGHT_VOLUME:
+      return 0.1 * setting.Samples;
+    default:
+      return 0.5 * setting.Samples;
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+vtkLightShaftCostModel::vtkLightShaftCostModel()
+  : LogCost(vtkLightShaftErrorModel::GetNumberOfSettings(),
+      { std::numeric_limits<double>::quiet_NaN(),
+        std::numeric_limits<double>::quiet_NaN(),
+        std::numeric_limits<double>::quiet_NaN() })
+  , LogRestPerPixel(std::log(1.5 * PlainSecondsPerPixel))
+{
+}
+
+int vtkLightShaftCostModel::FactorIndex(int factor)
+{
+  return factor >= 4 ? 2 : (factor >= 2 ? 1 : 0);
+}
+
+//------------------------------------------------------------------------------
+// This machine's log seconds per pixel of one plain frame: what the measured settings cost
+// over their priors (the priors' own machine before any measurement).
+double vtkLightShaftCostModel::LogScale() const
+{
+  double sum = 0.0;
+  int count = 0;
+  for (size_t i = 0; i < this->LogCost.size(); ++i)
+  {
+    const double prior = std::log(PriorPlainFrames(vtkLightShaftErrorModel::GetSetting(int(i))));
+    for (double cost : this->LogCost[i])
+    {
+      if (!std::isnan(cost))
+      {
+        sum += cost - prior;
+        ++count;
+      }
+    }
+  }
+  return count > 0 ? sum / count : std::log(PlainSecondsPerPixel);
+}
+
+//------------------------------------------------------------------------------
+double vtkLightShaftCostModel::PredictShafts(int setting,
+  int factor,
+  double pixels,
+  int lights) const
+{
+  double cost = this->LogCost[setting][FactorIndex(factor)];
+  if (std::isnan(cost))
+  {
+    cost =
+      this->LogScale() + std::log(PriorPlainFrames(vtkLightShaftErrorModel::GetSetting(setting)));
+  }
+  return std::exp(cost) * pixels / (factor * factor) * std::max(lights, 1);
+}
+
+double vtkLightShaftCostModel::PredictRest(double pixels) const
+{
+  return std::exp(this->LogRestPerPixel) * pixels;
+}
+
+//------------------------------------------------------------------------------
+vtkLightShaftCostModel::Choice vtkLightShaftCostModel::Choose(double budget,
+  double target,
+  const std::vector<vtkLightShaftErrorModel::Features>& features,
+  bool closedForm,
+  double pixels,
+  int lights) const
+{
+  const double rest = this->PredictRest(pixels);
+  Choice best;        // the most accurate that fits (or the cheapest meeting the target)
+  Choice cheapest;    // the cheapest of all, when nothing fits
+  bool meets = false; // best meets the target
+  for (int factor : Factors)
+  {
+    for (int i = 0; i < vtkLightShaftErrorModel::GetNumberOfSettings(); ++i)
+    {
+      if (!closedForm &&
+          vtkLightShaftErrorModel::GetSetting(i).Method == vtkLightShaftPass::LIGHT_VOLUME)
+      {
+        continue;
+      }
+      Choice candidate{ i,
+        factor,
+        rest + this->PredictShafts(i, factor, pixels, lights),
+        vtkLightShaftErrorModel::Predict(i, features) };
+      if (cheapest.Setting < 0 || candidate.Seconds < cheapest.Seconds)
+      {
+        cheapest = candidate;
+      }
+      if (candidate.Seconds > budget)
+      {
+        continue;
+      }
+      // The error model knows full resolution only: a reduced one meets no target.
+      const bool candidateMeets = target > 0.0 && factor == 1 && candidate.Error <= target;
+      bool better = best.Setting < 0;
+      if (!better && target > 0.0 && (candidateMeets || meets))
+      {
+        better = candidateMeets && (!meets || candidate.Seconds < best.Seconds);
+      }
+      else if (!better)
+      {
+        // Full resolution first (the outer loop), then the lowest predicted error.
+        better =
+          candidate.DownsampleFactor == best.DownsampleFactor && candidate.Error < best.Error;
+      }
+      if (better)
+      {
+        best = candidate;
+        meets = candidateMeets;
+      }
+    }
+  }
+  return best.Setting >= 0 ? best : cheapest;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftCostModel::Observe(int setting,
+  int factor,
+  double pixels,
+  int lights,
+  double shafts,
+  double total)
+{
+  if (setting < 0 || setting >= static_cast<int>(this->LogCost.size()) || pixels <= 0.0 ||
+      !(shafts > 0.0) || !(total > 0.0))
+  {
+    return;
+  }
+  auto follow = [](double& value, double measured)
+  { value = std::isnan(value) ? measured : 0.5 * (value + measured); };
+  const double reducedPixels = pixels / (factor * factor) * std::max(lights, 1);
+  follow(this->LogCost[setting][FactorIndex(factor)], std::log(shafts / reducedPixels));
+  follow(this->LogRestPerPixel, std::log(std::max(total - shafts, 1e-6) / pixels));
+  ++this->Measurements;
+}

@@ -1,0 +1,219 @@
+// vtkLightShaftPass's third source file: how a frame's sampling is chosen. The error model
+// predicts each setting's error on the frame's lights; a target error takes the cheapest
+// setting predicted to meet it, a frame budget the most accurate predicted to fit (the cost
+// model, learnt from the frames it measures).
+#include "vtkLightShaftPass.h"
+#include "vtkLightShaftPassInternals.h"
+
+#include "vtkLightShaftCostModel.h"
+#include "vtkLightShaftErrorModel.h"
+#include "vtkLightShaftFrame.h"
+
+#include "vtkLightShaftOpenGL.h"
+#include "vtkRenderer.h"
+
+#include <algorithm>
+
+namespace
+{
+namespace model = vtkLightShaftErrorModel;
+
+/// The renderer's allocated time at or above which a view is at rest (VTK allocates 1 /
+/// StillUpdateRate, 10000 s by default): no budget.
+constexpr double RestingAllocation = 10.0;
+
+/// The frame's parameters set to the ladder's `chosen` setting at `factor` (AUTOMATIC keeps its
+/// exact integral where nothing can shadow).
+void ApplySetting(vtkLightShaftFrame& frame,
+  const model::Setting& chosen,
+  int factor,
+  const std::vector<vtkLightShaftGeometry::LightFrame>& lights)
+{
+  vtkLightShaftParameters& p = frame.Parameters;
+  const bool exact =
+    p.Method == vtkLightShaftPass::AUTOMATIC && p.NoiseAmplitude <= 0.0 &&
+    std::none_of(lights.begin(),
+      lights.end(),
+      [](const vtkLightShaftGeometry::LightFrame& l) { return l.ShadowsPossible; });
+  p.Method = exact ? p.Method : chosen.Method;
+  p.AutomaticSliceCount = false;
+  p.NumberOfSlices = chosen.Method == vtkLightShaftPass::SLICES ? chosen.Samples : p.NumberOfSlices;
+  const bool marched =
+    chosen.Method == vtkLightShaftPass::RAY_MARCH || chosen.Method == vtkLightShaftPass::EPIPOLAR;
+  p.NumberOfSteps = marched ? chosen.Samples : p.NumberOfSteps;
+  if (chosen.Method == vtkLightShaftPass::EPIPOLAR)
+  {
+    p.EpipolarLines = chosen.EpipolarLines;
+    p.EpipolarSamples = chosen.EpipolarSamples;
+    p.EpipolarStep = chosen.EpipolarStep;
+  }
+  p.LightVolumeResolution =
+    chosen.Method == vtkLightShaftPass::LIGHT_VOLUME ? chosen.Samples : p.LightVolumeResolution;
+  p.Jitter = chosen.Jitter;
+  p.InterleaveSize = chosen.InterleaveSize;
+  p.BlurRadius = chosen.BlurRadius;
+  p.DownsampleFactor = factor;
+  p.ShadowMapSize = chosen.ShadowMapSize;
+  p.AccumulationPrecision = vtkLightShaftPass::ACCUMULATE_FLOAT32;
+  frame.Reduced[0] = (frame.Size[0] + factor - 1) / factor;
+  frame.Reduced[1] = (frame.Size[1] + factor - 1) / factor;
+}
+
+/// The ladder's setting the parameters set are (-1: none of them).
+int SettingOfParameters(const vtkLightShaftParameters& p)
+{
+  const bool slices = p.Method == vtkLightShaftPass::SLICES && !p.AutomaticSliceCount;
+  const bool volume = p.Method == vtkLightShaftPass::LIGHT_VOLUME;
+  if (!slices && !volume && p.Method != vtkLightShaftPass::RAY_MARCH &&
+      p.Method != vtkLightShaftPass::EPIPOLAR)
+  {
+    return -1;
+  }
+  if (p.AccumulationPrecision != vtkLightShaftPass::ACCUMULATE_FLOAT32)
+  {
+    return -1;
+  }
+  const model::Setting current{ "",
+    p.Method,
+    slices ? p.NumberOfSlices : (volume ? p.LightVolumeResolution : p.NumberOfSteps),
+    p.Jitter,
+    p.BlurRadius,
+    p.DownsampleFactor,
+    p.ShadowMapSize,
+    p.InterleaveSize,
+    p.EpipolarLines,
+    p.EpipolarSamples,
+    p.EpipolarStep };
+  return model::FindSetting(current);
+}
+}
+
+//------------------------------------------------------------------------------
+// The cookie and noise (decided once: a target error or budget leaves out the settings that
+// have no closed form with them), the frame's sampling, and progressive refinement's shifts
+// of it. Returns the cookie texture (nullptr: none).
+vtkTextureObject* vtkLightShaftPass::Internals::ChooseSampling(vtkLightShaftFrame& frame,
+  const std::vector<vtkLight*>& lights,
+  std::vector<vtkLightShaftGeometry::LightFrame>& lightFrames)
+{
+  vtkTextureObject* cookie = this->Textures.ReadyCookie(frame.Window, frame.Owner);
+  if (frame.Parameters.NoiseAmplitude > 0.0 && frame.Medium.Scatters())
+  {
+    frame.Noise = this->Textures.ReadyNoise(frame.Window, frame.Owner);
+  }
+  vtkLightShaftRefinement::Signature signature =
+    vtkLightShaftRefinement::Sign(frame, lights, this->Textures.GetImagesTime());
+  this->ApplyErrorModel(frame,
+    lightFrames,
+    cookie != nullptr || frame.Noise != nullptr,
+    this->Refinement.IsStill(signature));
+  vtkLightShaftRefinement::SetSampling(signature, frame);
+  this->Refinement.Begin(frame, std::move(signature));
+  if (frame.ShadowMapOffset[0] != 0.0 || frame.ShadowMapOffset[1] != 0.0)
+  {
+    const double texel = 2.0 / frame.Parameters.ShadowMapSize; // in the map's NDC
+    for (vtkLightShaftGeometry::LightFrame& light : lightFrames)
+    {
+      vtkLightShaftGeometry::OffsetShadowCameras(
+        light, texel * frame.ShadowMapOffset[0], texel * frame.ShadowMapOffset[1]);
+    }
+  }
+  return cookie;
+}
+
+//------------------------------------------------------------------------------
+double vtkLightShaftPass::Internals::FrameBudget(const vtkLightShaftFrame& frame)
+{
+  const vtkLightShaftParameters& p = frame.Parameters;
+  double budget = p.TimeBudget;
+  const double allocated = frame.Renderer->GetAllocatedRenderTime();
+  if (p.UseAllocatedRenderTime && allocated > 0.0 && allocated < RestingAllocation)
+  {
+    budget = budget > 0.0 ? std::min(budget, allocated) : allocated;
+  }
+  return budget;
+}
+
+//------------------------------------------------------------------------------
+// The frame's sampling: with a frame budget, the most accurate (ladder setting, resolution)
+// the cost model predicts will fit, the choice kept while the view is still; else with a
+// target error, the cheapest setting predicted to meet it on every lit light; else the
+// parameters set, with the model's prediction when they are one of its settings.
+void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
+  const std::vector<vtkLightShaftGeometry::LightFrame>& lights,
+  bool cookieOrNoise,
+  bool still)
+{
+  std::vector<model::Features> features;
+  int lit = 0;
+  for (const vtkLightShaftGeometry::LightFrame& light : lights)
+  {
+    if (light.Model.Radiates())
+    {
+      features.push_back(model::Describe(light, frame.Camera, frame.Medium, frame.Size[0]));
+      lit += features.back().Lit ? 1 : 0;
+      if (features.back().Lit && !frame.Statistics.ErrorFeatures.Lit)
+      {
+        frame.Statistics.ErrorFeatures = features.back();
+      }
+    }
+  }
+  vtkLightShaftParameters& p = frame.Parameters;
+  frame.Statistics.TimeBudget = FrameBudget(frame);
+  if (!frame.Medium.Scatters() || lit == 0)
+  {
+    this->HasBudgetChoice = false;
+    return; // no shafts to predict
+  }
+  int setting = -1;
+  double predicted = -1.0;
+  if (frame.Statistics.TimeBudget > 0.0)
+  {
+    const double pixels = double(frame.Size[0]) * frame.Size[1];
+    if (!still || !this->HasBudgetChoice)
+    {
+      this->BudgetChoice = this->Costs.Choose(
+        frame.Statistics.TimeBudget, p.TargetError, features, !cookieOrNoise, pixels, lit);
+      this->HasBudgetChoice = true;
+    }
+    const vtkLightShaftCostModel::Choice& choice = this->BudgetChoice;
+    ApplySetting(frame, model::GetSetting(choice.Setting), choice.DownsampleFactor, lights);
+    setting = choice.Setting;
+    // The error model knows full resolution only.
+    predicted = choice.DownsampleFactor == 1 ? choice.Error : -1.0;
+    frame.Statistics.PredictedFrameTime = choice.Seconds;
+    frame.Statistics.BudgetLights = lit;
+  }
+  else if (p.TargetError > 0.0)
+  {
+    this->HasBudgetChoice = false;
+    setting = model::Choose(p.TargetError, features, !cookieOrNoise, predicted);
+    const model::Setting& chosen = model::GetSetting(setting);
+    ApplySetting(frame, chosen, chosen.DownsampleFactor, lights);
+  }
+  else
+  {
+    this->HasBudgetChoice = false;
+    setting = SettingOfParameters(p);
+    predicted = setting >= 0 ? model::Predict(setting, features) : -1.0;
+  }
+  frame.Statistics.ErrorModelSetting = setting;
+  frame.Statistics.PredictedError = predicted;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftPass::Internals::ObserveFrameTime(vtkLightShaftFrame& frame,
+  double shafts,
+  double total)
+{
+  frame.Statistics.FrameTime = total;
+  if (frame.Statistics.TimeBudget > 0.0 && frame.Statistics.ErrorModelSetting >= 0)
+  {
+    this->Costs.Observe(frame.Statistics.ErrorModelSetting,
+      frame.Parameters.DownsampleFactor,
+      double(frame.Size[0]) * frame.Size[1],
+      frame.Statistics.BudgetLights,
+      shafts,
+      total);
+  }
+}

@@ -1,0 +1,162 @@
+"""The frame budget (SetTimeBudget, and the renderer's AllocatedRenderTime while an interactor
+drags): the most accurate sampling the cost model predicts will fit, learnt from the frames.
+
+No test asserts a duration (a busy machine would fail it): they check the choice against the
+pass's own predictions, which budget applies when, and that a still view keeps its choice. The
+measured frame times are printed (`pytest -s`) and measured in tests/benchmarks/budget.py.
+"""
+
+import statistics
+
+import numpy as np
+import pytest
+
+import vtkmodules.vtkInteractionStyle  # noqa: F401  (the interactor's default style)
+from lightshafts import scenes, vtkLightShaftPass
+from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkInteractionStyle import vtkInteractorStyleTrackballCamera
+from vtkmodules.vtkRenderingUI import vtkGenericRenderWindowInteractor
+
+import render_helpers as rh
+
+WIDTH, HEIGHT = 200, 150
+
+
+def budget_scene(**params):
+    renderer, window = rh.make_window(WIDTH, HEIGHT)
+    info = scenes.sphere_and_floor(renderer, sphere_resolution=32)
+    shafts = vtkLightShaftPass()
+    shafts.SetScatteringCoefficient(0.05)
+    for name, value in params.items():
+        getattr(shafts, "Set" + name)(value)
+    renderer.SetPass(shafts)
+    return renderer, window, info, shafts
+
+
+def setting_name(shafts):
+    return vtkLightShaftPass.GetErrorModelSettingName(shafts.GetLastErrorModelSetting())
+
+
+def test_defaults_and_no_budget_without_an_interaction():
+    shafts = vtkLightShaftPass()
+    assert shafts.GetTimeBudget() == 0.0 and shafts.GetUseAllocatedRenderTime()
+    renderer, window, info, shafts = budget_scene()
+    window.Render()  # VTK allocates 10000 s to a renderer at rest: no budget
+    assert renderer.GetAllocatedRenderTime() >= 10.0
+    assert shafts.GetLastTimeBudget() == 0.0
+    assert shafts.GetLastPredictedFrameTime() == -1.0 and shafts.GetLastFrameTime() == -1.0
+    assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES  # the parameters set
+    assert shafts.GetLastDownsampleFactor() == 1
+
+
+def test_which_budget_applies():
+    renderer, window, info, shafts = budget_scene()
+    try:
+        window.SetDesiredUpdateRate(15.0)  # what an interactor sets while the user drags
+        window.Render()
+        assert shafts.GetLastTimeBudget() == pytest.approx(1.0 / 15.0)
+        shafts.SetTimeBudget(0.02)
+        window.Render()
+        assert shafts.GetLastTimeBudget() == pytest.approx(0.02)  # the smaller
+        shafts.SetTimeBudget(0.5)
+        window.Render()
+        assert shafts.GetLastTimeBudget() == pytest.approx(1.0 / 15.0)
+        shafts.UseAllocatedRenderTimeOff()
+        window.Render()
+        assert shafts.GetLastTimeBudget() == pytest.approx(0.5)
+        shafts.SetTimeBudget(0.0)
+        window.Render()
+        assert shafts.GetLastTimeBudget() == 0.0
+        assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES
+    finally:
+        window.SetDesiredUpdateRate(0.0001)
+
+
+def test_a_budget_nothing_fits_gets_the_cheapest_at_quarter_resolution():
+    renderer, window, info, shafts = budget_scene(TimeBudget=1e-9)
+    window.Render()
+    assert shafts.GetLastTimeBudget() == pytest.approx(1e-9)
+    assert shafts.GetLastDownsampleFactor() == 4
+    assert shafts.GetLastPredictedFrameTime() > 1e-9
+    assert shafts.GetLastFrameTime() > 0.0  # measured
+    assert shafts.GetLastPredictedError() == -1.0  # the model knows full resolution only
+    assert np.all(np.isfinite(rh.in_scatter(shafts)))
+
+
+def test_an_ample_budget_gets_the_most_accurate_setting_at_full_resolution():
+    renderer, window, info, shafts = budget_scene()
+    predicted = {}
+    for preset in ("Draft", "Interactive", "Final"):
+        getattr(shafts, "SetQualityTo" + preset)()
+        window.Render()
+        predicted[preset] = shafts.GetLastPredictedError()
+    shafts.SetTimeBudget(3600.0)
+    window.Render()
+    assert shafts.GetLastDownsampleFactor() == 1
+    assert shafts.GetLastPredictedFrameTime() <= 3600.0
+    assert 0.0 < shafts.GetLastPredictedError() <= min(predicted.values())
+
+
+def test_a_target_error_under_a_budget_takes_the_cheapest_setting_that_meets_it():
+    renderer, window, info, shafts = budget_scene(TimeBudget=3600.0)
+    window.Render()
+    most_accurate = shafts.GetLastPredictedError()
+    shafts.SetTargetError(0.05)
+    window.Render()
+    assert most_accurate <= shafts.GetLastPredictedError() <= 0.05
+    assert shafts.GetLastDownsampleFactor() == 1
+
+
+def test_a_still_view_keeps_its_choice_and_refines():
+    renderer, window, info, shafts = budget_scene(TimeBudget=0.05, RefinementFrames=4)
+    shafts.SetCookie(rh.uniform_cookie())  # no LIGHT_VOLUME (nothing to refine): a sampled one
+    shafts.ProgressiveRefinementOn()
+    renderer.GetActiveCamera().Azimuth(1.0)
+    window.Render()
+    chosen = (setting_name(shafts), shafts.GetLastDownsampleFactor())
+    for estimates in range(2, 5):
+        window.Render()  # nothing changed: the same choice, one more estimate
+        assert (setting_name(shafts), shafts.GetLastDownsampleFactor()) == chosen
+        assert shafts.GetLastRefinementEstimates() == estimates
+    assert shafts.GetLastRefinementConverged()
+
+
+def test_the_predictions_follow_the_budget_along_an_interactive_camera_path():
+    """An interactor rotates the camera (VTK's trackball style: DesiredUpdateRate 15 while the
+    button is down); each frame's predicted time fits the budget once the model has measured
+    a frame, and the view at rest has no budget."""
+    renderer, window, info, shafts = budget_scene()
+    window.SetSize(320, 240)
+    interactor = vtkGenericRenderWindowInteractor()
+    interactor.SetRenderWindow(window)
+    interactor.SetInteractorStyle(vtkInteractorStyleTrackballCamera())
+    interactor.Initialize()
+    interactor.Enable()
+    budgets, predicted, measured, names = [], [], [], []
+
+    def record(*_):
+        budgets.append(shafts.GetLastTimeBudget())
+        predicted.append(shafts.GetLastPredictedFrameTime())
+        measured.append(shafts.GetLastFrameTime())
+        names.append((setting_name(shafts), shafts.GetLastDownsampleFactor()))
+
+    window.AddObserver(vtkCommand.EndEvent, record)
+    try:
+        interactor.SetEventInformation(160, 120)
+        interactor.InvokeEvent(vtkCommand.LeftButtonPressEvent)
+        for step in range(1, 25):
+            interactor.SetEventInformation(160 + 4 * step, 120 + step)
+            interactor.InvokeEvent(vtkCommand.MouseMoveEvent)
+        interactor.InvokeEvent(vtkCommand.LeftButtonReleaseEvent)
+    finally:
+        window.SetDesiredUpdateRate(0.0001)
+    moving = [i for i, b in enumerate(budgets) if b > 0.0]
+    assert len(moving) >= 20
+    assert all(b == pytest.approx(1.0 / 15.0) for b in (budgets[i] for i in moving))
+    assert budgets[-1] == 0.0  # released: the still render has no budget
+    # After the first measured frame, every choice is predicted to fit (or is the cheapest).
+    for i in moving[1:]:
+        assert predicted[i] <= budgets[i] or names[i][1] == 4, (i, names[i], predicted[i])
+    times = [measured[i] for i in moving[2:]]
+    print(f"budget {1000 / 15:.0f} ms: measured median {1000 * statistics.median(times):.0f} ms,"
+          f" max {1000 * max(times):.0f} ms; choices {sorted(set(names[i] for i in moving))}")
