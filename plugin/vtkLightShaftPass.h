@@ -692,10 +692,10 @@ public:
    * model's ladder (EPIPOLAR, LIGHT_VOLUME and RAY_MARCH settings, as TargetError's), at full
    * resolution if any fits, else at half, else at quarter resolution (DownsampleFactor), the
    * lowest predicted error first; with a TargetError as well, the cheapest of those that fit
-   * and meet it at full resolution; when nothing fits, the cheapest. The frame's time is predicted by a cost
-   * model learnt from the frames the pass renders under a budget (each finished with glFinish
-   * to be measured), starting from the costs measured on the random scenes. While the view is
-   * still the choice is kept (progressive refinement can then converge). The choice overrides
+   * and meet it at full resolution; when nothing fits, the cheapest. The frame's time is predicted
+   * by a cost model learnt from the frames the pass renders under a budget (each finished with
+   * glFinish to be measured), starting from the costs measured on the random scenes. While the view
+   * is still the choice is kept (progressive refinement can then converge). The choice overrides
    * the parameters set for that frame as TargetError's does. Non-finite values are refused.
    * Default is 0 (off).
    */
