@@ -24,14 +24,16 @@ struct vtkLightShaftFrame;
 /**
  * @class   vtkLightShaftRefinement
  * @brief   While nothing that decides the picture changes, each frame's in-scatter is one more
- *          estimate, its samples rotated (SamplingRotation), averaged into a float history;
- *          after RefinementFrames estimates (or one, when nothing of the frame's sampling
- *          rotates) the history is converged and the shafts need not be computed again.
+ *          estimate, its samples shifted (step and slab offsets, lookups, the shadow map's
+ *          texel grid), averaged into a float history; after RefinementFrames estimates (or
+ *          one, when nothing of the frame's sampling shifts) the history is converged and the
+ *          shafts need not be computed again.
  *
  * What decides the picture (the signature): the camera's matrices, the viewport, the pass's
- * parameters (its MTime, Time included), each light's values, and each visible prop, cookie
- * and noise image with its MTime (a prop's redraw MTime: its mapper and input data). Any change
- * starts a new history.
+ * parameters (its MTime, Time included), each light's values, each visible prop, cookie and
+ * noise image with its MTime (a prop's redraw MTime: its mapper and input data), and the
+ * sampling the frame renders with (a budget or target may choose it). Any change starts a new
+ * history.
  */
 class vtkLightShaftRefinement
 {
@@ -73,8 +75,9 @@ public:
 
   /**
    * Start the frame: a new history when `signature` differs from the last one's or refinement
-   * is off. Sets the frame's SamplingRotation and LookupFraction for its estimate: 0 and 0.5
-   * for a history's first (the picture without refinement), then the R2 sequence.
+   * is off. Sets the frame's SamplingRotation, LookupFraction and ShadowMapOffset for its
+   * estimate: 0, 0.5 and 0 for a history's first (the picture without refinement), then the
+   * R4 sequence.
    */
   void Begin(vtkLightShaftFrame& frame, Signature&& signature);
   /// Whether the history already holds the converged picture of this frame's signature.

@@ -22,7 +22,6 @@ import os
 import platform
 import statistics
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
@@ -30,19 +29,13 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 import lightshaft_reference as ref  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import scenes, vtkLightShaftPass  # noqa: E402
+from refinement import timed_render  # noqa: E402  (tests/benchmarks/refinement.py)
 
 STILL = {
     "RAY_MARCH 16 steps, 2048² map": dict(Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=16,
                                           InterleaveSize=1, ShadowMapSize=2048, BlurRadius=0),
     "Interactive": None, "Final": None, "Draft": None,
 }
-
-
-def timed_render(window):
-    start = time.perf_counter()
-    window.Render()
-    window.WaitForCompletion()
-    return time.perf_counter() - start
 
 
 def error_now(renderer, shafts):
