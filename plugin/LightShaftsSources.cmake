@@ -21,6 +21,7 @@ set(lightshafts_private_classes
   vtkLightShaftRayMarchMethod
   vtkLightShaftRefinement
   vtkLightShaftResources
+  vtkLightShaftSceneCheck
   vtkLightShaftSceneRenderer
   vtkLightShaftSeparableFilter
   vtkLightShaftShaders

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <sstream>
 
 namespace vtkLightShaftGeometry
 {
@@ -87,6 +88,43 @@ std::array<float, 3> ToFloat3(const glm::dvec3& v)
 }
 
 //------------------------------------------------------------------------------
+std::string CameraFrame::UnusableValue(vtkCamera* camera) const
+{
+  std::ostringstream text;
+  const double* position = camera->GetPosition();
+  const double* focal = camera->GetFocalPoint();
+  const double* range = camera->GetClippingRange();
+  const double scale = camera->GetParallelScale();
+  if (std::equal(position, position + 3, focal))
+  {
+    text << "its position equals its focal point (" << focal[0] << ", " << focal[1] << ", "
+         << focal[2] << ")";
+  }
+  else if (camera->GetParallelProjection() && !(std::isfinite(scale) && scale > 0.0))
+  {
+    text << "its parallel scale is " << scale;
+  }
+  else if (!(std::isfinite(range[0]) && std::isfinite(range[1]) && range[0] < range[1]))
+  {
+    text << "its clipping range is (" << range[0] << ", " << range[1] << ")";
+  }
+  else
+  {
+    const double* matrices[3] = { glm::value_ptr(this->WorldToView),
+      glm::value_ptr(this->ViewToClip),
+      glm::value_ptr(this->ClipToView) };
+    for (const double* m : matrices)
+    {
+      if (!std::all_of(m, m + 16, [](double v) { return std::isfinite(v); }))
+      {
+        text << "its view and projection matrices are not finite";
+        break;
+      }
+    }
+  }
+  return text.str();
+}
+
 CameraFrame CameraFrame::FromMatrices(const glm::dmat4& worldToView, const glm::dmat4& viewToClip)
 {
   CameraFrame camera;
@@ -161,7 +199,8 @@ LightView MakeView(const glm::dvec3& position,
   return view;
 }
 
-// Visible props with valid bounds that `reaches` accepts.
+// Visible props with usable bounds (finite: NaN points leave a prop out) that `reaches`
+// accepts.
 std::vector<vtkProp*> SelectCasters(vtkPropCollection* props,
   const std::function<bool(const double*)>& reaches)
 {
@@ -171,7 +210,7 @@ std::vector<vtkProp*> SelectCasters(vtkPropCollection* props,
   while (vtkProp* prop = props->GetNextProp(it))
   {
     const double* bounds = prop->GetVisibility() ? prop->GetBounds() : nullptr;
-    if (bounds && vtkMath::AreBoundsInitialized(bounds) && reaches(bounds))
+    if (bounds && vtkLightShaftModel::UsableBounds(bounds) && reaches(bounds))
     {
       casters.push_back(prop);
     }

@@ -16,6 +16,7 @@
 #include <glm/glm.hpp> // For glm vectors and matrices
 
 #include <array>  // For the float conversions
+#include <string> // For the reason a camera is unusable
 #include <vector> // For polygons, faces, casters, vertices
 
 class vtkCamera;
@@ -45,6 +46,15 @@ struct CameraFrame
   double FarDepth = 1.0;   ///< view depth of the far clipping plane
 
   static CameraFrame FromMatrices(const glm::dmat4& worldToView, const glm::dmat4& viewToClip);
+
+  /**
+   * What makes the camera unusable for the shafts, as "its clipping range is (nan, 10)" (empty
+   * when it is usable): a position equal to its focal point, a parallel scale that is not
+   * finite and positive under parallel projection, a clipping range that is not finite and
+   * increasing, or matrices (this frame's) that are not finite or not invertible. (VTK clamps
+   * view angles to [1e-8, 179] degrees: those are usable.)
+   */
+  std::string UnusableValue(vtkCamera* camera) const;
 
   /// Width of a pixel of a `width`-pixel target at view depth z, as x * z + y (view units).
   glm::dvec2 PixelFootprint(int width) const;

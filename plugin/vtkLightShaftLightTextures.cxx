@@ -32,7 +32,7 @@ void vtkLightShaftLightTextures::SetCookie(vtkTexture* cookie)
 {
   this->Cookie = cookie;
   this->CookieUploadTime = 0;
-  this->WarnedCookie = false;
+  this->CookieWarning.clear();
 }
 
 vtkTexture* vtkLightShaftLightTextures::GetCookie() const
@@ -44,7 +44,7 @@ void vtkLightShaftLightTextures::SetNoiseImage(vtkTexture* noise)
 {
   this->NoiseImage = noise;
   this->NoiseUploadTime = 0;
-  this->WarnedNoise = false;
+  this->NoiseWarning.clear();
 }
 
 vtkTexture* vtkLightShaftLightTextures::GetNoiseImage() const
@@ -73,7 +73,8 @@ vtkTextureObject* vtkLightShaftLightTextures::ReadyCookie(vtkOpenGLRenderWindow*
   std::vector<float> rgb;
   int width = 0;
   int height = 0;
-  if (!vtkLightShaftImageToRGB(cookie, rgb, width, height))
+  std::string unusable;
+  if (!vtkLightShaftImageToRGB(cookie, rgb, width, height, &unusable))
   {
     // No cookie this frame: drop the texture of an earlier image so that nothing uses it.
     if (this->CookieTexture)
@@ -82,13 +83,18 @@ vtkTextureObject* vtkLightShaftLightTextures::ReadyCookie(vtkOpenGLRenderWindow*
       this->CookieTexture = nullptr;
     }
     this->CookieUploadTime = 0;
-    if (!this->WarnedCookie)
+    const std::string warning =
+      unusable.empty()
+        ? std::string("The cookie texture has no image: no cookie is applied.")
+        : "The cookie texture's image cannot be used (" + unusable + "): no cookie is applied.";
+    if (warning != this->CookieWarning)
     {
-      vtkWarningWithObjectMacro(owner, "The cookie texture has no image: no cookie is applied.");
-      this->WarnedCookie = true;
+      vtkWarningWithObjectMacro(owner, "" << warning);
+      this->CookieWarning = warning;
     }
     return nullptr;
   }
+  this->CookieWarning.clear();
   vtkLightShaftResources::UploadMipmapped(
     this->CookieTexture, window, rgb, width, height, 3, false);
   this->CookieUploadTime = time;
@@ -109,8 +115,10 @@ vtkTextureObject* vtkLightShaftLightTextures::ReadyNoise(vtkOpenGLRenderWindow* 
     std::vector<float> rgb;
     int width = 0;
     int height = 0;
-    if (vtkLightShaftImageToRGB(this->NoiseImage, rgb, width, height))
+    std::string unusable;
+    if (vtkLightShaftImageToRGB(this->NoiseImage, rgb, width, height, &unusable))
     {
+      this->NoiseWarning.clear();
       std::vector<float> texels(static_cast<size_t>(width) * height);
       for (size_t i = 0; i < texels.size(); ++i)
       {
@@ -123,11 +131,14 @@ vtkTextureObject* vtkLightShaftLightTextures::ReadyNoise(vtkOpenGLRenderWindow* 
       this->NoiseIsGenerated = false;
       return this->NoiseTexture;
     }
-    if (!this->WarnedNoise)
+    const std::string warning =
+      unusable.empty()
+        ? std::string("The noise texture has no image: using the generated noise.")
+        : "The noise texture's image cannot be used (" + unusable + "): using the generated noise.";
+    if (warning != this->NoiseWarning)
     {
-      vtkWarningWithObjectMacro(
-        owner, "The noise texture has no image: using the generated noise.");
-      this->WarnedNoise = true;
+      vtkWarningWithObjectMacro(owner, "" << warning);
+      this->NoiseWarning = warning;
     }
   }
   if (!this->NoiseTexture || !this->NoiseIsGenerated)

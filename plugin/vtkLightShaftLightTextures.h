@@ -11,6 +11,7 @@
 #include "vtkType.h"         // For vtkMTimeType
 
 #include <algorithm> // For std::max
+#include <string>    // For the last warnings
 
 class vtkObject;
 class vtkOpenGLRenderWindow;
@@ -68,8 +69,10 @@ private:
   vtkMTimeType CookieUploadTime = 0;
   vtkMTimeType NoiseUploadTime = 0;
   bool NoiseIsGenerated = false;
-  bool WarnedCookie = false;
-  bool WarnedNoise = false;
+  /// The last warning about each image (empty: none since it was set or last usable): said
+  /// once until it changes.
+  std::string CookieWarning;
+  std::string NoiseWarning;
 };
 
 #endif

@@ -83,11 +83,12 @@ std::vector<vtkLight*> vtkLightShaftLights::Choose(vtkObject* owner, vtkRenderer
     given.push_back(light);
   }
   std::vector<vtkLight*> lights = vtkLightShaftModel::FindLights(given, renderer);
+  const bool leftOut = this->LeaveOutUnusable(owner, lights);
   if (!lights.empty())
   {
     this->WarnedNoLight = false;
   }
-  else if (!this->WarnedNoLight)
+  else if (!this->WarnedNoLight && !leftOut)
   {
     if (!given.empty())
     {
@@ -104,6 +105,39 @@ std::vector<vtkLight*> vtkLightShaftLights::Choose(vtkObject* owner, vtkRenderer
     this->WarnedNoLight = true;
   }
   return lights;
+}
+
+//------------------------------------------------------------------------------
+// Junk that VTK's vtkLight takes (a NaN exponent, colour or attenuation, a transform with NaN,
+// no direction) would fill the beam with NaN: such a light is left out of the frame, with one
+// warning naming it and its value, not repeated until the value changes.
+bool vtkLightShaftLights::LeaveOutUnusable(vtkObject* owner, std::vector<vtkLight*>& lights)
+{
+  bool leftOut = false;
+  std::vector<std::pair<vtkWeakPointer<vtkLight>, std::string>> unusable;
+  for (auto it = lights.begin(); it != lights.end();)
+  {
+    const std::string value = vtkLightShaftModel::UnusableLightValue(*it);
+    if (value.empty())
+    {
+      ++it;
+      continue;
+    }
+    const bool warned = std::any_of(this->Unusable.begin(),
+      this->Unusable.end(),
+      [&](const std::pair<vtkWeakPointer<vtkLight>, std::string>& entry)
+      { return entry.first == *it && entry.second == value; });
+    if (!warned)
+    {
+      vtkWarningWithObjectMacro(
+        owner, "Light " << *it << " is left out of the shafts: " << value << ".");
+    }
+    unusable.emplace_back(*it, value);
+    it = lights.erase(it);
+    leftOut = true;
+  }
+  this->Unusable = std::move(unusable);
+  return leftOut;
 }
 
 //------------------------------------------------------------------------------

@@ -13,9 +13,10 @@
 #include "vtkSmartPointer.h"        // For the given lights
 #include "vtkWeakPointer.h"         // For the used lights
 
-#include <memory> // For the per-light states
-#include <string> // For the shader variants
-#include <vector> // For the light lists
+#include <memory>  // For the per-light states
+#include <string>  // For the shader variants, the unusable values
+#include <utility> // For the unusable lights' pairs
+#include <vector>  // For the light lists
 
 class vtkLight;
 class vtkObject;
@@ -94,12 +95,19 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
+  /// Remove from `lights` those with a value they cannot be used with (warned once); whether
+  /// any was removed.
+  bool LeaveOutUnusable(vtkObject* owner, std::vector<vtkLight*>& lights);
+
   vtkLightShaftLights(const vtkLightShaftLights&) = delete;
   void operator=(const vtkLightShaftLights&) = delete;
 
   std::vector<vtkSmartPointer<vtkLight>> Given;
   std::vector<std::unique_ptr<vtkLightShaftLightState>> States;
   bool WarnedNoLight = false;
+  /// The lights left out for a value they cannot be used with, and that value's description
+  /// (warned once until it changes).
+  std::vector<std::pair<vtkWeakPointer<vtkLight>, std::string>> Unusable;
 };
 
 #endif

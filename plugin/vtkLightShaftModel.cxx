@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace vtkLightShaftModel
 {
@@ -50,6 +51,81 @@ std::vector<vtkLight*> FindLights(const std::vector<vtkLight*>& requested, vtkRe
     }
   }
   return lights;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+std::string Values(const double* values, int n)
+{
+  std::ostringstream text;
+  text << (n > 1 ? "(" : "");
+  for (int i = 0; i < n; ++i)
+  {
+    text << (i ? ", " : "") << values[i];
+  }
+  text << (n > 1 ? ")" : "");
+  return text.str();
+}
+
+bool AllFinite(const double* values, int n, bool nonNegative)
+{
+  return std::all_of(values,
+    values + n,
+    [nonNegative](double v) { return std::isfinite(v) && (!nonNegative || v >= 0.0); });
+}
+}
+
+std::string UnusableLightValue(vtkLight* light)
+{
+  const double* position = light->GetTransformedPosition();
+  if (!AllFinite(position, 3, false))
+  {
+    return "its position is " + Values(position, 3);
+  }
+  const double* focal = light->GetTransformedFocalPoint();
+  if (!AllFinite(focal, 3, false))
+  {
+    return "its focal point is " + Values(focal, 3);
+  }
+  const LightKind kind = KindOf(light);
+  if (kind != LightKind::Point && std::equal(position, position + 3, focal))
+  {
+    return "its position equals its focal point " + Values(focal, 3) + " (no direction)";
+  }
+  const double intensity = light->GetIntensity();
+  if (!AllFinite(&intensity, 1, true))
+  {
+    return "its intensity is " + Values(&intensity, 1);
+  }
+  const double* color = light->GetDiffuseColor();
+  if (!AllFinite(color, 3, true))
+  {
+    return "its diffuse colour is " + Values(color, 3);
+  }
+  const double* attenuation = light->GetAttenuationValues();
+  if (kind != LightKind::Directional && !AllFinite(attenuation, 3, true))
+  {
+    return "its attenuation is " + Values(attenuation, 3);
+  }
+  const double cone = light->GetConeAngle();
+  const double exponent = light->GetExponent();
+  // A NaN cone angle is no spot (KindOf: not below 90 degrees), but is no light either.
+  if (light->GetPositional() && !AllFinite(&cone, 1, false))
+  {
+    return "its cone angle is " + Values(&cone, 1);
+  }
+  if (kind == LightKind::Spot && !AllFinite(&exponent, 1, true))
+  {
+    return "its exponent is " + Values(&exponent, 1);
+  }
+  return std::string();
+}
+
+bool UsableBounds(const double bounds[6])
+{
+  return AllFinite(bounds, 6, false) && bounds[0] <= bounds[1] && bounds[2] <= bounds[3] &&
+         bounds[4] <= bounds[5];
 }
 
 //------------------------------------------------------------------------------

@@ -14,6 +14,7 @@
 
 #include <glm/glm.hpp> // For glm::dvec3
 
+#include <string> // For the reason a light is unusable
 #include <vector> // For the lights chosen
 
 class vtkLight;
@@ -56,6 +57,18 @@ bool IsSpotLight(vtkLight* light);
  * default headlight and light kits are directional).
  */
 std::vector<vtkLight*> FindLights(const std::vector<vtkLight*>& requested, vtkRenderer* renderer);
+
+/**
+ * What makes `light` unusable for the shafts, as "its exponent is nan" (empty when it is
+ * usable): a position or focal point that is not finite (a transform matrix with NaN), a spot or
+ * directional light whose position equals its focal point (no direction), an intensity, colour
+ * or attenuation that is not finite or is negative, a positional light's cone angle that is not
+ * finite, a spot's exponent that is not finite or is negative. VTK's vtkLight takes them all.
+ */
+std::string UnusableLightValue(vtkLight* light);
+
+/// Whether the six bounds are all finite and initialised (min <= max).
+bool UsableBounds(const double bounds[6]);
 
 /**
  * A light as the model sees it, in world coordinates.

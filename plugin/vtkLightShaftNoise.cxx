@@ -100,7 +100,11 @@ void vtkLightShaftNormalizeNoise(std::vector<float>& texels)
   }
 }
 
-bool vtkLightShaftImageToRGB(vtkTexture* texture, std::vector<float>& rgb, int& width, int& height)
+bool vtkLightShaftImageToRGB(vtkTexture* texture,
+  std::vector<float>& rgb,
+  int& width,
+  int& height,
+  std::string* unusable)
 {
   if (!texture)
   {
@@ -133,7 +137,15 @@ bool vtkLightShaftImageToRGB(vtkTexture* texture, std::vector<float>& rgb, int& 
     {
       const int source = (components >= 3) ? c : 0; // grey (+ alpha) images: grey in R, G, B
       const double value = scalars->GetComponent(i, source) * scale;
-      rgb[i * 3 + c] = static_cast<float>(std::isfinite(value) ? std::max(value, 0.0) : 0.0);
+      if (!std::isfinite(value))
+      {
+        if (unusable)
+        {
+          *unusable = "texel " + std::to_string(i) + " is " + std::to_string(value);
+        }
+        return false;
+      }
+      rgb[i * 3 + c] = static_cast<float>(std::max(value, 0.0));
     }
   }
   return true;

@@ -6,6 +6,7 @@
 #ifndef vtkLightShaftNoise_h
 #define vtkLightShaftNoise_h
 
+#include <string> // For the reason an image is unusable
 #include <vector> // For the returned texels
 
 class vtkTexture;
@@ -27,9 +28,15 @@ void vtkLightShaftNormalizeNoise(std::vector<float>& texels);
 /**
  * A texture's input image (any scalar type, 1-4 components) as RGB floats, row 0 at the bottom;
  * 8-bit images map 255 to 1, others are used as they are (clamped to >= 0). Grey images fill
- * R, G and B. Returns false when there is no usable image. Shared by vtkLightShaftPass and
- * vtkLightShaftReference so both read cookies and noise images the same way.
+ * R, G and B. Returns false when there is no usable image: none, or one with a texel that is
+ * not finite (then `unusable`, when given, says which, as "texel 7 is nan"). Shared by
+ * vtkLightShaftPass and vtkLightShaftReference so both read cookies and noise images the same
+ * way.
  */
-bool vtkLightShaftImageToRGB(vtkTexture* texture, std::vector<float>& rgb, int& width, int& height);
+bool vtkLightShaftImageToRGB(vtkTexture* texture,
+  std::vector<float>& rgb,
+  int& width,
+  int& height,
+  std::string* unusable = nullptr);
 
 #endif

@@ -580,8 +580,11 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   const std::vector<vtkLight*> lights = impl.Lights.Choose(this, frame.Renderer);
   impl.Lights.KeepOnly(lights, frame.Window);
   const bool medium = frame.Medium.Scatters() || frame.Medium.Extinguishes();
+  const bool cameraUsable = impl.Check.CheckCamera(this, frame);
+  impl.Check.CheckProps(this, frame);
   impl.Scene.HoldOverlay(delegate);
-  if (lights.empty() || !(medium || this->ShadowSurfaces) || frame.Size[0] < 1 || frame.Size[1] < 1)
+  if (lights.empty() || !(medium || this->ShadowSurfaces) || frame.Size[0] < 1 ||
+      frame.Size[1] < 1 || !cameraUsable)
   {
     impl.Scene.RenderUnchanged(frame, delegate); // nothing to add: the delegate's image
   }

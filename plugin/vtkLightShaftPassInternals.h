@@ -17,6 +17,7 @@
 #include "vtkLightShaftLightTextures.h" // For the cookie and noise
 #include "vtkLightShaftLights.h"        // For the lights
 #include "vtkLightShaftRefinement.h"    // For the progressive refinement
+#include "vtkLightShaftSceneCheck.h"    // For what of the scene cannot be used
 #include "vtkLightShaftSceneRenderer.h" // For the scene
 #include "vtkLightShaftSurfaceLight.h"  // For the surface light
 
@@ -45,6 +46,7 @@ public:
   int FrameCounter = 0;
 
   // The components, in the order a frame uses them.
+  vtkLightShaftSceneCheck Check;
   vtkLightShaftLights Lights;
   vtkLightShaftSceneRenderer Scene;
   vtkLightShaftLightTextures Textures;

@@ -29,6 +29,7 @@ from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkImageData
 from vtkmodules.vtkRenderingCore import vtkHardwareSelector, vtkLight, vtkTexture
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
 from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.vtkCommonMath import vtkMatrix4x4
 
 import render_helpers as rh
 from vtk_output import VTK_OUTPUT, Messages
@@ -67,7 +68,10 @@ DOCUMENTED_WARNINGS = ["No spot or point light in the renderer", "given to the p
                        "The cookie shapes spot and directional lights only",
                        "cookie texture has no image", "noise texture has no image",
                        "Method ANALYTIC ignores shadows", "lattice cells in a frame",
-                       "Method LIGHT_VOLUME has no closed form"]
+                       "Method LIGHT_VOLUME has no closed form",
+                       # junk on the VTK objects the pass reads (junk_vtk)
+                       "is left out of the shafts", "The camera cannot be used for the shafts",
+                       "casts no shadow in the shafts", "image cannot be used (texel"]
 INT_PROBE = 2 ** 31 - 1
 FLOAT_PROBE = 1e300
 
@@ -91,6 +95,23 @@ def probe_ranges():
         ranges[name] = (low, getter()[0])
     ranges["Time"] = (-1e6, 1e6)  # any finite value: fuzz a wide span
     return ranges
+
+
+def nan_matrix(value):
+    matrix = vtkMatrix4x4()
+    matrix.SetElement(1, 3, value)
+    return matrix
+
+
+def nan_image(value):
+    image = vtkImageData()
+    image.SetDimensions(4, 4, 1)
+    texels = np.ones(16, np.float32)
+    texels[5] = value
+    image.GetPointData().SetScalars(numpy_to_vtk(texels, deep=1))
+    texture = vtkTexture()
+    texture.SetInputData(image)
+    return texture
 
 
 def image_texture(rng, components=3):
@@ -128,6 +149,7 @@ class Fuzzer:
         self.log = Messages(self.shafts)
         self.errors, self.warnings = self.log.errors, self.log.warnings
         self.steps = []
+        self.undo = []  # how to undo the junk set on VTK objects
         self.refused = set()  # parameters given a non-finite value this step
         self.frame_times = []
         self.shafted = 0  # frames that computed shafts
@@ -315,6 +337,49 @@ class Fuzzer:
         self.window.SetDesiredUpdateRate(rate)
         return f"SetDesiredUpdateRate({rate})"
 
+    def junk_vtk(self):
+        """Junk VTK takes on the objects the pass reads (light, camera, prop, image); undone
+        by a later junk_vtk (half the time) or by the actions that set those values."""
+        rng = self.rng
+        if self.undo and rng.random() < 0.5:
+            for undo in self.undo:
+                undo()
+            self.undo.clear()
+            return "junk undone"
+        nan = rng.choice([math.nan, math.inf, -math.inf])
+        spot, camera = self.spot, self.renderer.GetActiveCamera()
+        actor = self.renderer.GetActors().GetLastActor()
+        choices = {
+            "exponent": (lambda: spot.SetExponent(nan), spot.SetExponent, spot.GetExponent()),
+            "intensity": (lambda: spot.SetIntensity(nan), spot.SetIntensity,
+                          spot.GetIntensity()),
+            "colour": (lambda: spot.SetDiffuseColor(nan, 1.0, 1.0),
+                       lambda v: spot.SetDiffuseColor(*v), spot.GetDiffuseColor()),
+            "attenuation": (lambda: spot.SetAttenuationValues(1.0, nan, 0.0),
+                            lambda v: spot.SetAttenuationValues(*v),
+                            spot.GetAttenuationValues()),
+            "cone": (lambda: spot.SetConeAngle(nan), spot.SetConeAngle, spot.GetConeAngle()),
+            "light on its focal point": (lambda: spot.SetPosition(*spot.GetFocalPoint()),
+                                         lambda v: spot.SetPosition(*v), spot.GetPosition()),
+            "light transform": (lambda: spot.SetTransformMatrix(nan_matrix(nan)),
+                                spot.SetTransformMatrix, spot.GetTransformMatrix()),
+            "parallel scale": (lambda: camera.SetParallelScale(rng.choice([0.0, nan])),
+                               camera.SetParallelScale, camera.GetParallelScale()),
+            "view angle": (lambda: camera.SetViewAngle(rng.choice([0.0, 180.0, nan])),
+                           camera.SetViewAngle, camera.GetViewAngle()),
+            "prop transform": (lambda: actor.SetPosition(nan, 0.0, 0.0),
+                               lambda v: actor.SetPosition(*v), actor.GetPosition()),
+            "cookie": (lambda: self.shafts.SetCookie(nan_image(nan)), self.shafts.SetCookie,
+                       self.shafts.GetCookie()),
+            "noise": (lambda: self.shafts.SetNoiseTexture(nan_image(nan)),
+                      self.shafts.SetNoiseTexture, self.shafts.GetNoiseTexture()),
+        }
+        name = rng.choice(sorted(choices))
+        apply, restore, value = choices[name]
+        apply()
+        self.undo.append(lambda: restore(value))
+        return f"junk {name} ({nan})"
+
     def still(self):
         # Nothing changes: with ProgressiveRefinement on, one more estimate (or the converged
         # picture again).
@@ -331,7 +396,7 @@ class Fuzzer:
 
     ACTIONS = [(set_scalar, 30), (set_vector, 8), (set_boolean, 6), (preset, 2), (textures, 5),
                (light, 10), (several_lights, 8), (usable_light, 5), (camera, 10), (window_size, 6), (viewport, 4), (multisamples, 3),
-               (delegate, 2), (selection, 2), (still, 6), (update_rate, 3)]
+               (delegate, 2), (selection, 2), (still, 6), (update_rate, 3), (junk_vtk, 6)]
 
     # --- one frame --------------------------------------------------------------------------
     def step(self, index):
