@@ -338,14 +338,9 @@ class Fuzzer:
         return f"SetDesiredUpdateRate({rate})"
 
     def junk_vtk(self):
-        """Junk VTK takes on the objects the pass reads (light, camera, prop, image); undone
-        by a later junk_vtk (half the time) or by the actions that set those values."""
+        """Junk VTK takes on the objects the pass reads (light, camera, prop, image); undone a
+        few frames later (undo_junk) or by the actions that set those values."""
         rng = self.rng
-        if self.undo and rng.random() < 0.5:
-            for undo in self.undo:
-                undo()
-            self.undo.clear()
-            return "junk undone"
         nan = rng.choice([math.nan, math.inf, -math.inf])
         spot, camera = self.spot, self.renderer.GetActiveCamera()
         actor = self.renderer.GetActors().GetLastActor()
@@ -380,6 +375,12 @@ class Fuzzer:
         self.undo.append(lambda: restore(value))
         return f"junk {name} ({nan})"
 
+    def undo_junk(self):
+        for undo in reversed(self.undo):
+            undo()
+        self.undo.clear()
+        return "junk undone"
+
     def still(self):
         # Nothing changes: with ProgressiveRefinement on, one more estimate (or the converged
         # picture again).
@@ -406,6 +407,8 @@ class Fuzzer:
         actions, weights = zip(*self.ACTIONS)
         done = [action(self) for action in self.rng.choices(actions, weights,
                                                             k=self.rng.randint(1, 3))]
+        if self.undo and self.rng.random() < 0.3:  # junk lasts a few frames
+            done.append(self.undo_junk())
         self.steps.append(f"frame {index}: " + "; ".join(done))
         start, cpu_start = time.perf_counter(), time.process_time()
         self.window.Render()
