@@ -78,6 +78,12 @@ vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
     samples);
   const int step = std::max(1, std::min(p.EpipolarStep, layout.Samples - 1));
   const int columns = (layout.Samples - 1 + step - 1) / step + 1;
+  // Marched at most: every sample of every line (coarse and refined) and every pixel the
+  // samples miss.
+  const int steps = this->SamplesWithinBudget(frame,
+    "NumberOfSteps",
+    p.NumberOfSteps,
+    static_cast<long long>(layout.Lines) * layout.Samples + static_cast<long long>(width) * height);
   this->UploadEnds(frame, layout);
 
   vtkOpenGLRenderWindow* window = frame.Window;
@@ -119,7 +125,7 @@ vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
       break;
     }
     SetLayoutUniforms(program, layout, step);
-    program->SetUniformi("numberOfSteps", p.NumberOfSteps);
+    program->SetUniformi("numberOfSteps", steps);
     program->SetUniformf("samplingRotation", static_cast<float>(frame.SamplingRotation));
     for (int i = 0; i < 6; ++i)
     {

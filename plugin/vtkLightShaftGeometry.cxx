@@ -899,6 +899,13 @@ int AffordableLattice(int requested, int slabs)
 }
 
 //------------------------------------------------------------------------------
+int AffordableSamples(int requested, long long pixels)
+{
+  const long long affordable = std::max(1LL, SegmentBudget / std::max(pixels, 1LL));
+  return static_cast<int>(std::min<long long>(requested, affordable));
+}
+
+//------------------------------------------------------------------------------
 double FarthestViewPoint(const glm::dmat4& clipToView, const glm::dvec3& pointVC)
 {
   double farthest = 0.0;

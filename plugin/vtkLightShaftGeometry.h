@@ -228,6 +228,16 @@ constexpr long long LatticeCellBudget = 1LL << 21;
 /// or the largest n with slabs * n^2 within the budget (at least 1).
 int AffordableLattice(int requested, int slabs);
 
+/// Segments (a step of a march, a slab across a pixel: one closed-form integral and one
+/// lookup each) one light's in-scatter integrates in one frame at most, counted over the
+/// in-scatter's pixels: the bound of a frame's time at the sampling maxima (about 16 s per
+/// light here, 15 ns a segment on llvmpipe with 2 cores: README "Behaviour with any scene").
+constexpr long long SegmentBudget = 1LL << 30;
+
+/// The steps or slabs per pixel that `pixels` in-scatter pixels can afford within
+/// SegmentBudget: `requested`, or fewer (at least 1).
+int AffordableSamples(int requested, long long pixels);
+
 /// The farthest point of the view volume (camera plane to far plane) from `pointVC`.
 double FarthestViewPoint(const glm::dmat4& clipToView, const glm::dvec3& pointVC);
 }

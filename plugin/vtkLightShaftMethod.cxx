@@ -70,3 +70,28 @@ bool vtkLightShaftMethod::PrepareMarch(vtkLightShaftFrame& frame,
   variant.Description += FloatAccumulation(frame.Parameters);
   return true;
 }
+
+//------------------------------------------------------------------------------
+int vtkLightShaftMethod::SamplesWithinBudget(vtkLightShaftFrame& frame,
+  const char* name,
+  int requested,
+  long long rays)
+{
+  const long long pixels =
+    rays >= 0 ? rays : static_cast<long long>(frame.Reduced[0]) * frame.Reduced[1];
+  const int affordable = vtkLightShaftGeometry::AffordableSamples(requested, pixels);
+  if (affordable == requested)
+  {
+    this->WarnedSegmentBudget = false;
+  }
+  else if (!this->WarnedSegmentBudget)
+  {
+    vtkWarningWithObjectMacro(frame.Owner,
+      "" << name << " " << requested << " over " << pixels
+         << (rays >= 0 ? " rays" : " in-scatter pixels") << " would be " << requested * pixels
+         << " segments in a frame, more than the " << vtkLightShaftGeometry::SegmentBudget
+         << " allowed: using " << affordable << ".");
+    this->WarnedSegmentBudget = true;
+  }
+  return affordable;
+}

@@ -92,11 +92,23 @@ protected:
     vtkTextureObject*& shadowMap,
     vtkLightShaftShaders::Variant& variant) const;
 
+  /**
+   * `requested` steps or slabs per ray (the parameter `name`), or fewer when `rays` rays (by
+   * default the frame's in-scatter pixels) would integrate more than
+   * vtkLightShaftGeometry::SegmentBudget segments with them: then one warning from the frame's
+   * owner, until it fits again.
+   */
+  int SamplesWithinBudget(vtkLightShaftFrame& frame,
+    const char* name,
+    int requested,
+    long long rays = -1);
+
   /// " accumulate=float32" or " accumulate=float16": the description of a float accumulation.
   static const char* FloatAccumulation(const vtkLightShaftParameters& parameters);
 
   vtkLightShaftShaders::Program SlabProgram;
   std::string Variant;
+  bool WarnedSegmentBudget = false;
 };
 
 #endif

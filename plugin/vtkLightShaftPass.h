@@ -786,6 +786,10 @@ public:
   /// The lattice resolution the slabs used: LatticeResolution, or less when that would exceed
   /// the per-frame budget of 2^21 lattice cells (0: no lattice).
   vtkGetMacro(LastLatticeResolution, int);
+  /// The steps RAY_MARCH took per pixel: NumberOfSteps, or fewer when the frame's in-scatter
+  /// pixels would integrate more than 2^30 segments with them (one warning; 0: no RAY_MARCH).
+  /// SLICES' slabs obey the same budget (GetLastNumberOfSlicesDrawn).
+  vtkGetMacro(LastNumberOfSteps, int);
   /// Full-screen-sized passes run after the slabs/march (gather, blur, guard band, ...).
   vtkGetMacro(LastNumberOfPostPasses, int);
   /// The guard band RADIAL_BLUR used (0 when it did not run).
@@ -927,6 +931,7 @@ protected:
   int LastNumberOfPostPasses = 0;
   double LastRadialGuardBand = 0.0;
   int LastLatticeResolution = 0;
+  int LastNumberOfSteps = 0;
   int LastNumberOfSlabBatches = 0;
   int LastMultiSamples = 0;
   bool LastPlainScene = false;

@@ -89,6 +89,7 @@ void vtkLightShaftPass::Internals::Publish(vtkLightShaftPass& self, const vtkLig
   self.LastViewportSize[1] = std::max(frame.Size[1], 0);
   self.LastNumberOfSlabBatches = stats.SlabBatches;
   self.LastLatticeResolution = stats.LatticeResolution;
+  self.LastNumberOfSteps = stats.NumberOfSteps;
   self.LastNumberOfPostPasses = stats.PostPasses;
   self.LastNumberOfSceneRenders = stats.SceneRenders;
   self.LastMultiSamples = stats.MultiSamples;

@@ -9,6 +9,8 @@
 
 #include "vtkLightShaftRayMarchFS.h"
 
+#include <algorithm>
+
 //------------------------------------------------------------------------------
 vtkLightShaftRayMarchMethod::vtkLightShaftRayMarchMethod(vtkLightShaftSlabDrawer& drawer)
   : Drawer(drawer)
@@ -39,7 +41,10 @@ vtkTextureObject* vtkLightShaftRayMarchMethod::Render(vtkLightShaftFrame& frame,
   {
     return nullptr;
   }
-  program->SetUniformi("numberOfSteps", p.NumberOfSteps);
+  const int steps = this->SamplesWithinBudget(frame, "NumberOfSteps", p.NumberOfSteps);
+  frame.Statistics.NumberOfSteps =
+    frame.Statistics.NumberOfSteps > 0 ? std::min(frame.Statistics.NumberOfSteps, steps) : steps;
+  program->SetUniformi("numberOfSteps", steps);
   program->SetUniformi("interleaveSize", p.InterleaveSize);
   program->SetUniformf("samplingRotation", static_cast<float>(frame.SamplingRotation));
 

@@ -89,7 +89,9 @@ vtkTextureObject* vtkLightShaftSlicesMethod::Render(vtkLightShaftFrame& frame,
   vtkLightShaftInScatterTarget& target)
 {
   const vtkLightShaftParameters& p = frame.Parameters;
-  const int slices = this->CountSlices(frame, lit);
+  const int slices = this->SamplesWithinBudget(frame,
+    p.AutomaticSliceCount ? "The automatic slice count" : "NumberOfSlices",
+    this->CountSlices(frame, lit));
   const bool jitter = p.Jitter;
   this->Footprints =
     vtkLightShaftGeometry::ComputeSlabFootprints(lit, frame.Camera, slices, jitter);

@@ -429,6 +429,21 @@ void TestLatticeBudget()
     "4097 slabs afford a lattice of 22");
   Check(AffordableLattice(256, 1 << 30) == 1, "at least a 1 x 1 lattice");
 }
+
+void TestSegmentBudget()
+{
+  using vtkLightShaftGeometry::AffordableSamples;
+  using vtkLightShaftGeometry::SegmentBudget;
+  Check(AffordableSamples(256, 1920LL * 1080) == 256, "256 steps at 1080p are affordable");
+  Check(AffordableSamples(4096, 512LL * 512) == 4096, "4096 x 512^2 is exactly the budget");
+  const int reduced = AffordableSamples(4096, 640LL * 480);
+  Check(reduced == 3495 && 640LL * 480 * reduced <= SegmentBudget &&
+      640LL * 480 * (reduced + 1) > SegmentBudget,
+    "640x480 affords 3495 steps");
+  Check(AffordableSamples(4096, 1920LL * 1080) == 517, "1080p affords 517 steps");
+  Check(AffordableSamples(16, 1LL << 40) == 1, "at least one step");
+  Check(AffordableSamples(16, 0) == 16, "no pixels: the steps asked for");
+}
 }
 
 // The light's image: a point (in front of or behind the camera), a direction (parallel lines)
@@ -617,6 +632,7 @@ int main()
   TestLightChoice();
   TestNoDegenerateTriangles();
   TestLatticeBudget();
+  TestSegmentBudget();
   TestEpipole();
   TestEpipolarLayout();
   if (Failures > 0)

@@ -68,6 +68,7 @@ DOCUMENTED_WARNINGS = ["No spot or point light in the renderer", "given to the p
                        "The cookie shapes spot and directional lights only",
                        "cookie texture has no image", "noise texture has no image",
                        "Method ANALYTIC ignores shadows", "lattice cells in a frame",
+                       "segments in a frame",
                        "Method LIGHT_VOLUME has no closed form",
                        # junk on the VTK objects the pass reads (junk_vtk)
                        "is left out of the shafts", "The camera cannot be used for the shafts",
