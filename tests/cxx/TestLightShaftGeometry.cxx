@@ -438,7 +438,7 @@ void TestSegmentBudget()
   Check(AffordableSamples(4096, 512LL * 512) == 4096, "4096 x 512^2 is exactly the budget");
   const int reduced = AffordableSamples(4096, 640LL * 480);
   Check(reduced == 3495 && 640LL * 480 * reduced <= SegmentBudget &&
-      640LL * 480 * (reduced + 1) > SegmentBudget,
+          640LL * 480 * (reduced + 1) > SegmentBudget,
     "640x480 affords 3495 steps");
   Check(AffordableSamples(4096, 1920LL * 1080) == 517, "1080p affords 517 steps");
   Check(AffordableSamples(16, 1LL << 40) == 1, "at least one step");
