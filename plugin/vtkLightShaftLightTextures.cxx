@@ -21,6 +21,26 @@ vtkMTimeType ImageTime(vtkTexture* texture)
   vtkDataObject* input = texture->GetInputDataObject(0, 0);
   return std::max(texture->GetMTime(), input ? input->GetMTime() : 0);
 }
+
+// Why `which` texture's image is not used ("cookie", "noise"; `unusable` from
+// vtkLightShaftImageToRGB, empty: no image) and what is done instead, said once: `last` holds
+// the warning last given.
+void WarnUnusable(vtkObject* owner,
+  const char* which,
+  const std::string& unusable,
+  const char* instead,
+  std::string& last)
+{
+  const std::string warning =
+    "The " + std::string(which) + " texture" +
+    (unusable.empty() ? " has no image" : "'s image cannot be used (" + unusable + ")") + ": " +
+    instead + ".";
+  if (warning != last)
+  {
+    vtkWarningWithObjectMacro(owner, "" << warning);
+    last = warning;
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -83,15 +103,7 @@ vtkTextureObject* vtkLightShaftLightTextures::ReadyCookie(vtkOpenGLRenderWindow*
       this->CookieTexture = nullptr;
     }
     this->CookieUploadTime = 0;
-    const std::string warning =
-      unusable.empty()
-        ? std::string("The cookie texture has no image: no cookie is applied.")
-        : "The cookie texture's image cannot be used (" + unusable + "): no cookie is applied.";
-    if (warning != this->CookieWarning)
-    {
-      vtkWarningWithObjectMacro(owner, "" << warning);
-      this->CookieWarning = warning;
-    }
+    WarnUnusable(owner, "cookie", unusable, "no cookie is applied", this->CookieWarning);
     return nullptr;
   }
   this->CookieWarning.clear();
@@ -131,15 +143,7 @@ vtkTextureObject* vtkLightShaftLightTextures::ReadyNoise(vtkOpenGLRenderWindow* 
       this->NoiseIsGenerated = false;
       return this->NoiseTexture;
     }
-    const std::string warning =
-      unusable.empty()
-        ? std::string("The noise texture has no image: using the generated noise.")
-        : "The noise texture's image cannot be used (" + unusable + "): using the generated noise.";
-    if (warning != this->NoiseWarning)
-    {
-      vtkWarningWithObjectMacro(owner, "" << warning);
-      this->NoiseWarning = warning;
-    }
+    WarnUnusable(owner, "noise", unusable, "using the generated noise", this->NoiseWarning);
   }
   if (!this->NoiseTexture || !this->NoiseIsGenerated)
   {

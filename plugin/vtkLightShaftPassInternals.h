@@ -56,6 +56,7 @@ public:
   vtkLightShaftRefinement Refinement;
   vtkLightShaftCostModel Costs;
   vtkLightShaftCostModel::Choice BudgetChoice; ///< kept while the view is still
+  double BudgetOfChoice = 0.0;                 ///< the budget BudgetChoice was made for
   bool HasBudgetChoice = false;
 
   // The last frame's L_in (full resolution) when InScatterValid, and what it did per light.

@@ -9,7 +9,6 @@
 #include "vtkLightShaftErrorModel.h"
 #include "vtkLightShaftFrame.h"
 
-#include "vtkLightShaftOpenGL.h"
 #include "vtkRenderer.h"
 
 #include <algorithm>
@@ -101,12 +100,16 @@ vtkTextureObject* vtkLightShaftPass::Internals::ChooseSampling(vtkLightShaftFram
   {
     frame.Noise = this->Textures.ReadyNoise(frame.Window, frame.Owner);
   }
+  // What decides the picture, signed only when refinement or a budget asks whether it changed:
+  // features that are off cost nothing (a prop's redraw MTime updates its pipeline).
+  const bool signs = frame.Parameters.ProgressiveRefinement || FrameBudget(frame) > 0.0;
   vtkLightShaftRefinement::Signature signature =
-    vtkLightShaftRefinement::Sign(frame, lights, this->Textures.GetImagesTime());
+    signs ? vtkLightShaftRefinement::Sign(frame, lights, this->Textures.GetImagesTime())
+          : vtkLightShaftRefinement::Signature();
   this->ApplyErrorModel(frame,
     lightFrames,
     cookie != nullptr || frame.Noise != nullptr,
-    this->Refinement.IsStill(signature));
+    signs && this->Refinement.IsStill(signature));
   vtkLightShaftRefinement::SetSampling(signature, frame);
   this->Refinement.Begin(frame, std::move(signature));
   if (frame.ShadowMapOffset[0] != 0.0 || frame.ShadowMapOffset[1] != 0.0)
@@ -170,8 +173,10 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
   if (frame.Statistics.TimeBudget > 0.0)
   {
     const double pixels = double(frame.Size[0]) * frame.Size[1];
-    if (!still || !this->HasBudgetChoice)
+    // Kept while the view is still under the same budget (an interactor's new rate is not).
+    if (!still || !this->HasBudgetChoice || this->BudgetOfChoice != frame.Statistics.TimeBudget)
     {
+      this->BudgetOfChoice = frame.Statistics.TimeBudget;
       this->BudgetChoice = this->Costs.Choose(
         frame.Statistics.TimeBudget, p.TargetError, features, !cookieOrNoise, pixels, lit);
       this->HasBudgetChoice = true;

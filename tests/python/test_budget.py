@@ -160,3 +160,26 @@ def test_the_predictions_follow_the_budget_along_an_interactive_camera_path():
     times = [measured[i] for i in moving[2:]]
     print(f"budget {1000 / 15:.0f} ms: measured median {1000 * statistics.median(times):.0f} ms,"
           f" max {1000 * max(times):.0f} ms; choices {sorted(set(names[i] for i in moving))}")
+
+
+def test_a_new_budget_for_a_still_view_chooses_again():
+    renderer, window, info, shafts = budget_scene(TimeBudget=3600.0)
+    window.Render()
+    ample = (setting_name(shafts), shafts.GetLastDownsampleFactor())
+    assert ample[1] == 1
+    shafts.SetTimeBudget(1e-9)  # the same view, a budget nothing fits
+    window.Render()
+    assert shafts.GetLastDownsampleFactor() == 4
+    assert (setting_name(shafts), shafts.GetLastDownsampleFactor()) != ample
+    try:
+        shafts.SetTimeBudget(0.0)
+        window.SetDesiredUpdateRate(5.0)  # an interactor's rate: a budget of 0.2 s
+        window.Render()
+        first = shafts.GetLastTimeBudget()
+        window.SetDesiredUpdateRate(1e6)  # the view still, a new rate: a new choice
+        window.Render()
+        assert shafts.GetLastTimeBudget() == pytest.approx(1e-6)
+        assert first != shafts.GetLastTimeBudget()
+        assert shafts.GetLastDownsampleFactor() == 4
+    finally:
+        window.SetDesiredUpdateRate(0.0001)
