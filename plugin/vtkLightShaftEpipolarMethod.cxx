@@ -80,9 +80,7 @@ vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
   const int columns = (layout.Samples - 1 + step - 1) / step + 1;
   // Marched at most: every sample of every line (coarse and refined) and every pixel the
   // samples miss.
-  const int steps = this->SamplesWithinBudget(frame,
-    "NumberOfSteps",
-    p.NumberOfSteps,
+  const int steps = this->StepsWithinBudget(frame,
     static_cast<long long>(layout.Lines) * layout.Samples + static_cast<long long>(width) * height);
   this->UploadEnds(frame, layout);
 

@@ -151,6 +151,8 @@ struct vtkLightShaftFrame
   vtkLightShaftGeometry::LightFrame Light;
   vtkLightShaftShadowMap* ShadowMap = nullptr;
   vtkLightShaftLightStatistics* LightStatistics = nullptr;
+  /// The lights that radiate this frame: they share the frame's segment budget.
+  int RadiatingLights = 1;
 
   /// Decided once per frame: the cookie and noise textures in use (nullptr: off); the cookie
   /// shapes spot and directional lights.

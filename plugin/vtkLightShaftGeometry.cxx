@@ -887,21 +887,23 @@ void AppendSlabTriangles(const SlabFootprint& slab, int lattice, std::vector<flo
 }
 
 //------------------------------------------------------------------------------
-int AffordableLattice(int requested, int slabs)
+int AffordableLattice(int requested, int slabs, int lights)
 {
   if (requested <= 0)
   {
     return 0;
   }
-  const int affordable = std::max(
-    1, static_cast<int>(std::floor(std::sqrt(static_cast<double>(LatticeCellBudget) / slabs))));
+  const double share = static_cast<double>(LatticeCellBudget) / std::max(lights, 1);
+  const int affordable =
+    std::max(1, static_cast<int>(std::floor(std::sqrt(share / std::max(slabs, 1)))));
   return std::min(requested, affordable);
 }
 
 //------------------------------------------------------------------------------
-int AffordableSamples(int requested, long long pixels)
+int AffordableSamples(int requested, long long pixels, int lights)
 {
-  const long long affordable = std::max(1LL, SegmentBudget / std::max(pixels, 1LL));
+  const long long share = SegmentBudget / std::max(lights, 1);
+  const long long affordable = std::max(1LL, share / std::max(pixels, 1LL));
   return static_cast<int>(std::min<long long>(requested, affordable));
 }
 

@@ -219,24 +219,26 @@ std::vector<SlabFootprint> ComputeSlabFootprints(const LitVolume& lit,
  */
 void AppendSlabTriangles(const SlabFootprint& slab, int lattice, std::vector<float>& vertices);
 
-/// Lattice cells built and drawn in one frame at most: the cells are clipped on the CPU, so
-/// their number bounds the frame's CPU time (about 1.5 s for 2^21 cells here: README "Behaviour
-/// with any scene").
+/// Lattice cells built and drawn in one frame at most, shared equally by the lights that
+/// radiate: the cells are clipped on the CPU, so their number bounds the frame's CPU time
+/// (about 1.5 s for 2^21 cells here: README "Behaviour with any scene").
 constexpr long long LatticeCellBudget = 1LL << 21;
 
-/// The lattice resolution that `slabs` slabs can afford within LatticeCellBudget: `requested`,
-/// or the largest n with slabs * n^2 within the budget (at least 1).
-int AffordableLattice(int requested, int slabs);
+/// The lattice resolution that `slabs` slabs of one of `lights` lights can afford within
+/// LatticeCellBudget: `requested`, or the largest n with lights * slabs * n^2 within the budget
+/// (at least 1).
+int AffordableLattice(int requested, int slabs, int lights = 1);
 
 /// Segments (a step of a march, a slab across a pixel: one closed-form integral and one
-/// lookup each) one light's in-scatter integrates in one frame at most, counted over the
-/// in-scatter's pixels: the bound of a frame's time at the sampling maxima (about 16 s per
-/// light here, 15 ns a segment on llvmpipe with 2 cores: README "Behaviour with any scene").
+/// lookup each) a frame's in-scatter integrates at most, counted over the in-scatter's pixels
+/// and shared equally by the lights that radiate: the bound of a frame's time at the sampling
+/// maxima (about 16 s here, 15 ns a segment on llvmpipe with 2 cores: README "Behaviour with
+/// any scene").
 constexpr long long SegmentBudget = 1LL << 30;
 
-/// The steps or slabs per pixel that `pixels` in-scatter pixels can afford within
-/// SegmentBudget: `requested`, or fewer (at least 1).
-int AffordableSamples(int requested, long long pixels);
+/// The steps or slabs per pixel that `pixels` in-scatter pixels of one of `lights` lights can
+/// afford within SegmentBudget: `requested`, or fewer (at least 1).
+int AffordableSamples(int requested, long long pixels, int lights = 1);
 
 /// The farthest point of the view volume (camera plane to far plane) from `pointVC`.
 double FarthestViewPoint(const glm::dmat4& clipToView, const glm::dvec3& pointVC);

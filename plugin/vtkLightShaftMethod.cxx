@@ -8,6 +8,9 @@
 
 #include "vtkLightShaftSlabVS.h"
 
+#include <algorithm>
+#include <string>
+
 //------------------------------------------------------------------------------
 vtkLightShaftResources::TextureKind vtkLightShaftMethod::AccumulationKind(
   const vtkLightShaftParameters& parameters,
@@ -72,6 +75,24 @@ bool vtkLightShaftMethod::PrepareMarch(vtkLightShaftFrame& frame,
 }
 
 //------------------------------------------------------------------------------
+std::string vtkLightShaftMethod::SharedBy(const vtkLightShaftFrame& frame)
+{
+  return frame.RadiatingLights > 1
+           ? " (shared by " + std::to_string(frame.RadiatingLights) + " lights)"
+           : std::string();
+}
+
+//------------------------------------------------------------------------------
+int vtkLightShaftMethod::StepsWithinBudget(vtkLightShaftFrame& frame, long long rays)
+{
+  const int steps =
+    this->SamplesWithinBudget(frame, "NumberOfSteps", frame.Parameters.NumberOfSteps, rays);
+  int& recorded = frame.Statistics.NumberOfSteps;
+  recorded = recorded > 0 ? std::min(recorded, steps) : steps;
+  return steps;
+}
+
+//------------------------------------------------------------------------------
 int vtkLightShaftMethod::SamplesWithinBudget(vtkLightShaftFrame& frame,
   const char* name,
   int requested,
@@ -79,7 +100,8 @@ int vtkLightShaftMethod::SamplesWithinBudget(vtkLightShaftFrame& frame,
 {
   const long long pixels =
     rays >= 0 ? rays : static_cast<long long>(frame.Reduced[0]) * frame.Reduced[1];
-  const int affordable = vtkLightShaftGeometry::AffordableSamples(requested, pixels);
+  const int affordable =
+    vtkLightShaftGeometry::AffordableSamples(requested, pixels, frame.RadiatingLights);
   if (affordable == requested)
   {
     this->WarnedSegmentBudget = false;
@@ -90,7 +112,7 @@ int vtkLightShaftMethod::SamplesWithinBudget(vtkLightShaftFrame& frame,
       "" << name << " " << requested << " over " << pixels
          << (rays >= 0 ? " rays" : " in-scatter pixels") << " would be " << requested * pixels
          << " segments in a frame, more than the " << vtkLightShaftGeometry::SegmentBudget
-         << " allowed: using " << affordable << ".");
+         << " allowed" << SharedBy(frame) << ": using " << affordable << ".");
     this->WarnedSegmentBudget = true;
   }
   return affordable;

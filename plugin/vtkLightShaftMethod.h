@@ -94,14 +94,21 @@ protected:
 
   /**
    * `requested` steps or slabs per ray (the parameter `name`), or fewer when `rays` rays (by
-   * default the frame's in-scatter pixels) would integrate more than
-   * vtkLightShaftGeometry::SegmentBudget segments with them: then one warning from the frame's
-   * owner, until it fits again.
+   * default the frame's in-scatter pixels) would integrate more than this light's share of
+   * vtkLightShaftGeometry::SegmentBudget segments with them (shared by the frame's radiating
+   * lights): then one warning from the frame's owner, until it fits again.
    */
   int SamplesWithinBudget(vtkLightShaftFrame& frame,
     const char* name,
     int requested,
     long long rays = -1);
+
+  /// " (shared by N lights)" when the frame's budgets are shared by N > 1 lights, else "".
+  static std::string SharedBy(const vtkLightShaftFrame& frame);
+
+  /// SamplesWithinBudget for the frame's NumberOfSteps, recorded in the frame's statistics
+  /// (the fewest of its lights: GetLastNumberOfSteps).
+  int StepsWithinBudget(vtkLightShaftFrame& frame, long long rays = -1);
 
   /// " accumulate=float32" or " accumulate=float16": the description of a float accumulation.
   static const char* FloatAccumulation(const vtkLightShaftParameters& parameters);

@@ -708,6 +708,7 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
 
   // Each light's geometry first: with a target error it decides the frame's sampling.
   std::vector<vtkLightShaftGeometry::LightFrame> lightFrames;
+  frame.RadiatingLights = 0;
   for (vtkLight* light : lights)
   {
     lightFrames.push_back(
@@ -715,6 +716,7 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
         frame.Camera,
         frame.Renderer->GetViewProps(),
         frame.Parameters.ShadowCasterBounds));
+    frame.RadiatingLights += lightFrames.back().Model.Radiates() ? 1 : 0;
   }
   vtkTextureObject* cookie = this->ChooseSampling(frame, lights, lightFrames);
   // Under a frame budget the frame is measured (each part finished) for the cost model.

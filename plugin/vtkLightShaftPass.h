@@ -786,9 +786,10 @@ public:
   /// The lattice resolution the slabs used: LatticeResolution, or less when that would exceed
   /// the per-frame budget of 2^21 lattice cells (0: no lattice).
   vtkGetMacro(LastLatticeResolution, int);
-  /// The steps RAY_MARCH took per pixel: NumberOfSteps, or fewer when the frame's in-scatter
-  /// pixels would integrate more than 2^30 segments with them (one warning; 0: no RAY_MARCH).
-  /// SLICES' slabs obey the same budget (GetLastNumberOfSlicesDrawn).
+  /// The steps RAY_MARCH and EPIPOLAR took per ray: NumberOfSteps, or fewer when the frame's
+  /// rays would integrate more than 2^30 segments with them, shared by the frame's radiating
+  /// lights (one warning; the fewest of the lights; 0: neither method). SLICES' slabs obey
+  /// the same budget (GetLastNumberOfSlicesDrawn).
   vtkGetMacro(LastNumberOfSteps, int);
   /// Full-screen-sized passes run after the slabs/march (gather, blur, guard band, ...).
   vtkGetMacro(LastNumberOfPostPasses, int);

@@ -41,9 +41,7 @@ vtkTextureObject* vtkLightShaftRayMarchMethod::Render(vtkLightShaftFrame& frame,
   {
     return nullptr;
   }
-  const int steps = this->SamplesWithinBudget(frame, "NumberOfSteps", p.NumberOfSteps);
-  frame.Statistics.NumberOfSteps =
-    frame.Statistics.NumberOfSteps > 0 ? std::min(frame.Statistics.NumberOfSteps, steps) : steps;
+  const int steps = this->StepsWithinBudget(frame);
   program->SetUniformi("numberOfSteps", steps);
   program->SetUniformi("interleaveSize", p.InterleaveSize);
   program->SetUniformf("samplingRotation", static_cast<float>(frame.SamplingRotation));

@@ -64,7 +64,8 @@ int vtkLightShaftSlicesMethod::CountSlices(const vtkLightShaftFrame& frame,
 int vtkLightShaftSlicesMethod::LatticeWithinBudget(vtkLightShaftFrame& frame, int slabs)
 {
   const int requested = frame.Parameters.LatticeResolution;
-  const int affordable = vtkLightShaftGeometry::AffordableLattice(requested, slabs);
+  const int affordable =
+    vtkLightShaftGeometry::AffordableLattice(requested, slabs, frame.RadiatingLights);
   if (affordable == requested)
   {
     this->WarnedLatticeBudget = false;
@@ -75,8 +76,8 @@ int vtkLightShaftSlicesMethod::LatticeWithinBudget(vtkLightShaftFrame& frame, in
       "LatticeResolution " << requested << " over " << slabs << " slabs would be "
                            << static_cast<long long>(requested) * requested * slabs
                            << " lattice cells in a frame, more than the "
-                           << vtkLightShaftGeometry::LatticeCellBudget
-                           << " allowed: using a lattice of " << affordable
+                           << vtkLightShaftGeometry::LatticeCellBudget << " allowed"
+                           << SharedBy(frame) << ": using a lattice of " << affordable
                            << " (GetLastLatticeResolution).");
     this->WarnedLatticeBudget = true;
   }

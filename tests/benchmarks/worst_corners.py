@@ -52,6 +52,17 @@ CORNERS = [
     ("8 lights (4 spots, 4 points), 512 plain slices, 2048^2 maps, ShadowSurfaces",
      {"kind": "eight", "NumberOfSlices": 512, "ShadowMapSize": 2048, "Jitter": 0,
       "BlurRadius": 0, "ShadowSurfaces": 1}),
+    # Every sampling maximum again with several lights: they share the frame's segments.
+    ("8 lights, NumberOfSlices 4096, LatticeResolution 256",
+     {"kind": "eight", "NumberOfSlices": 4096, "LatticeResolution": 256}),
+    ("8 lights, AUTOMATIC, NumberOfSlices 4096, LatticeResolution 32",
+     {"kind": "eight", "Method": 4, "NumberOfSlices": 4096, "LatticeResolution": 32}),
+    ("8 lights, RAY_MARCH, NumberOfSteps 4096, InterleaveSize 1",
+     {"kind": "eight", "Method": 1, "NumberOfSteps": 4096, "InterleaveSize": 1}),
+    ("8 lights, EPIPOLAR, NumberOfSteps 4096, EpipolarStep 1",
+     {"kind": "eight", "Method": 5, "NumberOfSteps": 4096, "EpipolarStep": 1}),
+    ("8 lights, RADIAL_BLUR, RadialSamples 1024, RadialGuardBand 4",
+     {"kind": "eight", "Method": 2, "RadialSamples": 1024, "RadialGuardBand": 4.0}),
 ]
 
 
@@ -117,6 +128,7 @@ def run_corner(params, width, height, frames):
         "peak_mib": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
         "baseline_mib": baseline, "lattice": shafts.GetLastLatticeResolution(),
         "slabs": shafts.GetLastNumberOfSlicesDrawn(), "batches": shafts.GetLastNumberOfSlabBatches(),
+        "steps": shafts.GetLastNumberOfSteps(),
         "gl_errors": shafts.GetLastGLErrorCount()}))
 
 
@@ -126,6 +138,7 @@ def main():
     parser.add_argument("--height", type=int, default=480)
     parser.add_argument("--frames", type=int, default=3)
     parser.add_argument("--output", help="Markdown file to write")
+    parser.add_argument("--only", help="run only the corners whose label contains this")
     parser.add_argument("--corner", help=argparse.SUPPRESS)  # child process
     args = parser.parse_args()
     if args.corner:
@@ -133,6 +146,8 @@ def main():
         return
     rows = []
     for label, params in CORNERS:
+        if args.only and args.only not in label:
+            continue
         child = subprocess.run(
             [sys.executable, __file__, "--corner", json.dumps(params), "--width",
              str(args.width), "--height", str(args.height), "--frames", str(args.frames)],
@@ -146,6 +161,8 @@ def main():
             print(child.stdout[-2000:], child.stderr[-2000:])
         else:
             lattice = f", lattice used {result['lattice']}" if result["lattice"] else ""
+            if result.get("steps"):
+                lattice += f", {result['steps']} steps"
             rows.append(f"| {label} | {result['first_s']:.2f} | {result['median_s']:.2f} | "
                         f"{result['peak_mib']:.0f} | {result['peak_mib'] - result['baseline_mib']:.0f}"
                         f" | {result['slabs']} slabs in {result['batches']} draw(s){lattice}; "

@@ -428,6 +428,8 @@ void TestLatticeBudget()
   Check(reduced == 22 && 4097LL * reduced * reduced <= vtkLightShaftGeometry::LatticeCellBudget,
     "4097 slabs afford a lattice of 22");
   Check(AffordableLattice(256, 1 << 30) == 1, "at least a 1 x 1 lattice");
+  Check(AffordableLattice(256, 437, 8) == 24, "eight lights share the lattice cells");
+  Check(AffordableLattice(128, 128, 0) == 128, "no lights counted: the whole budget");
 }
 
 void TestSegmentBudget()
@@ -443,6 +445,11 @@ void TestSegmentBudget()
   Check(AffordableSamples(4096, 1920LL * 1080) == 517, "1080p affords 517 steps");
   Check(AffordableSamples(16, 1LL << 40) == 1, "at least one step");
   Check(AffordableSamples(16, 0) == 16, "no pixels: the steps asked for");
+  // The lights of a frame share it.
+  Check(AffordableSamples(256, 1920LL * 1080, 2) == 256, "two lights at Final fit 1080p");
+  Check(AffordableSamples(256, 1920LL * 1080, 3) == 172, "three lights at 1080p: 172 steps");
+  Check(AffordableSamples(4096, 640LL * 480, 8) == 436, "eight lights at 640x480: 436 each");
+  Check(AffordableSamples(16, 0, 0) == 16, "no lights counted: the steps asked for");
 }
 }
 

@@ -1,8 +1,8 @@
-"""The work a frame may do at the sampling maxima (issue 24): one light's in-scatter integrates
-at most 2^30 segments in a frame (steps or slabs per pixel, over the in-scatter's pixels).
-Beyond, RAY_MARCH takes fewer steps and SLICES fewer slabs, with one warning until it fits
-again; the frame stays finite. The bound's time on llvmpipe (about 16 s a light at 15 ns a
-segment) is measured in docs/robustness.md, not here.
+"""The work a frame may do at the sampling maxima (issue 24): a frame's in-scatter integrates
+at most 2^30 segments (steps or slabs per pixel, over the in-scatter's pixels), shared equally
+by the lights that radiate. Beyond, RAY_MARCH takes fewer steps and SLICES fewer slabs, with
+one warning until it fits again; the frame stays finite. The bound's time on llvmpipe (about
+16 s a frame at 15 ns a segment) is measured in docs/robustness.md, not here.
 
 The scenes keep the light's footprint small (a 3-degree cone): the budget counts every
 in-scatter pixel, the work only the lit ones, so these frames are quick.
@@ -10,6 +10,7 @@ in-scatter pixel, the work only the lit ones, so these frames are quick.
 
 import numpy as np
 import pytest
+from vtkmodules.vtkRenderingCore import vtkLight
 
 from lightshafts import scenes, vtkLightShaftPass
 
@@ -49,6 +50,25 @@ def test_ray_march_steps_beyond_the_budget_are_reduced_with_one_warning():
     assert len(log.warnings) == 2
 
 
+def test_the_lights_of_a_frame_share_the_budget():
+    renderer, window, shafts, log = narrow_beam(640, 480, Method=vtkLightShaftPass.RAY_MARCH,
+                                                NumberOfSteps=4096, InterleaveSize=1)
+    second = vtkLight()
+    second.DeepCopy(renderer.GetLights().GetItemAsObject(0))
+    second.SetPosition(np.add(second.GetPosition(), (0.5, 0.0, 0.0)))
+    renderer.AddLight(second)
+    window.Render()
+    assert shafts.GetLastNumberOfUsedLights() == 2
+    assert shafts.GetLastNumberOfSteps() == BUDGET // 2 // (640 * 480) == 1747
+    assert np.all(np.isfinite(rh.in_scatter(shafts)))
+    assert len(log.warnings) == 1
+    assert "using 1747" in log.warnings[0] and "shared by 2 lights" in log.warnings[0]
+    # Switched off, the second light leaves the first the whole budget.
+    second.SwitchOff()
+    window.Render()
+    assert shafts.GetLastNumberOfSteps() == BUDGET // (640 * 480)
+
+
 def test_slices_beyond_the_budget_are_reduced_with_one_warning():
     renderer, window, shafts, log = narrow_beam(640, 480, NumberOfSlices=4096, BlurRadius=0)
     window.Render()
@@ -76,3 +96,4 @@ def test_epipolar_steps_count_every_sample_it_may_march():
     assert len(log.warnings) == 1
     assert "NumberOfSteps 4096 over 3584000 rays" in log.warnings[0]
     assert "using 299" in log.warnings[0]
+    assert shafts.GetLastNumberOfSteps() == 299
