@@ -9,6 +9,8 @@
 #   tools/measure.sh refinement        # a still view's progressive refinement (docs/refinement.md)
 #   tools/measure.sh budget            # the frame budget on a camera path, then refinement
 #                                      # (docs/budget.md)
+#   tools/measure.sh reprojection      # what carrying the picture to the next camera costs
+#                                      # (docs/reprojection.md)
 #   tools/measure.sh worst-corners     # the slider corners (docs/robustness.md)
 #   tools/measure.sh random-scenes     # 50 random scenes: presets, methods, targets, the
 #                                      # fitted ladder (TargetError's cost against the oracle)
@@ -48,6 +50,7 @@ case "$what" in
   light-kinds) run tests/benchmarks/light_kinds.py --output-dir docs "$@" ;;
   refinement) run tests/benchmarks/refinement.py --output-dir docs "$@" ;;
   budget) run tests/benchmarks/budget.py --output-dir docs "$@" ;;
+  reprojection) run tests/benchmarks/reprojection_bound.py --output docs/reprojection.md "$@" ;;
   worst-corners) run tests/benchmarks/worst_corners.py "$@" ;;
   random-scenes)
     run tests/benchmarks/random_scenes.py --validation --seed 0 --scenes 50 --max-height 720 \

@@ -173,3 +173,17 @@ def test_budget_benchmark_smoke(tmp_path):
     frames = [line for line in text.splitlines() if line.startswith("| ") and " ms |" in line]
     assert len(frames) == 4 and all(" ms | " in row for row in frames)
     assert "| estimates | seconds since the camera stopped | error |" in text
+
+
+def test_reprojection_bound_smoke(tmp_path):
+    script = os.path.join(os.path.dirname(BENCHMARK), "reprojection_bound.py")
+    result = subprocess.run([sys.executable, script, "--size", "96", "54", "--output",
+                             str(tmp_path / "reprojection.md")],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    text = (tmp_path / "reprojection.md").read_text()
+    rows = [line for line in text.splitlines() if line.startswith("| ") and "%" in line]
+    assert len(rows) == 4
+    for row in rows:
+        errors = [float(cell.strip().rstrip("%")) for cell in row.split("|")[2:5]]
+        assert all(0.0 <= e < 100.0 for e in errors)
