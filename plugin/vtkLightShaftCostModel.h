@@ -20,9 +20,12 @@
  *          budget.
  *
  * Before a setting has been measured its cost is its prior (the ladder's median time over the
- * plain frame on the held-out random scenes, docs/random-scenes.md) times this machine's
- * scale, the geometric mean of what the measured settings cost over their priors; before
- * anything is measured, the scale of the 2-core llvmpipe the priors were measured on. Each
+ * plain frame on the held-out random scenes, docs/random-scenes.md, per pixel at any
+ * resolution) times this machine's scale, the geometric mean of what the measured settings
+ * cost over their priors; before anything is measured, the scale of the 2-core llvmpipe the
+ * priors were measured on. A setting measured at one resolution predicts its cost at the
+ * others by how its method's time follows the in-scatter's pixels (EPIPOLAR's hardly: its
+ * lines' samples do not depend on them). Each
  * measurement moves a setting's cost halfway to what was measured (in log), so a change of
  * machine load is followed within a few frames.
  */
@@ -44,11 +47,12 @@ public:
 
   /**
    * The most accurate choice predicted to fit `budget` seconds for a frame of `pixels`
-   * (viewport) pixels and `lights` lit lights: full resolution before half before quarter,
-   * then the lowest predicted error; with a `target` error, the cheapest of those that fit and
-   * meet it at full resolution (the error model knows no other). When nothing fits, the
-   * cheapest. Without `closedForm` (a cookie or noise) the
-   * LIGHT_VOLUME settings are left out.
+   * (viewport) pixels and `lights` lit lights (a choice not measured yet must fit 85% of it
+   * when its setting was measured at another resolution, 60% when never measured): full resolution
+   * before half before quarter, then the lowest predicted error; with a `target` error, the
+   * cheapest of those that fit and meet it at full resolution (the error model knows no other).
+   * When nothing fits, the cheapest. Without `closedForm` (a cookie or noise) the LIGHT_VOLUME
+   * settings are left out.
    */
   Choice Choose(double budget,
     double target,
@@ -63,7 +67,8 @@ public:
   double PredictRest(double pixels) const;
 
   /// A measured frame: its shafts took `shafts` seconds with `setting` at `factor`, the whole
-  /// frame `total` seconds.
+  /// frame `total` seconds. Learnt only when the frame before was measured with the same
+  /// setting and factor (the first after a change pays one-off costs).
   void Observe(int setting, int factor, double pixels, int lights, double shafts, double total);
 
   /// Whether anything has been measured.
@@ -72,11 +77,20 @@ public:
 private:
   static int FactorIndex(int factor);
   double LogScale() const;
+  /// Log seconds per (in-scatter pixel x lit light) of `setting` at `factor`, and in `trust`
+  /// (when given) the part of a budget its prediction may fill: MeasuredTrust,
+  /// ExtrapolatedTrust (the setting measured at another factor) or PriorTrust.
+  double LogCostOf(int setting, int factor, double* trust) const;
+  static constexpr double MeasuredTrust = 1.0;
+  static constexpr double ExtrapolatedTrust = 0.85;
+  static constexpr double PriorTrust = 0.6;
 
   /// Log seconds per (in-scatter pixel x lit light), per setting and factor; NaN: unmeasured.
   std::vector<std::array<double, 3>> LogCost;
   double LogRestPerPixel;
   int Measurements = 0;
+  int LastSetting = -1; ///< the setting and factor of the last frame observed
+  int LastFactor = 0;
 };
 
 #endif

@@ -11,6 +11,8 @@
 #                                      # (docs/budget.md)
 #   tools/measure.sh reprojection      # what carrying the picture to the next camera costs
 #                                      # (docs/reprojection.md)
+#   tools/measure.sh resolution-cost   # how the budget's settings' time follows the resolution
+#                                      # (the cost model's exponents; docs/budget.md)
 #   tools/measure.sh worst-corners     # the slider corners (docs/robustness.md)
 #   tools/measure.sh random-scenes     # 50 random scenes: presets, methods, targets, the
 #                                      # fitted ladder (TargetError's cost against the oracle)
@@ -51,6 +53,7 @@ case "$what" in
   refinement) run tests/benchmarks/refinement.py --output-dir docs "$@" ;;
   budget) run tests/benchmarks/budget.py --output-dir docs "$@" ;;
   reprojection) run tests/benchmarks/reprojection_bound.py --output docs/reprojection.md "$@" ;;
+  resolution-cost) run tests/benchmarks/resolution_cost.py "$@" ;;
   worst-corners) run tests/benchmarks/worst_corners.py "$@" ;;
   random-scenes)
     run tests/benchmarks/random_scenes.py --validation --seed 0 --scenes 50 --max-height 720 \

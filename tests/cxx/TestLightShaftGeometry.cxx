@@ -1,13 +1,16 @@
 // Unit tests of vtkLightShaftPass's geometry, on the CPU (no GL): polytope clipping, convex
 // hulls and polygon clipping, the camera frame, the light's bounding pyramid and caster
 // culling, the light camera, the lit volume, the slab footprints and their lattice, the
-// epipole and the epipolar lines.
+// epipole and the epipolar lines; and the budget's cost model.
 //
 // Usage: TestLightShaftGeometry
 
+#include "vtkLightShaftCostModel.h"
 #include "vtkLightShaftEpipolar.h"
+#include "vtkLightShaftErrorModel.h"
 #include "vtkLightShaftGeometry.h"
 #include "vtkLightShaftModel.h"
+#include "vtkLightShaftPass.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -453,6 +456,49 @@ void TestSegmentBudget()
 }
 }
 
+// The cost model: a setting measured at one resolution predicts the others by its method's
+// resolution exponent, so a budget can choose EPIPOLAR at full resolution after measuring it
+// at quarter resolution, where its time hardly depends on the pixels.
+void TestCostModel()
+{
+  using Model = vtkLightShaftCostModel;
+  const double pixels = 1280.0 * 720.0;
+  int epipolar = -1;
+  int rayMarch = -1;
+  for (int i = 0; i < vtkLightShaftErrorModel::GetNumberOfSettings(); ++i)
+  {
+    const int method = vtkLightShaftErrorModel::GetSetting(i).Method;
+    epipolar = (epipolar < 0 && method == vtkLightShaftPass::EPIPOLAR) ? i : epipolar;
+    rayMarch = (rayMarch < 0 && method == vtkLightShaftPass::RAY_MARCH) ? i : rayMarch;
+  }
+  Model model;
+  const double prior = model.PredictShafts(epipolar, 4, pixels, 1);
+  model.Observe(epipolar, 4, pixels, 1, 0.5, 0.6); // the first frame: one-off costs
+  Check(model.PredictShafts(epipolar, 4, pixels, 1) == prior && !model.HasMeasured(),
+    "the first frame of a setting is not learnt");
+  model.Observe(epipolar, 4, pixels, 1, 0.046, 0.056);
+  const double quarter = model.PredictShafts(epipolar, 4, pixels, 1);
+  Check(std::abs(quarter - 0.046) < 1e-9, "a measured cost is predicted as measured");
+  const double full = model.PredictShafts(epipolar, 1, pixels, 1);
+  Check(full > quarter && full < 2.0 * quarter,
+    "EPIPOLAR at full resolution costs about what it costs at quarter");
+  const double marchFull = model.PredictShafts(rayMarch, 1, pixels, 1);
+  const double marchQuarter = model.PredictShafts(rayMarch, 4, pixels, 1);
+  Check(marchFull > 2.0 * marchQuarter, "RAY_MARCH at full resolution costs more than at quarter");
+  Check(std::abs(model.PredictShafts(epipolar, 1, pixels, 2) - 2.0 * full) < 1e-9 * full,
+    "two lit lights cost twice one");
+  // Measured at full resolution too, that measurement wins.
+  model.Observe(epipolar, 1, pixels, 1, 0.3, 0.31);
+  model.Observe(epipolar, 1, pixels, 1, 0.055, 0.065);
+  Check(std::abs(model.PredictShafts(epipolar, 1, pixels, 1) - 0.055) < 1e-9,
+    "the measured full resolution is predicted as measured");
+  // A budget the full resolution fits chooses it.
+  const std::vector<vtkLightShaftErrorModel::Features> features(1);
+  const Model::Choice choice = model.Choose(0.0667, 0.0, features, true, pixels, 1);
+  Check(choice.DownsampleFactor == 1 && choice.Seconds <= 0.0667,
+    "a budget that fits EPIPOLAR at full resolution gets full resolution");
+}
+
 // The light's image: a point (in front of or behind the camera), a direction (parallel lines)
 // or undefined, for each light kind and camera.
 void TestEpipole()
@@ -640,6 +686,7 @@ int main()
   TestNoDegenerateTriangles();
   TestLatticeBudget();
   TestSegmentBudget();
+  TestCostModel();
   TestEpipole();
   TestEpipolarLayout();
   if (Failures > 0)

@@ -187,3 +187,12 @@ def test_reprojection_bound_smoke(tmp_path):
     for row in rows:
         errors = [float(cell.strip().rstrip("%")) for cell in row.split("|")[2:5]]
         assert all(0.0 <= e < 100.0 for e in errors)
+
+
+def test_resolution_cost_smoke():
+    script = os.path.join(os.path.dirname(BENCHMARK), "resolution_cost.py")
+    result = subprocess.run([sys.executable, script, "--size", "96", "54", "--frames", "1"],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    rows = [line for line in result.stdout.splitlines() if line.startswith("| ") and " ms |" in line]
+    assert len(rows) == 4
