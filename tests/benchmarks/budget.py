@@ -28,7 +28,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
 import render_helpers as rh  # noqa: E402
-from lightshafts import scenes, vtkLightShaftPass  # noqa: E402
+from lightshafts import vtkLightShaftPass  # noqa: E402
 from refinement import timed_render  # noqa: E402  (tests/benchmarks/refinement.py)
 
 STILL = {
@@ -45,12 +45,7 @@ def error_now(renderer, shafts):
 
 
 def run(args):
-    renderer, window = rh.make_window(*args.size)
-    scenes.window_room(renderer)
-    plain = rh.median_frame_time(window, 5, warm_up=30, warm_up_seconds=2.0)
-    shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05)
-    shafts.SetExposure(40.0)
+    renderer, window, plain, shafts = rh.window_scene(*args.size)
     still = STILL[args.still]
     if still is None:
         getattr(shafts, "SetQualityTo" + args.still)()

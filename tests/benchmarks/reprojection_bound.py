@@ -30,7 +30,6 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
 import render_helpers as rh  # noqa: E402
-from lightshafts import scenes, vtkLightShaftPass  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkFloatArray  # noqa: E402
 
@@ -47,11 +46,7 @@ class View:
 
     def __init__(self, width, height):
         self.size = (width, height)
-        self.renderer, self.window = rh.make_window(width, height)
-        scenes.window_room(self.renderer)
-        self.shafts = vtkLightShaftPass()
-        self.shafts.SetScatteringCoefficient(0.05)
-        self.shafts.SetExposure(40.0)
+        self.renderer, self.window, _, self.shafts = rh.window_scene(width, height)
         self.renderer.SetPass(self.shafts)
         self.window.Render()
 

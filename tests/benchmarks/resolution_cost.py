@@ -23,7 +23,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import render_helpers as rh  # noqa: E402
-from lightshafts import scenes, vtkLightShaftPass as P  # noqa: E402
+from lightshafts import vtkLightShaftPass as P  # noqa: E402
 
 SETTINGS = {  # the ladder's E16, E32, V256 and M128 (plugin/vtkLightShaftErrorModelTable.h)
     "E16 l128 s256 k8 m512": dict(Method=P.EPIPOLAR, NumberOfSteps=16, ShadowMapSize=512,
@@ -41,12 +41,7 @@ def main():
     parser.add_argument("--size", type=int, nargs=2, default=(1280, 720))
     parser.add_argument("--frames", type=int, default=5)
     args = parser.parse_args()
-    renderer, window = rh.make_window(*args.size)
-    scenes.window_room(renderer)
-    plain = rh.median_frame_time(window, 5, warm_up=30, warm_up_seconds=2.0)
-    shafts = P()
-    shafts.SetScatteringCoefficient(0.05)
-    shafts.SetExposure(40.0)
+    renderer, window, plain, shafts = rh.window_scene(*args.size)
     shafts.SetBlurRadius(0)
     renderer.SetPass(shafts)
     camera = renderer.GetActiveCamera()

@@ -277,6 +277,21 @@ def median_frame_time(window, frames, warm_up=1, warm_up_seconds=0.0):
     return statistics.median(samples)
 
 
+def window_scene(width, height):
+    """The README's window scene (scenes.window_room) at width x height, its settled plain
+    frame time (median of 5 after 30 frames and 2 s), and a vtkLightShaftPass with the README's
+    medium (σ_s 0.05, exposure 40), not yet set on the renderer:
+    (renderer, window, plain_seconds, shafts)."""
+    from lightshafts import scenes, vtkLightShaftPass
+    renderer, window = make_window(width, height)
+    scenes.window_room(renderer)
+    plain = median_frame_time(window, 5, warm_up=30, warm_up_seconds=2.0)
+    shafts = vtkLightShaftPass()
+    shafts.SetScatteringCoefficient(0.05)
+    shafts.SetExposure(40.0)
+    return renderer, window, plain, shafts
+
+
 def uniform_cookie(size=64, value=255):
     """A vtkTexture of one uniform grey level (a cookie that changes nothing but the cost)."""
     from vtkmodules.util.numpy_support import numpy_to_vtk
