@@ -211,6 +211,21 @@ vtkLightShaftPass* vtkPVLightShaftsView::GetLightShaftPass()
   return this->Impl->Shafts;
 }
 
+bool vtkPVLightShaftsView::GetRefinementConverged()
+{
+  return this->Impl->Shafts->GetLastRefinementConverged();
+}
+
+int vtkPVLightShaftsView::GetRefinementEstimates()
+{
+  return this->Impl->Shafts->GetLastRefinementEstimates();
+}
+
+double vtkPVLightShaftsView::GetLastTimeBudget()
+{
+  return this->Impl->Shafts->GetLastTimeBudget();
+}
+
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::UpdateImageProcessing()
 {

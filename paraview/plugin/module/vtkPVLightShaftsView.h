@@ -54,6 +54,17 @@ public:
 
   ///@{
   /**
+   * What the last render did (vtkLightShaftPass's GetLastRefinementConverged,
+   * GetLastRefinementEstimates, GetLastTimeBudget), for scripts: the view's information
+   * properties RefinementConverged, RefinementEstimates and LastTimeBudget.
+   */
+  bool GetRefinementConverged();
+  int GetRefinementEstimates();
+  double GetLastTimeBudget();
+  ///@}
+
+  ///@{
+  /**
    * Light shafts on or off. Off: the view renders exactly as a plain render view (tone mapping
    * included). Default is on.
    */

@@ -1,0 +1,69 @@
+"""pvbatch test: progressive refinement and the frame budget in a LightShaftsRenderView, as a
+script sees them through the view's information properties.
+
+  1. With ProgressiveRefinement and RefinementFrames 4, each still render adds one estimate
+     (RefinementEstimates 1, 2, 3, 4) and the fourth is converged (RefinementConverged 1);
+     later renders keep it. No budget applies to a still render (LastTimeBudget 0).
+  2. An interactive render (what ParaView's interaction renders) follows the interaction's
+     budget: LastTimeBudget 1/15 s, the render window's interactive update rate.
+  3. The still render after it refines again from one estimate and converges.
+Usage: pvbatch test_refinement.py OUTPUT_DIR
+"""
+
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import lightshafts_pvscene as scene  # noqa: E402
+
+
+def read_out(view):
+    view.UpdatePropertyInformation()
+    return (view.GetPropertyValue("RefinementEstimates"),
+            view.GetPropertyValue("RefinementConverged"),
+            view.GetPropertyValue("LastTimeBudget"))
+
+
+def refine(view, failures, label):
+    """Still renders until converged; the estimates seen after each."""
+    from paraview import simple
+    seen = []
+    for _ in range(6):
+        simple.Render(view)
+        estimates, converged, budget = read_out(view)
+        seen.append(estimates)
+        if budget != 0.0:
+            failures.append(f"{label}: a still render followed a budget of {budget} s")
+        if converged:
+            break
+    print(f"{label}: estimates {seen}")
+    if seen != [1, 2, 3, 4]:
+        failures.append(f"{label}: estimates {seen}, not [1, 2, 3, 4] then converged")
+
+
+def main():
+    from paraview import simple
+    scene.load_plugin()
+    view, _, _ = scene.make_scene(ShaftMethod="Ray March")
+    view.ProgressiveRefinement = 1
+    view.RefinementFrames = 4
+    failures = []
+    refine(view, failures, "still")
+    simple.Render(view)
+    estimates, converged, _ = read_out(view)
+    if (estimates, converged) != (4, 1):
+        failures.append(f"a converged view rendered again: estimates {estimates}, "
+                        f"converged {converged}")
+
+    view.SMProxy.InteractiveRender()
+    _, _, budget = read_out(view)
+    print(f"interactive render: budget {budget:.4f} s")
+    if abs(budget - 1.0 / 15.0) > 1e-6:
+        failures.append(f"the interactive render followed a budget of {budget} s, not 1/15 s")
+
+    refine(view, failures, "still after the interaction")
+    return scene.report(failures)
+
+
+if __name__ == "__main__":
+    scene.finish(main())
