@@ -152,9 +152,10 @@ double vtkLightShaftCostModel::LogCostOf(int setting, int factor, double* trust)
 double vtkLightShaftCostModel::PredictShafts(int setting,
   int factor,
   double pixels,
-  int lights) const
+  int lights,
+  double* trust) const
 {
-  return std::exp(this->LogCostOf(setting, factor, nullptr)) * pixels / (factor * factor) *
+  return std::exp(this->LogCostOf(setting, factor, trust)) * pixels / (factor * factor) *
          std::max(lights, 1);
 }
 
@@ -184,10 +185,11 @@ vtkLightShaftCostModel::Choice vtkLightShaftCostModel::Choose(double budget,
       {
         continue;
       }
-      double trust = 1.0;
-      const double shafts = std::exp(this->LogCostOf(i, factor, &trust)) * pixels /
-                            (factor * factor) * std::max(lights, 1);
-      Choice candidate{ i, factor, rest + shafts, vtkLightShaftErrorModel::Predict(i, features) };
+      double trust = MeasuredTrust;
+      Choice candidate{ i,
+        factor,
+        rest + this->PredictShafts(i, factor, pixels, lights, &trust),
+        vtkLightShaftErrorModel::Predict(i, features) };
       if (cheapest.Setting < 0 || candidate.Seconds < cheapest.Seconds)
       {
         cheapest = candidate;

@@ -61,8 +61,13 @@ public:
     double pixels,
     int lights) const;
 
-  /// Predicted seconds of the shafts alone with `setting` at `factor`.
-  double PredictShafts(int setting, int factor, double pixels, int lights) const;
+  /// Predicted seconds of the shafts alone with `setting` at `factor`; in `trust` (when given)
+  /// the part of a budget the prediction may fill (see LogCostOf).
+  double PredictShafts(int setting,
+    int factor,
+    double pixels,
+    int lights,
+    double* trust = nullptr) const;
   /// Predicted seconds of the rest of the frame (scene, composite) for `pixels`.
   double PredictRest(double pixels) const;
 

@@ -80,7 +80,7 @@ struct vtkLightShaftStatistics
 {
   int SlabBatches = 0;
   int LatticeResolution = 0;
-  int NumberOfSteps = 0; ///< RAY_MARCH's steps after the segment budget (the fewest of the lights)
+  int NumberOfSteps = 0; ///< RAY_MARCH's and EPIPOLAR's steps after the segment budget (fewest)
   int PostPasses = 0;
   int SceneRenders = 0;
   int RenderedProps = 0;

@@ -75,6 +75,14 @@ bool vtkLightShaftMethod::PrepareMarch(vtkLightShaftFrame& frame,
 }
 
 //------------------------------------------------------------------------------
+bool vtkLightShaftMethod::SayReduction(bool reduced, bool& warned)
+{
+  const bool say = reduced && !warned;
+  warned = reduced;
+  return say;
+}
+
+//------------------------------------------------------------------------------
 std::string vtkLightShaftMethod::SharedBy(const vtkLightShaftFrame& frame)
 {
   return frame.RadiatingLights > 1
@@ -102,18 +110,13 @@ int vtkLightShaftMethod::SamplesWithinBudget(vtkLightShaftFrame& frame,
     rays >= 0 ? rays : static_cast<long long>(frame.Reduced[0]) * frame.Reduced[1];
   const int affordable =
     vtkLightShaftGeometry::AffordableSamples(requested, pixels, frame.RadiatingLights);
-  if (affordable == requested)
-  {
-    this->WarnedSegmentBudget = false;
-  }
-  else if (!this->WarnedSegmentBudget)
+  if (SayReduction(affordable != requested, this->WarnedSegmentBudget))
   {
     vtkWarningWithObjectMacro(frame.Owner,
       "" << name << " " << requested << " over " << pixels
          << (rays >= 0 ? " rays" : " in-scatter pixels") << " would be " << requested * pixels
          << " segments in a frame, more than the " << vtkLightShaftGeometry::SegmentBudget
          << " allowed" << SharedBy(frame) << ": using " << affordable << ".");
-    this->WarnedSegmentBudget = true;
   }
   return affordable;
 }

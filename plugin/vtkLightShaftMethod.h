@@ -103,6 +103,10 @@ protected:
     int requested,
     long long rays = -1);
 
+  /// Whether a reduction should be said now: `reduced` this frame and not the frame before
+  /// (`warned` keeps that), so one warning until the request fits again.
+  static bool SayReduction(bool reduced, bool& warned);
+
   /// " (shared by N lights)" when the frame's budgets are shared by N > 1 lights, else "".
   static std::string SharedBy(const vtkLightShaftFrame& frame);
 

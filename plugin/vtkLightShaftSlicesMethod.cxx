@@ -66,11 +66,7 @@ int vtkLightShaftSlicesMethod::LatticeWithinBudget(vtkLightShaftFrame& frame, in
   const int requested = frame.Parameters.LatticeResolution;
   const int affordable =
     vtkLightShaftGeometry::AffordableLattice(requested, slabs, frame.RadiatingLights);
-  if (affordable == requested)
-  {
-    this->WarnedLatticeBudget = false;
-  }
-  else if (!this->WarnedLatticeBudget)
+  if (SayReduction(affordable != requested, this->WarnedLatticeBudget))
   {
     vtkWarningWithObjectMacro(frame.Owner,
       "LatticeResolution " << requested << " over " << slabs << " slabs would be "
@@ -79,7 +75,6 @@ int vtkLightShaftSlicesMethod::LatticeWithinBudget(vtkLightShaftFrame& frame, in
                            << vtkLightShaftGeometry::LatticeCellBudget << " allowed"
                            << SharedBy(frame) << ": using a lattice of " << affordable
                            << " (GetLastLatticeResolution).");
-    this->WarnedLatticeBudget = true;
   }
   return affordable;
 }
