@@ -64,6 +64,15 @@ else
   unpack_python3_paraview=0
   paraview_packages+=(python3-paraview)
 fi
+# Qt's development files, for the plugin's GUI piece (in the ParaView client, a still view renders
+# again by itself until its shafts converge), in the Qt that this release's ParaView is built
+# with: Qt 5 for ParaView 5.11 (Debian 12), Qt 6 from 5.13.
+paraview_depends=$(apt_field paraview Depends)
+if echo "$paraview_depends" | grep -qw "libqt6widgets6"; then
+  paraview_packages+=(qt6-base-dev qt6-tools-dev qt6-5compat-dev)
+elif echo "$paraview_depends" | grep -qw "libqt5widgets5"; then
+  paraview_packages+=(qtbase5-dev qttools5-dev libqt5opengl5-dev)
+fi
 missing=($(missing_packages "${packages[@]}"))
 missing_paraview=($(missing_packages "${paraview_packages[@]}"))
 if [ $((${#missing[@]} + ${#missing_paraview[@]})) -gt 0 ]; then

@@ -146,7 +146,9 @@ public:
   ///@{
   /**
    * Interaction (forwarded to vtkLightShaftPass: SetTimeBudget, SetUseAllocatedRenderTime,
-   * SetProgressiveRefinement, SetRefinementFrames; same ranges and defaults).
+   * SetProgressiveRefinement, SetRefinementFrames; same ranges and defaults, except that the
+   * view's ProgressiveRefinement property is on by default: the GUI's pqLightShaftsRefinement
+   * renders a still view until it converges).
    */
   void SetTimeBudget(double seconds);
   void SetUseAllocatedRenderTime(bool use);
