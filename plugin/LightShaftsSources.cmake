@@ -4,6 +4,7 @@ set(lightshafts_private_classes
   vtkLightShaftAnalyticMethod
   vtkLightShaftComposite
   vtkLightShaftCostModel
+  vtkLightShaftDensityField
   vtkLightShaftEpipolar
   vtkLightShaftEpipolarMethod
   vtkLightShaftErrorModel

@@ -2,6 +2,7 @@
 #include "vtkLightShaftPassInternals.h"
 
 #include "vtkLightShaftComposite.h"
+#include "vtkLightShaftDensityField.h"
 #include "vtkLightShaftErrorModel.h"
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftGeometry.h"
@@ -228,6 +229,68 @@ void vtkLightShaftPass::SetAbsorptionCoefficient(const double rgb[3])
 void vtkLightShaftPass::SetAbsorptionCoefficient(double grey)
 {
   this->SetAbsorptionCoefficient(grey, grey, grey);
+}
+
+void vtkLightShaftPass::SetMediumDensity(vtkImageData* density)
+{
+  vtkLightShaftDensityField field;
+  const std::string why =
+    density ? field.Read(density, this->Impl->MediumDensityArrayName.c_str()) : "";
+  if (!why.empty())
+  {
+    vtkErrorMacro("MediumDensity: the image " << why << "; the previous density field is kept.");
+    return;
+  }
+  if (this->Impl->MediumDensity != density)
+  {
+    this->Impl->MediumDensity = density;
+    this->Modified();
+  }
+}
+
+vtkImageData* vtkLightShaftPass::GetMediumDensity()
+{
+  return this->Impl->MediumDensity;
+}
+
+void vtkLightShaftPass::SetMediumDensityArrayName(const char* name)
+{
+  const std::string wanted = name ? name : "";
+  vtkLightShaftDensityField field;
+  vtkImageData* density = this->Impl->MediumDensity;
+  const std::string why = density ? field.Read(density, wanted.c_str()) : "";
+  if (!why.empty())
+  {
+    vtkErrorMacro(
+      "MediumDensityArrayName: the density image " << why << "; the previous name is kept.");
+    return;
+  }
+  if (this->Impl->MediumDensityArrayName != wanted)
+  {
+    this->Impl->MediumDensityArrayName = wanted;
+    this->Modified();
+  }
+}
+
+const char* vtkLightShaftPass::GetMediumDensityArrayName()
+{
+  return this->Impl->MediumDensityArrayName.c_str();
+}
+
+void vtkLightShaftPass::SetMediumDensityScale(double scale)
+{
+  SetClamped(
+    this, "MediumDensityScale", &this->MediumDensityScale, { scale }, 0.0, MaximumCoefficient);
+}
+
+void vtkLightShaftPass::SetMediumBackgroundDensity(double density)
+{
+  SetClamped(this,
+    "MediumBackgroundDensity",
+    &this->MediumBackgroundDensity,
+    { density },
+    0.0,
+    MaximumCoefficient);
 }
 
 void vtkLightShaftPass::SetAnisotropy(double g)
@@ -630,6 +693,13 @@ bool vtkLightShaftPass::Internals::BeginFrame(vtkLightShaftPass& self,
   frame.Reduced[1] = (frame.Size[1] + factor - 1) / factor;
   frame.Medium = vtkLightShaftModel::DescribeMedium(
     self.ScatteringCoefficient, self.AbsorptionCoefficient, self.PhaseFunction, self.Anisotropy);
+  if (this->MediumDensity && !this->WarnedMediumDensity)
+  {
+    vtkWarningWithObjectMacro(&self,
+      "MediumDensity: no method of the pass renders a density field yet (vtkLightShaftReference "
+      "integrates it); the shafts use the homogeneous medium.");
+    this->WarnedMediumDensity = true;
+  }
 
   // The scene camera, exactly as the mappers see it.
   auto* camera = vtkOpenGLCamera::SafeDownCast(frame.Renderer->GetActiveCamera());

@@ -208,6 +208,34 @@ public:
 
   ///@{
   /**
+   * A medium from data: sigma_s and sigma_a at x are scaled by MediumBackgroundDensity +
+   * MediumDensityScale * rho(x), rho the first component of the named array (point or cell
+   * data; the scalars when no name), trilinear inside the image's bounds (placed by its origin,
+   * spacing and direction matrix) and 0 outside (README, "A medium from data"). An image that
+   * cannot be one (no such array, not 3D, over 2^27 samples, NaN or negative values) is refused
+   * with an error saying why; the previous field is kept. vtkLightShaftReference integrates the
+   * field exactly; the pass's methods do not render it yet (one warning: the shafts keep the
+   * homogeneous medium). Default is nullptr (homogeneous) and no name.
+   */
+  void SetMediumDensity(vtkImageData* density);
+  vtkImageData* GetMediumDensity();
+  void SetMediumDensityArrayName(const char* name);
+  const char* GetMediumDensityArrayName();
+  ///@}
+
+  ///@{
+  /**
+   * The field's scale and the density added everywhere (also outside the field), each in
+   * [0, 1e6]; non-finite values are refused. Default is 1 and 0.
+   */
+  void SetMediumDensityScale(double scale);
+  vtkGetMacro(MediumDensityScale, double);
+  void SetMediumBackgroundDensity(double density);
+  vtkGetMacro(MediumBackgroundDensity, double);
+  ///@}
+
+  ///@{
+  /**
    * Phase function: ISOTROPIC, HENYEY_GREENSTEIN or RAYLEIGH (values outside are clamped).
    * Default is ISOTROPIC.
    */
@@ -878,6 +906,8 @@ protected:
   // Parameters.
   double ScatteringCoefficient[3] = { 0.1, 0.1, 0.1 };
   double AbsorptionCoefficient[3] = { 0.0, 0.0, 0.0 };
+  double MediumDensityScale = 1.0;
+  double MediumBackgroundDensity = 0.0;
   int PhaseFunction = ISOTROPIC;
   double Anisotropy = 0.0;
   double Exposure = 1.0;

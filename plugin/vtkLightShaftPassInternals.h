@@ -22,6 +22,7 @@
 #include "vtkLightShaftSurfaceLight.h"  // For the surface light
 
 #include "vtkCallbackCommand.h"         // For the window's deletion
+#include "vtkImageData.h"               // For the medium's density
 #include "vtkNew.h"                     // For vtkNew
 #include "vtkOpenGLFramebufferObject.h" // For the read-back framebuffer
 #include "vtkOpenGLRenderWindow.h"      // For the window
@@ -43,6 +44,9 @@ public:
   vtkNew<vtkCallbackCommand> WindowDeleted;
   unsigned long WindowDeletedTag = 0;
   bool WarnedPointCookie = false;
+  vtkSmartPointer<vtkImageData> MediumDensity; ///< SetMediumDensity's image (checked when set)
+  std::string MediumDensityArrayName;
+  bool WarnedMediumDensity = false;
   int FrameCounter = 0;
 
   // The components, in the order a frame uses them.

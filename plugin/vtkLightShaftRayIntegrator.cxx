@@ -1,6 +1,7 @@
 #include "vtkLightShaftRayIntegrator.h"
 
 #include "vtkLight.h"
+#include "vtkLightShaftDensityField.h"
 #include "vtkLightShaftModel.h"
 #include "vtkLightShaftNoise.h"
 #include "vtkLightShaftPass.h"
@@ -282,9 +283,23 @@ bool Model::Equiangular() const
   return !this->Directional() && this->FallingAttenuation();
 }
 
+double Model::Density(const Vec& x) const
+{
+  return this->Field ? this->BackgroundDensity + this->DensityScale * this->Field->Density(x.data())
+                     : 1.0;
+}
+
+double Model::OpticalDepth(const Vec& a, const Vec& b) const
+{
+  const double length = Norm(b - a);
+  return this->Field ? this->BackgroundDensity * length +
+                         this->DensityScale * this->Field->Integral(a.data(), b.data())
+                     : length;
+}
+
 bool Model::ClosedFormsHold() const
 {
-  if (!this->Cookie.empty() || !this->Noise.empty())
+  if (!this->Cookie.empty() || !this->Noise.empty() || this->Field)
   {
     return false;
   }
@@ -332,18 +347,33 @@ RGB Model::Integrand(const Vec& origin, const Vec& dir, double t) const
     }
     factor /= this->Attenuation[0] + r * (this->Attenuation[1] + this->Attenuation[2] * r);
   }
-  const double scalar = this->PhaseValue(-Dot(dir, lightDir)) * factor;
+  double scalar = this->PhaseValue(-Dot(dir, lightDir)) * factor;
+  // The optical depth of both legs in units of sigma_t: the eye (origin) to x, and x to the
+  // light (a directional light: back along its direction to its plane).
+  double depth = r + t;
+  if (this->Field)
+  {
+    scalar *= this->Density(x);
+    if (scalar == 0.0)
+    {
+      return out;
+    }
+    const Vec source = this->Directional() ? x - r * this->Axis : this->Light;
+    depth = this->OpticalDepth(origin, x) + this->OpticalDepth(x, source);
+  }
   const RGB modulation = this->Modulation(x);
   for (int c = 0; c < 3; ++c)
   {
     out[c] = this->SigmaS[c] * this->Intensity[c] * scalar * modulation[c] *
-             std::exp(-this->SigmaT[c] * (r + t));
+             std::exp(-this->SigmaT[c] * depth);
   }
   return out;
 }
 
 //------------------------------------------------------------------------------
-Model MakeModel(vtkLight* light, vtkLightShaftPass* pass)
+Model MakeModel(vtkLight* light,
+  vtkLightShaftPass* pass,
+  std::shared_ptr<const vtkLightShaftDensityField> field)
 {
   const vtkLightShaftModel::Light described = vtkLightShaftModel::DescribeLight(light);
   const vtkLightShaftModel::Medium medium =
@@ -366,6 +396,12 @@ Model MakeModel(vtkLight* light, vtkLightShaftPass* pass)
   }
   model.Phase = medium.Phase;
   model.Anisotropy = medium.Anisotropy;
+  if (field && !field->Empty())
+  {
+    model.Field = std::move(field);
+    model.DensityScale = pass->GetMediumDensityScale();
+    model.BackgroundDensity = pass->GetMediumBackgroundDensity();
+  }
   model.Right = ToVec(described.Right);
   model.Up = ToVec(described.Up);
   model.SquareTangent = described.SquareTangent;
@@ -680,6 +716,26 @@ Result IntegrateRay(const Model& model,
 
   std::vector<std::pair<double, double>> lit =
     FindLitPieces(visible, toT, origin, dir, toU(t0), toU(t1), samples);
+  if (model.Field)
+  {
+    // Split where the density stops being one cubic along the ray (its sample planes).
+    std::vector<std::pair<double, double>> split;
+    for (const auto& piece : lit)
+    {
+      std::vector<double> breaks;
+      model.Field->Breakpoints(
+        origin.data(), dir.data(), toT(piece.first), toT(piece.second), breaks);
+      double start = piece.first;
+      for (double t : breaks)
+      {
+        const double u = std::min(std::max(toU(t), start), piece.second);
+        split.emplace_back(start, u);
+        start = u;
+      }
+      split.emplace_back(start, piece.second);
+    }
+    lit.swap(split);
+  }
   if (!angle && !model.Directional())
   {
     // In t, split at the point closest to the light (the phase function's and A's peak).

@@ -14,9 +14,11 @@
 #include <array>      // For Vec and RGB
 #include <cmath>      // For std::sqrt
 #include <functional> // For the visibility and integrand callbacks
+#include <memory>     // For the density field shared by the lights' models
 #include <vector>     // For the cookie and noise texels
 
 class vtkLight;
+class vtkLightShaftDensityField;
 class vtkLightShaftPass;
 
 namespace vtkLightShaftRayIntegrator
@@ -103,6 +105,12 @@ struct Model
   double NoiseAmplitude = 0.0;
   double NoiseScale = 1.0;
   double NoiseShift[4] = { 0.0, 0.0, 0.0, 0.0 };
+  /// A medium from data (null: homogeneous): sigma_s and sigma_t at x are scaled by
+  /// Density(x) = BackgroundDensity + DensityScale * rho(x), and the extinction of both legs
+  /// is sigma_t times the exact integral of Density along them.
+  std::shared_ptr<const vtkLightShaftDensityField> Field;
+  double DensityScale = 1.0;
+  double BackgroundDensity = 0.0;
 
   bool Directional() const { return this->Kind == vtkLightShaftModel::LightKind::Directional; }
   /// r at x: the distance from the light, or from a directional light's plane (signed).
@@ -115,14 +123,18 @@ struct Model
    */
   RGB Modulation(const Vec& x) const;
   double PhaseValue(double cosTheta) const;
+  /// The medium's density at x (1 without a field).
+  double Density(const Vec& x) const;
+  /// The integral of Density along the segment from a to b (its length without a field).
+  double OpticalDepth(const Vec& a, const Vec& b) const;
   bool FallingAttenuation() const;
   /// Whether the ray is integrated in the equiangular angle about the light: A falls off (so
   /// never for a directional light).
   bool Equiangular() const;
   /**
-   * Whether the closed forms hold: no cookie and no noise, and for a spot or point light a
-   * plain cone or none (exponent 0), isotropic phase and A = 1 / r^2 ((A), (B)); a directional
-   * light's unshadowed integral is exact for any phase (theta is constant).
+   * Whether the closed forms hold: no cookie, no noise and no density field, and for a spot or
+   * point light a plain cone or none (exponent 0), isotropic phase and A = 1 / r^2 ((A), (B)); a
+   * directional light's unshadowed integral is exact for any phase (theta is constant).
    */
   bool ClosedFormsHold() const;
   /// The integrand at parameter t of the ray origin + t dir (visibility excluded).
@@ -137,7 +149,9 @@ private:
  * reads and lays them out (level 0 of their images, bilinear; the pass pre-filters by
  * footprint, which differs only where the texture varies within a pixel's footprint).
  */
-Model MakeModel(vtkLight* light, vtkLightShaftPass* pass);
+Model MakeModel(vtkLight* light,
+  vtkLightShaftPass* pass,
+  std::shared_ptr<const vtkLightShaftDensityField> field = nullptr);
 
 /**
  * The parameter interval of origin + t dir where the light shines (t0 > t1: none; infinite

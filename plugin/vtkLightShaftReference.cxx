@@ -7,6 +7,7 @@
 #include "vtkInformationVector.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkLightShaftDensityField.h"
 #include "vtkLightShaftModel.h"
 #include "vtkLightShaftPass.h"
 #include "vtkLightShaftRayIntegrator.h"
@@ -281,11 +282,22 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
   {
     given.push_back(pass->GetLight(i));
   }
+  std::shared_ptr<vtkLightShaftDensityField> field;
+  if (vtkImageData* density = pass->GetMediumDensity())
+  {
+    field = std::make_shared<vtkLightShaftDensityField>();
+    const std::string why = field->Read(density, pass->GetMediumDensityArrayName());
+    if (!why.empty())
+    {
+      vtkErrorMacro("MediumDensity: the image " << why << ".");
+      return 0;
+    }
+  }
   std::vector<Model> models;
   std::vector<vtkLight*> used;
   for (vtkLight* light : vtkLightShaftModel::FindLights(given, ren))
   {
-    models.push_back(MakeModel(light, pass));
+    models.push_back(MakeModel(light, pass, field));
     used.push_back(light);
   }
   this->LastNumberOfLights = static_cast<int>(models.size());

@@ -6,6 +6,9 @@ the model that vtkLightShaftPass documents, summed over the lights:
     L_in = sum over lights of
            int_0^{t_s} sigma_s p(cos theta) I S(x) A(r) V(x) exp(-sigma_t r) exp(-sigma_t t) dt
 
+(with an analytic density rho (Medium.density): sigma_s rho(x) in front, and sigma_t times the
+integrals of rho along both legs in the exponent)
+
 for an analytic scene made of spheres and finite horizontal floors (both stop view rays and cast
 shadows), lit by spotlights, point lights and directional lights. Nothing here uses the pass or
 VTK's matrices: rays come from the camera's position, focal point, view-up,
@@ -99,6 +102,11 @@ class Medium:
     absorption: tuple = (0.0, 0.0, 0.0)
     phase: int = ISOTROPIC
     anisotropy: float = 0.0
+    # Optional analytic density (vtkLightShaftPass::SetMediumDensity's rho, scaled and with its
+    # background): density(x) -> (n,) for points (n, 3) scales sigma_s and sigma_t at x, and
+    # optical_depth(a, b) -> (n,) is its exact integral along the segments a -> b.
+    density: object = None
+    optical_depth: object = None
 
 
 @dataclass
@@ -448,7 +456,14 @@ def _integrate_pieces(eye, dirs, t0, t1, light, medium, panels):
                     factor = factor * np.clip(ldir @ axis, 0.0, 1.0) ** light.exponent
             cos_theta = -_dot(dirs, ldir)
             scalar = _phase(cos_theta, medium) * factor * jac * weight * half
-            term = scalar[..., None] * np.exp(-sigma_t * (r + t)[..., None])
+            depth = r + t
+            if medium.density is not None:
+                # Both legs through the field: eye to x, x to the light (or its plane).
+                source = x - r[..., None] * axis if directional else np.broadcast_to(lpos, x.shape)
+                scalar = scalar * medium.density(x)
+                depth = (medium.optical_depth(np.broadcast_to(eye, x.shape), x) +
+                         medium.optical_depth(x, source))
+            term = scalar[..., None] * np.exp(-sigma_t * depth[..., None])
             if cookie is not None:
                 u, v = cookie_uv(light, x)
                 if directional:

@@ -1,0 +1,312 @@
+#include "vtkLightShaftDensityField.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkPointData.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace
+{
+// The array rho is read from: the named one (points, then cells), else the scalars.
+vtkDataArray* DensityArray(vtkImageData* image, const char* name, bool& cells, std::string& why)
+{
+  vtkDataArray* array = nullptr;
+  if (name && *name)
+  {
+    array = image->GetPointData()->GetArray(name);
+    cells = !array;
+    if (!array)
+    {
+      array = image->GetCellData()->GetArray(name);
+    }
+    if (!array)
+    {
+      why = std::string("has no numeric point or cell array named \"") + name + "\"";
+    }
+    return array;
+  }
+  array = image->GetPointData()->GetScalars();
+  cells = !array;
+  if (!array)
+  {
+    array = image->GetCellData()->GetScalars();
+  }
+  if (!array)
+  {
+    why = "has no point or cell scalars (name the array with SetMediumDensityArrayName)";
+  }
+  return array;
+}
+
+bool Finite3(const double v[3])
+{
+  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+}
+}
+
+//------------------------------------------------------------------------------
+std::string vtkLightShaftDensityField::Read(vtkImageData* image, const char* arrayName)
+{
+  if (!image)
+  {
+    return "is null";
+  }
+  int points[3];
+  image->GetDimensions(points);
+  if (points[0] < 2 || points[1] < 2 || points[2] < 2)
+  {
+    std::ostringstream why;
+    why << "is not a 3D image (" << points[0] << " x " << points[1] << " x " << points[2]
+        << " points; a density field needs at least 2 along each axis)";
+    return why.str();
+  }
+  bool cells = false;
+  std::string why;
+  vtkDataArray* array = DensityArray(image, arrayName, cells, why);
+  if (!array)
+  {
+    return why;
+  }
+  int samples[3];
+  std::size_t count = 1;
+  for (int k = 0; k < 3; ++k)
+  {
+    samples[k] = cells ? points[k] - 1 : points[k];
+    count *= static_cast<std::size_t>(samples[k]);
+  }
+  if (count > MaximumSamples)
+  {
+    std::ostringstream text;
+    text << "has " << count << " samples, more than the " << MaximumSamples
+         << " (512^3) a density field may have (resample it, e.g. with vtkImageResample)";
+    return text.str();
+  }
+  if (static_cast<std::size_t>(array->GetNumberOfTuples()) != count)
+  {
+    return std::string("array \"") + (array->GetName() ? array->GetName() : "") +
+           "\" has a number of values that does not match the image's dimensions";
+  }
+
+  // Placement: x = origin + D S (p + extent start) for point index p.
+  double spacing[3];
+  double origin[3];
+  image->GetSpacing(spacing);
+  image->GetOrigin(origin);
+  double indexToWorld[9];
+  vtkMatrix3x3* direction = image->GetDirectionMatrix();
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      indexToWorld[3 * r + c] = direction->GetElement(r, c) * spacing[c];
+    }
+  }
+  const double determinant = vtkMatrix3x3::Determinant(indexToWorld);
+  if (!Finite3(spacing) || !Finite3(origin) || !std::isfinite(determinant) ||
+      std::abs(determinant) < 1e-300)
+  {
+    return "has a spacing, origin or direction matrix that is not finite or not invertible";
+  }
+
+  std::vector<float> values(count);
+  double maximum = 0.0;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const double value = array->GetComponent(static_cast<vtkIdType>(i), 0);
+    if (!std::isfinite(value) || value < 0.0)
+    {
+      std::ostringstream text;
+      text << "has the value " << value << " at index " << i
+           << " (a density must be finite and not negative)";
+      return text.str();
+    }
+    values[i] = static_cast<float>(value);
+    maximum = std::max(maximum, static_cast<double>(values[i]));
+  }
+
+  double worldToIndex[9];
+  vtkMatrix3x3::Invert(indexToWorld, worldToIndex);
+  const int* extent = image->GetExtent();
+  for (int r = 0; r < 3; ++r)
+  {
+    this->Origin[r] = origin[r];
+    for (int c = 0; c < 3; ++c)
+    {
+      this->Origin[r] += indexToWorld[3 * r + c] * extent[2 * c];
+      this->WorldToIndex[r][c] = worldToIndex[3 * r + c];
+    }
+    this->Samples[r] = samples[r];
+    this->Points[r] = points[r];
+  }
+  this->CellCentred = cells;
+  this->Maximum = maximum;
+  this->Values.swap(values);
+  return "";
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftDensityField::ToIndex(const double x[3], double p[3]) const
+{
+  const double d[3] = { x[0] - this->Origin[0], x[1] - this->Origin[1], x[2] - this->Origin[2] };
+  for (int r = 0; r < 3; ++r)
+  {
+    p[r] = this->WorldToIndex[r][0] * d[0] + this->WorldToIndex[r][1] * d[1] +
+           this->WorldToIndex[r][2] * d[2];
+  }
+}
+
+double vtkLightShaftDensityField::Density(const double x[3]) const
+{
+  double p[3];
+  this->ToIndex(x, p);
+  return this->DensityAtIndex(p);
+}
+
+double vtkLightShaftDensityField::DensityAtIndex(const double p[3]) const
+{
+  if (this->Values.empty())
+  {
+    return 0.0;
+  }
+  int base[3];
+  double fraction[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    if (!(p[k] >= 0.0 && p[k] <= this->Points[k] - 1))
+    {
+      return 0.0; // outside the bounds (or not a number)
+    }
+    // Sample coordinate: points sit at the samples; cell centres half a cell further on.
+    const double c = std::min(std::max(this->CellCentred ? p[k] - 0.5 : p[k], 0.0),
+      static_cast<double>(this->Samples[k] - 1));
+    base[k] = std::min(static_cast<int>(c), std::max(this->Samples[k] - 2, 0));
+    fraction[k] = c - base[k];
+  }
+  const std::size_t nx = this->Samples[0];
+  const std::size_t nxy = nx * this->Samples[1];
+  double sum = 0.0;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    double weight = 1.0;
+    std::size_t index = 0;
+    const std::size_t stride[3] = { 1, nx, nxy };
+    for (int k = 0; k < 3; ++k)
+    {
+      const int step = (corner >> k) & 1;
+      if (step && this->Samples[k] == 1)
+      {
+        weight = 0.0; // (a single sample along an axis: no second corner)
+        break;
+      }
+      weight *= step ? fraction[k] : 1.0 - fraction[k];
+      index += stride[k] * static_cast<std::size_t>(base[k] + step);
+    }
+    if (weight != 0.0)
+    {
+      sum += weight * this->Values[index];
+    }
+  }
+  return sum;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftDensityField::IndexBreakpoints(const double pa[3],
+  const double pb[3],
+  std::vector<double>& s) const
+{
+  const double shift = this->CellCentred ? 0.5 : 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double delta = pb[k] - pa[k];
+    if (delta == 0.0)
+    {
+      continue;
+    }
+    auto add = [&](double plane)
+    {
+      const double at = (plane - pa[k]) / delta;
+      if (at > 0.0 && at < 1.0)
+      {
+        s.push_back(at);
+      }
+    };
+    add(0.0);
+    add(this->Points[k] - 1.0);
+    // The sample planes inside the bounds crossed by the segment.
+    const double lo = std::max(std::min(pa[k], pb[k]) - shift, 0.0);
+    const double hi = std::min(std::max(pa[k], pb[k]) - shift, this->Samples[k] - 1.0);
+    for (double plane = std::ceil(lo); plane <= hi; plane += 1.0)
+    {
+      add(plane + shift);
+    }
+  }
+  std::sort(s.begin(), s.end());
+}
+
+double vtkLightShaftDensityField::Integral(const double a[3], const double b[3]) const
+{
+  if (this->Values.empty())
+  {
+    return 0.0;
+  }
+  double pa[3];
+  double pb[3];
+  this->ToIndex(a, pa);
+  this->ToIndex(b, pb);
+  const double length = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+  std::vector<double> s{ 0.0 };
+  this->IndexBreakpoints(pa, pb, s);
+  s.push_back(1.0);
+  // Two-point Gauss-Legendre per piece: exact for the cubic rho is along a line in one cell.
+  const double node = 0.5 / std::sqrt(3.0);
+  double sum = 0.0;
+  for (std::size_t i = 0; i + 1 < s.size(); ++i)
+  {
+    const double width = s[i + 1] - s[i];
+    if (width <= 0.0)
+    {
+      continue;
+    }
+    const double mid = 0.5 * (s[i] + s[i + 1]);
+    double pieceSum = 0.0;
+    for (double at : { mid - node * width, mid + node * width })
+    {
+      const double p[3] = {
+        pa[0] + at * (pb[0] - pa[0]), pa[1] + at * (pb[1] - pa[1]), pa[2] + at * (pb[2] - pa[2])
+      };
+      pieceSum += this->DensityAtIndex(p);
+    }
+    sum += 0.5 * width * pieceSum;
+  }
+  return sum * length;
+}
+
+void vtkLightShaftDensityField::Breakpoints(const double origin[3],
+  const double dir[3],
+  double t0,
+  double t1,
+  std::vector<double>& breaks) const
+{
+  if (this->Values.empty() || !(t1 > t0))
+  {
+    return;
+  }
+  const double a[3] = { origin[0] + t0 * dir[0], origin[1] + t0 * dir[1], origin[2] + t0 * dir[2] };
+  const double b[3] = { origin[0] + t1 * dir[0], origin[1] + t1 * dir[1], origin[2] + t1 * dir[2] };
+  double pa[3];
+  double pb[3];
+  this->ToIndex(a, pa);
+  this->ToIndex(b, pb);
+  std::vector<double> s;
+  this->IndexBreakpoints(pa, pb, s);
+  for (double at : s)
+  {
+    breaks.push_back(t0 + at * (t1 - t0));
+  }
+}

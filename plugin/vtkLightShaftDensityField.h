@@ -1,0 +1,96 @@
+/**
+ * @file   vtkLightShaftDensityField.h
+ * @brief  A medium's density read from a vtkImageData, checked, for vtkLightShaftPass and
+ *         vtkLightShaftReference (private, not installed, no GL).
+ */
+
+#ifndef vtkLightShaftDensityField_h
+#define vtkLightShaftDensityField_h
+
+#include <cstddef> // For std::size_t
+#include <string>  // For the reason an image is refused
+#include <vector>  // For the samples and the breakpoints
+
+class vtkImageData;
+
+/**
+ * @class   vtkLightShaftDensityField
+ * @brief   The density rho(x) of a medium given as image data, in world coordinates.
+ *
+ * The rule, in one place: rho is the first component of the named array (point data first,
+ * then cell data), or with no name of the point scalars, else the cell scalars. Point data are
+ * samples at the image's points; cell data are samples at the cells' centres, held constant
+ * across the outer half cell. Inside the image's bounds (the box of its points, placed by its
+ * origin, spacing and direction matrix) rho is trilinear between the samples; outside it is 0.
+ * The samples are kept as float32, as a GPU texture holds them; everything computed from them
+ * is double precision.
+ *
+ * Along a straight line, rho is a cubic polynomial between the planes where the sample
+ * coordinates are integers (and the bounds): Integral() sums two-point Gauss-Legendre over
+ * those pieces, which is exact for cubics.
+ */
+class vtkLightShaftDensityField
+{
+public:
+  /// The largest field read, in samples (512^3: 512 MiB as float32).
+  static constexpr std::size_t MaximumSamples = std::size_t(1) << 27;
+
+  /**
+   * Reads `image`'s density (see the class description); `arrayName` empty or null: the
+   * scalars. Returns "" and replaces this field, or the reason the image cannot be a density
+   * field (this field unchanged): no such array or no scalars, fewer than two points along an
+   * axis, more than MaximumSamples samples, a value that is not finite or is negative, a
+   * spacing, origin or direction matrix that is not finite or not invertible.
+   */
+  std::string Read(vtkImageData* image, const char* arrayName);
+
+  /// Whether a field was read.
+  bool Empty() const { return this->Values.empty(); }
+
+  /// Samples per axis.
+  const int* GetSamples() const { return this->Samples; }
+
+  /// The samples, x fastest, as float32.
+  const std::vector<float>& GetValues() const { return this->Values; }
+
+  /// Whether the samples sit at cell centres (cell data) rather than at points.
+  bool GetCellCentred() const { return this->CellCentred; }
+
+  /// Largest sample value.
+  double GetMaximum() const { return this->Maximum; }
+
+  /// rho at world point x (trilinear inside the bounds, 0 outside).
+  double Density(const double x[3]) const;
+
+  /// The exact integral of rho along the segment from world point a to world point b.
+  double Integral(const double a[3], const double b[3]) const;
+
+  /**
+   * Appends to `breaks` the parameters t in (t0, t1) of origin + t dir where rho stops being
+   * one cubic (the sample planes and the bounds), sorted.
+   */
+  void Breakpoints(const double origin[3],
+    const double dir[3],
+    double t0,
+    double t1,
+    std::vector<double>& breaks) const;
+
+  /// World point to continuous point index relative to the extent's start.
+  void ToIndex(const double x[3], double p[3]) const;
+
+private:
+  /// rho at continuous point index p.
+  double DensityAtIndex(const double p[3]) const;
+  /// The parameters in (0, 1) of pa + s (pb - pa) (point indices) where rho's piece changes.
+  void IndexBreakpoints(const double pa[3], const double pb[3], std::vector<double>& s) const;
+
+  int Samples[3] = { 0, 0, 0 };
+  int Points[3] = { 0, 0, 0 }; ///< the image's dimensions: the bounds are [0, Points - 1]
+  bool CellCentred = false;
+  double Maximum = 0.0;
+  double Origin[3] = { 0.0, 0.0, 0.0 };
+  double WorldToIndex[3][3] = { { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 } };
+  std::vector<float> Values;
+};
+
+#endif

@@ -1,0 +1,232 @@
+"""A medium from data (vtkLightShaftPass::SetMediumDensity): the image's checks, and
+vtkLightShaftReference through the field against itself (uniform fields, scale and background)
+and against the independent numpy reference with the same analytic density (a linear and a
+cubic field, which trilinear interpolation reproduces exactly, on a rotated grid, from point
+and cell data, for each kind of light)."""
+
+import math
+
+import numpy as np
+import pytest
+
+from lightshafts import scenes, vtkLightShaftPass
+from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.vtkCommonDataModel import vtkImageData
+
+import lightshaft_reference as ref
+import render_helpers as rh
+from test_reference import cpp_reference
+
+HALF = 60.0  # the fields' box: [-60, 60]^3 holds the camera, the lights and every ray's end
+
+
+def field_image(function, samples=9, cells=False, angle_degrees=0.0, name="density"):
+    """A vtkImageData of `function(x, y, z)` (world coordinates) over the box, rotated about y
+    by `angle_degrees` (its direction matrix), sampled at its points, or at its cell centres
+    (`cells`: samples cells along each axis). The box keeps HALF around the origin whatever the
+    rotation (the grid is centred there)."""
+    points = samples + 1 if cells else samples
+    spacing = 2.0 * HALF / (points - 1)
+    c, s = math.cos(math.radians(angle_degrees)), math.sin(math.radians(angle_degrees))
+    direction = np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
+    image = vtkImageData()
+    image.SetDimensions(points, points, points)
+    image.SetSpacing(spacing, spacing, spacing)
+    image.SetDirectionMatrix(*direction.ravel())
+    image.SetOrigin(*(direction @ np.full(3, -HALF)))
+    index = np.arange(samples, dtype=float) + (0.5 if cells else 0.0)
+    k, j, i = np.meshgrid(index, index, index, indexing="ij")  # x fastest when raveled
+    local = np.stack([i, j, k], axis=-1).reshape(-1, 3) * spacing - HALF
+    world = local @ direction.T
+    values = numpy_to_vtk(function(world[:, 0], world[:, 1], world[:, 2]), deep=True)
+    values.SetName(name)
+    data = image.GetCellData() if cells else image.GetPointData()
+    data.SetScalars(values)
+    return image
+
+
+def linear(x, y, z):
+    return 0.5 + 0.002 * (x + 2.0 * y - z)
+
+
+def cubic(x, y, z):
+    return (1.0 + x / 120.0) * (1.0 + y / 120.0) * (1.0 + z / 120.0)
+
+
+def rotated(function, angle_degrees):
+    """`function` of the coordinates along a grid's axes when the grid is rotated about y by
+    `angle_degrees` (field_image): trilinear reproduces a product of linear factors only along
+    the grid's own axes."""
+    c, s = math.cos(math.radians(angle_degrees)), math.sin(math.radians(angle_degrees))
+
+    def along_grid(x, y, z):
+        return function(c * x - s * z, y, s * x + c * z)
+    return along_grid
+
+
+def analytic_medium(shafts, function, scale=1.0, background=0.0):
+    """The numpy reference's medium with density background + scale * function; its integral
+    along a segment by two-point Gauss-Legendre, exact for these (at most cubic) fields."""
+    def density(x):
+        return background + scale * function(x[..., 0], x[..., 1], x[..., 2])
+
+    def optical_depth(a, b):
+        length = np.linalg.norm(b - a, axis=-1)
+        node = 0.5 / math.sqrt(3.0)
+        total = density(a + (0.5 - node) * (b - a)) + density(a + (0.5 + node) * (b - a))
+        return 0.5 * length * total
+
+    medium = rh.reference_medium(shafts)
+    medium.density = density
+    medium.optical_depth = optical_depth
+    return medium
+
+
+def scene(kind="spot", width=48, height=36):
+    renderer, window = rh.make_window(width, height)
+    info = scenes.sphere_and_floor(renderer, sphere_resolution=16)
+    renderer.RemoveActor(info.actors[0])  # the floor alone: exact in both references
+    info.spheres = []
+    shafts = vtkLightShaftPass()
+    if kind != "spot":
+        for light in rh.make_light_kind(renderer, info, kind, (0.5, 6.0, 0.0)):
+            shafts.AddLight(light)
+    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
+    shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
+    renderer.SetPass(shafts)
+    window.Render()  # the clipping range both references read; the field is set after
+    return renderer, window, info, shafts
+
+
+def relative(values, expected):
+    return np.abs(values - expected).max() / expected.max()
+
+
+def test_a_uniform_field_is_the_homogeneous_medium():
+    renderer, window, info, shafts = scene()
+    homogeneous, _, _ = cpp_reference(renderer, shafts)
+    assert homogeneous.max() > 0.0
+    shafts.SetMediumDensity(field_image(lambda x, y, z: np.ones_like(x), samples=2))
+    uniform, _, _ = cpp_reference(renderer, shafts)
+    assert relative(uniform, homogeneous) < 1e-7
+    # Scale halves sigma_s and sigma_t; the background alone (a zero field) is the medium.
+    shafts.SetMediumDensityScale(0.5)
+    halved, _, _ = cpp_reference(renderer, shafts)
+    shafts.SetMediumDensityScale(1.0)
+    shafts.SetMediumDensity(field_image(lambda x, y, z: np.zeros_like(x), samples=2))
+    shafts.SetMediumBackgroundDensity(1.0)
+    background, _, _ = cpp_reference(renderer, shafts)
+    assert relative(background, homogeneous) < 1e-7
+    shafts.SetMediumDensity(None)
+    shafts.SetMediumBackgroundDensity(0.0)
+    shafts.SetScatteringCoefficient(0.025, 0.02, 0.015)
+    shafts.SetAbsorptionCoefficient(0.01, 0.005, 0.015)
+    expected, _, _ = cpp_reference(renderer, shafts)
+    assert relative(halved, expected) < 1e-7
+
+
+@pytest.mark.parametrize("kind", ["spot", "point", "directional"])
+def test_a_linear_field_agrees_with_the_numpy_reference(kind):
+    renderer, window, info, shafts = scene(kind)
+    shafts.SetMediumDensity(field_image(linear))
+    shafts.SetMediumDensityScale(0.7)
+    shafts.SetMediumBackgroundDensity(0.2)
+    values, _, _ = cpp_reference(renderer, shafts)
+    expected = ref.in_scattered_radiance(
+        rh.reference_camera(renderer, window), rh.reference_lights(info.light),
+        analytic_medium(shafts, linear, 0.7, 0.2),
+        ref.Scene(floors=info.floors), panels=16)
+    assert expected.max() > 0.0
+    assert relative(values, expected) < 1e-6
+
+
+@pytest.mark.parametrize("cells", [False, True])
+def test_a_cubic_field_on_a_rotated_grid_agrees_with_the_numpy_reference(cells):
+    renderer, window, info, shafts = scene()
+    field = rotated(cubic, 30.0)
+    shafts.SetMediumDensity(field_image(field, samples=7, cells=cells, angle_degrees=30.0))
+    values, _, _ = cpp_reference(renderer, shafts)
+    expected = ref.in_scattered_radiance(
+        rh.reference_camera(renderer, window), rh.reference_lights(info.light),
+        analytic_medium(shafts, field), ref.Scene(floors=info.floors), panels=16)
+    assert relative(values, expected) < 1e-6
+
+
+def test_outside_the_field_the_density_is_the_background():
+    # A field far from every ray: only the background remains (here none: no in-scatter).
+    renderer, window, info, shafts = scene()
+    image = field_image(lambda x, y, z: np.ones_like(x), samples=2)
+    image.SetOrigin(1000.0, 1000.0, 1000.0)
+    shafts.SetMediumDensity(image)
+    values, _, _ = cpp_reference(renderer, shafts)
+    assert values.max() == 0.0
+
+
+def test_the_named_array_is_read():
+    renderer, window, info, shafts = scene()
+    image = field_image(lambda x, y, z: np.ones_like(x), samples=2)
+    other = numpy_to_vtk(np.zeros(8), deep=True)
+    other.SetName("empty")
+    image.GetPointData().AddArray(other)
+    shafts.SetMediumDensity(image)
+    ones, _, _ = cpp_reference(renderer, shafts)
+    shafts.SetMediumDensityArrayName("empty")
+    assert shafts.GetMediumDensityArrayName() == "empty"
+    zeros, _, _ = cpp_reference(renderer, shafts)
+    assert ones.max() > 0.0 and zeros.max() == 0.0
+
+
+def refused(shafts, messages, call, *args):
+    log = messages(shafts)
+    before = shafts.GetMTime()
+    call(*args)
+    assert shafts.GetMTime() == before, "a refused image changed the pass"
+    assert len(log.errors) == 1, log.errors
+    return log.errors[0]
+
+
+def test_bad_images_are_refused_and_the_previous_field_kept(messages):
+    shafts = vtkLightShaftPass()
+    good = field_image(linear, samples=3)
+    shafts.SetMediumDensity(good)
+
+    no_scalars = vtkImageData()
+    no_scalars.SetDimensions(4, 4, 4)
+    assert "has no point or cell scalars" in refused(shafts, messages, shafts.SetMediumDensity,
+                                                     no_scalars)
+    flat = field_image(linear, samples=3)
+    flat.SetDimensions(3, 3, 1)
+    flat.GetPointData().SetScalars(numpy_to_vtk(np.ones(9), deep=True))
+    assert "not a 3D image (3 x 3 x 1 points" in refused(shafts, messages,
+                                                          shafts.SetMediumDensity, flat)
+    for bad, words in ((math.nan, "nan at index 4"), (-0.5, "-0.5 at index 4")):
+        image = field_image(linear, samples=3)
+        image.GetPointData().GetScalars().SetValue(4, bad)
+        message = refused(shafts, messages, shafts.SetMediumDensity, image)
+        assert words in message and "finite and not negative" in message
+    huge = vtkImageData()
+    huge.SetDimensions(513, 512, 512)  # checked before the values are read: no array this big
+    huge.GetPointData().SetScalars(numpy_to_vtk(np.ones(1), deep=True))
+    assert "more than the 134217728 (512^3)" in refused(shafts, messages,
+                                                        shafts.SetMediumDensity, huge)
+    assert "no numeric point or cell array named \"nope\"" in refused(
+        shafts, messages, shafts.SetMediumDensityArrayName, "nope")
+    for setter in (shafts.SetMediumDensityScale, shafts.SetMediumBackgroundDensity):
+        assert "non-finite value refused" in refused(shafts, messages, setter, math.inf)
+    assert shafts.GetMediumDensity() is good
+    assert shafts.GetMediumDensityArrayName() == ""
+    shafts.SetMediumDensityScale(-1.0)
+    shafts.SetMediumBackgroundDensity(1e9)
+    assert (shafts.GetMediumDensityScale(), shafts.GetMediumBackgroundDensity()) == (0.0, 1e6)
+    shafts.SetMediumDensity(None)
+    assert shafts.GetMediumDensity() is None
+
+
+def test_the_pass_says_once_that_it_does_not_render_the_field(messages):
+    renderer, window, info, shafts = scene()
+    log = messages(shafts)
+    shafts.SetMediumDensity(field_image(linear, samples=3))
+    for _ in range(3):
+        window.Render()
+    assert len(log.warnings) == 1 and "no method of the pass renders a density field" in \
+        log.warnings[0]
