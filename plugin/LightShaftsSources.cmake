@@ -14,6 +14,7 @@ set(lightshafts_private_classes
   vtkLightShaftLightTextures
   vtkLightShaftLightVolumeMethod
   vtkLightShaftLights
+  vtkLightShaftMediumTexture
   vtkLightShaftMethod
   vtkLightShaftModel
   vtkLightShaftNoise

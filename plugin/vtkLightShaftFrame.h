@@ -21,6 +21,7 @@
 #include <string> // For the shader variant
 #include <vector> // For the per-light statistics
 
+class vtkLightShaftMediumTexture;
 class vtkLightShaftMethod;
 class vtkLightShaftShadowMap;
 class vtkObject;
@@ -158,6 +159,11 @@ struct vtkLightShaftFrame
   /// shapes spot and directional lights.
   vtkTextureObject* Cookie = nullptr;
   vtkTextureObject* Noise = nullptr;
+  /// The medium's density field (nullptr: homogeneous) and its placement and scales.
+  vtkTextureObject* Density = nullptr;
+  const vtkLightShaftMediumTexture* DensityField = nullptr;
+  double DensityScale = 1.0;
+  double DensityBackground = 0.0;
   /// Progressive refinement's shift of the sampling offsets (steps, slab jitter), in [0, 1),
   /// and where in each piece its light-space lookups are, in (0, 1); 0 and 0.5 (the midpoint)
   /// render the picture without refinement.

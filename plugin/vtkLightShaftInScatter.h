@@ -83,6 +83,7 @@ private:
   vtkTextureObject* Pending = nullptr;
   bool WarnedAnalyticShadows = false;
   bool WarnedLightVolumeFeatures = false;
+  bool WarnedFieldMethod = false;
 };
 
 #endif

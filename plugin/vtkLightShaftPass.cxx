@@ -139,6 +139,7 @@ void vtkLightShaftPass::Internals::ReleaseOwnResources(vtkWindow* w)
   this->Lights.ReleaseGraphicsResources(w);
   this->Scene.ReleaseGraphicsResources(w);
   this->Textures.ReleaseGraphicsResources(w);
+  this->Medium.ReleaseGraphicsResources(w);
   this->InScatter.ReleaseGraphicsResources(w);
   this->SurfaceLight.ReleaseGraphicsResources(w);
   this->Composite.ReleaseGraphicsResources(w);
@@ -693,13 +694,8 @@ bool vtkLightShaftPass::Internals::BeginFrame(vtkLightShaftPass& self,
   frame.Reduced[1] = (frame.Size[1] + factor - 1) / factor;
   frame.Medium = vtkLightShaftModel::DescribeMedium(
     self.ScatteringCoefficient, self.AbsorptionCoefficient, self.PhaseFunction, self.Anisotropy);
-  if (this->MediumDensity && !this->WarnedMediumDensity)
-  {
-    vtkWarningWithObjectMacro(&self,
-      "MediumDensity: no method of the pass renders a density field yet (vtkLightShaftReference "
-      "integrates it); the shafts use the homogeneous medium.");
-    this->WarnedMediumDensity = true;
-  }
+  frame.DensityScale = self.MediumDensityScale;
+  frame.DensityBackground = self.MediumBackgroundDensity;
 
   // The scene camera, exactly as the mappers see it.
   auto* camera = vtkOpenGLCamera::SafeDownCast(frame.Renderer->GetActiveCamera());

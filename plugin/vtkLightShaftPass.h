@@ -213,9 +213,9 @@ public:
    * data; the scalars when no name), trilinear inside the image's bounds (placed by its origin,
    * spacing and direction matrix) and 0 outside (README, "A medium from data"). An image that
    * cannot be one (no such array, not 3D, over 2^27 samples, NaN or negative values) is refused
-   * with an error saying why; the previous field is kept. vtkLightShaftReference integrates the
-   * field exactly; the pass's methods do not render it yet (one warning: the shafts keep the
-   * homogeneous medium). Default is nullptr (homogeneous) and no name.
+   * with an error saying why; the previous field is kept. RAY_MARCH renders it (AUTOMATIC
+   * takes it; other methods give way to it with one warning); vtkLightShaftReference
+   * integrates it exactly. Default is nullptr (homogeneous) and no name.
    */
   void SetMediumDensity(vtkImageData* density);
   vtkImageData* GetMediumDensity();

@@ -16,6 +16,7 @@
 #include "vtkLightShaftInScatter.h"     // For the in-scatter
 #include "vtkLightShaftLightTextures.h" // For the cookie and noise
 #include "vtkLightShaftLights.h"        // For the lights
+#include "vtkLightShaftMediumTexture.h" // For the medium's density field
 #include "vtkLightShaftRefinement.h"    // For the progressive refinement
 #include "vtkLightShaftSceneCheck.h"    // For what of the scene cannot be used
 #include "vtkLightShaftSceneRenderer.h" // For the scene
@@ -46,7 +47,6 @@ public:
   bool WarnedPointCookie = false;
   vtkSmartPointer<vtkImageData> MediumDensity; ///< SetMediumDensity's image (checked when set)
   std::string MediumDensityArrayName;
-  bool WarnedMediumDensity = false;
   int FrameCounter = 0;
 
   // The components, in the order a frame uses them.
@@ -54,6 +54,7 @@ public:
   vtkLightShaftLights Lights;
   vtkLightShaftSceneRenderer Scene;
   vtkLightShaftLightTextures Textures;
+  vtkLightShaftMediumTexture Medium;
   vtkLightShaftInScatter InScatter;
   vtkLightShaftSurfaceLight SurfaceLight;
   vtkLightShaftComposite Composite;

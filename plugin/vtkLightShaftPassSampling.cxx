@@ -100,11 +100,15 @@ vtkTextureObject* vtkLightShaftPass::Internals::ChooseSampling(vtkLightShaftFram
   {
     frame.Noise = this->Textures.ReadyNoise(frame.Window, frame.Owner);
   }
+  frame.Density = this->Medium.Ready(
+    frame.Window, frame.Owner, this->MediumDensity, this->MediumDensityArrayName);
+  frame.DensityField = frame.Density ? &this->Medium : nullptr;
   // What decides the picture, signed only when refinement or a budget asks whether it changed:
   // features that are off cost nothing (a prop's redraw MTime updates its pipeline).
   const bool signs = frame.Parameters.ProgressiveRefinement || FrameBudget(frame) > 0.0;
   vtkLightShaftRefinement::Signature signature =
-    signs ? vtkLightShaftRefinement::Sign(frame, lights, this->Textures.GetImagesTime())
+    signs ? vtkLightShaftRefinement::Sign(
+              frame, lights, std::max(this->Textures.GetImagesTime(), this->Medium.GetUploadTime()))
           : vtkLightShaftRefinement::Signature();
   this->ApplyErrorModel(frame,
     lightFrames,

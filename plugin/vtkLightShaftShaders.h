@@ -101,6 +101,13 @@ void SetLightUniforms(vtkShaderProgram* program, const vtkLightShaftGeometry::Li
 /// The light and the medium (the integrand's uniforms), in view coordinates.
 void SetIntegrandUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame);
 
+/// The samples of each optical depth through the density field (the light leg of each of
+/// `viewSteps` steps, the eye's leg): the rule, in one place.
+int DensitySteps(int viewSteps);
+
+/// The density field's uniforms (LIGHTSHAFT_FIELD) and its texture, activated.
+void SetDensityUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame);
+
 /**
  * The LightSpace chunk's uniforms for the frame's current light and a target `width` pixels
  * wide: the light's square and footprints (cookie and noise levels), and with `shadowMap`

@@ -154,7 +154,7 @@ void vtkLightShaftSlabDrawer::Draw(vtkLightShaftFrame& frame,
   this->DrawBatch(program, false, frame);
 
   slabs.Depth->Deactivate();
-  for (vtkTextureObject* t : { slabs.ShadowMap, frame.Cookie, frame.Noise })
+  for (vtkTextureObject* t : { slabs.ShadowMap, frame.Cookie, frame.Noise, frame.Density })
   {
     if (t)
     {

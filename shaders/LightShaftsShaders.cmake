@@ -10,6 +10,7 @@ set(lightshafts_pass_shaders
   vtkLightShaftDepthResolveFS
   vtkLightShaftEpipolarFS
   vtkLightShaftEpipolarMarkFS
+  vtkLightShaftField
   vtkLightShaftIntegrand
   vtkLightShaftLightKind
   vtkLightShaftLightSpace

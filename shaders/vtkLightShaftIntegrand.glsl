@@ -42,7 +42,8 @@ float lightShaftAngleScale(float h2, float x0, float x1)
 
 // The point of the ray originVC + t dirVC at integration variable u (x = t + b = u for constant
 // A, h tan(u) for falling A), its light distance r, and the sine of its scattering angle.
-// Returns the smooth factor there: phase * spot * exp(-sigma_t (r + t)).
+// Returns the smooth factor there: phase * spot * exp(-sigma_t (r + t)) (phase * spot with a
+// density field, whose extinction lightShaftSegment applies).
 vec3 lightShaftNode(vec3 originVC, vec3 dirVC, float b, float h, bool constantA, float u,
   out vec3 pointVC, out float r, out float sinTheta)
 {
@@ -59,7 +60,12 @@ vec3 lightShaftNode(vec3 originVC, vec3 dirVC, float b, float h, bool constantA,
 #endif
   float cosTheta = -dot(dirVC, lightDir);
   sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
+#ifdef LIGHTSHAFT_FIELD
+  // (A medium from data: the extinction is the segment's, from the field: lightShaftSegment.)
+  return vec3(lightShaftPhase(cosTheta) * spot);
+#else
   return lightShaftPhase(cosTheta) * spot * exp(-sigmaT * (r + t));
+#endif
 }
 
 // The A-weighted mean of the smooth factors over u in [u0, u1], with 3-point Gauss-Legendre in

@@ -4,6 +4,13 @@
 // LIGHTSHAFT_SHADOW, LIGHTSHAFT_COOKIE, LIGHTSHAFT_NOISE, LIGHTSHAFT_LATTICE, the light's kind;
 // code for a feature that is off is not compiled.
 //VTK::LightShaft::LightSpace
+//VTK::LightShaft::Field
+
+#ifdef LIGHTSHAFT_FIELD
+// The optical depth of the view ray from its origin to the start of the segment being
+// integrated (in density units: times sigma_t), advanced by lightShaftSegment.
+float lightShaftOpticalDepthSoFar = 0.0;
+#endif
 
 #ifdef LIGHTSHAFT_LATTICE
 // The smooth factors' mean over this slab, evaluated at the lattice's vertices (Chen, Li and
@@ -110,6 +117,22 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
   modulation *= lightShaftNoiseDensity(sampleVC, footprintInSquares);
 #endif
 
+#ifdef LIGHTSHAFT_FIELD
+  // A medium from data: sigma_s and sigma_t scale with the density at the sample; the
+  // extinction is that of the view ray up to it (the depth so far plus half this segment's)
+  // and of the light leg (to the light, or back to a directional light's plane).
+  float density = lightShaftDensity(sampleVC);
+  float segmentDepth = density * (x1 - x0);
+#ifdef LIGHTSHAFT_DIRECTIONAL
+  vec3 sourceVC = sampleVC - sampleR * lightAxisVC;
+#else
+  vec3 sourceVC = lightPositionVC;
+#endif
+  float depth =
+    lightShaftOpticalDepthSoFar + 0.5 * segmentDepth + lightShaftOpticalDepth(sampleVC, sourceVC);
+  lightShaftOpticalDepthSoFar += segmentDepth;
+  smoothMean *= density * exp(-sigmaT * depth);
+#endif
   return sigmaS * lightRadiantIntensity * modulation * (weight * visibility) * smoothMean;
 }
 
@@ -195,6 +218,11 @@ LightShaftVariable lightShaftVariable(LightShaftRay ray)
 vec3 lightShaftMarch(LightShaftRay ray, int steps, float offset)
 {
   LightShaftVariable u = lightShaftVariable(ray);
+#ifdef LIGHTSHAFT_FIELD
+  // The view ray's extinction before its lit part (the unlit medium still dims it).
+  lightShaftOpticalDepthSoFar = lightShaftOpticalDepth(
+    ray.originVC, ray.originVC + (ray.x0 - ray.b) * ray.dirVC);
+#endif
   vec3 radiance = vec3(0.0);
   float xa = ray.x0;
   for (int j = 0; j <= steps; ++j)

@@ -13,6 +13,8 @@
 #                                      # (docs/reprojection.md)
 #   tools/measure.sh resolution-cost   # how the budget's settings' time follows the resolution
 #                                      # (the cost model's exponents; docs/budget.md)
+#   tools/measure.sh medium-field      # a density field's cost against the homogeneous
+#                                      # medium (docs/medium-field.md; about 1 min)
 #   tools/measure.sh worst-corners     # the slider corners (docs/robustness.md)
 #   tools/measure.sh random-scenes     # 50 random scenes: presets, methods, targets, the
 #                                      # fitted ladder (TargetError's cost against the oracle)
@@ -54,6 +56,7 @@ case "$what" in
   budget) run tests/benchmarks/budget.py --output-dir docs "$@" ;;
   reprojection) run tests/benchmarks/reprojection_bound.py --output docs/reprojection.md "$@" ;;
   resolution-cost) run tests/benchmarks/resolution_cost.py "$@" ;;
+  medium-field) run tests/benchmarks/medium_field_cost.py "$@" ;;
   worst-corners) run tests/benchmarks/worst_corners.py "$@" ;;
   random-scenes)
     run tests/benchmarks/random_scenes.py --validation --seed 0 --scenes 50 --max-height 720 \

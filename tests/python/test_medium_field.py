@@ -222,11 +222,94 @@ def test_bad_images_are_refused_and_the_previous_field_kept(messages):
     assert shafts.GetMediumDensity() is None
 
 
-def test_the_pass_says_once_that_it_does_not_render_the_field(messages):
-    renderer, window, info, shafts = scene()
+def marching(kind="spot", steps=256, width=96, height=72):
+    renderer, window, info, shafts = scene(kind, width, height)
+    shafts.SetMethod(vtkLightShaftPass.RAY_MARCH)
+    shafts.SetNumberOfSteps(steps)
+    shafts.SetInterleaveSize(1)
+    shafts.SetBlurRadius(0)  # (the blur smears a field's edges in the picture)
+    return renderer, window, info, shafts
+
+
+def rendered(window, shafts):
+    window.Render()
+    return rh.in_scatter(shafts).copy()
+
+
+@pytest.mark.parametrize("steps", [64, 4096])
+def test_ray_march_renders_a_uniform_field_as_the_homogeneous_medium(steps):
+    # 4096 steps: the light-leg samples stay within llvmpipe's 65535 loop iterations a pixel
+    # (vtkLightShaftShaders::DensitySteps); past it the picture came out 4x too dark.
+    renderer, window, info, shafts = marching(steps=steps, width=48, height=36)
+    homogeneous = rendered(window, shafts)
+    shafts.SetMediumDensity(field_image(lambda x, y, z: np.ones_like(x), samples=2))
+    uniform = rendered(window, shafts)
+    assert homogeneous.max() > 0.0
+    assert relative(uniform, homogeneous) < 1e-4
+
+
+def layer_image(samples=64):
+    """Density 1 below y = 2.5 and 0 above, over the sphere scene's floor, as point data."""
+    image = vtkImageData()
+    image.SetDimensions(samples, samples, samples)
+    spacing = 16.0 / (samples - 1)
+    image.SetSpacing(spacing, spacing, spacing)
+    image.SetOrigin(-8.0, -1.0, -8.0)
+    y = -1.0 + spacing * np.arange(samples)
+    values = np.broadcast_to((y < 2.5)[None, :, None], (samples,) * 3).astype(float)
+    image.GetPointData().SetScalars(numpy_to_vtk(values.ravel(), deep=True))
+    return image
+
+
+@pytest.mark.parametrize("kind, function", [
+    ("spot", linear), ("spot", cubic), ("spot", "layer"), ("point", linear),
+    ("directional", linear)])
+def test_ray_march_through_a_field_against_the_reference(kind, function):
+    # Against the float64 reference with the pass's own shadow map (its error apart; a point
+    # light's cube map is not read back: exact visibility). Measured at 96x72, 256 steps:
+    # 0.01% or less for each, the layer (density 1 below y = 2.5, 0 above) too.
+    renderer, window, info, shafts = marching(kind)
+    shafts.SetMediumDensity(layer_image() if function == "layer" else field_image(function))
+    image = rendered(window, shafts)
+    visibility = 0 if kind == "point" else 1
+    expected, _, _ = cpp_reference(renderer, shafts, VisibilityMode=visibility)
+    error, _ = ref.relative_rms_error(image, expected)
+    print(f"{kind} {getattr(function, '__name__', function)}: {error:.5f}")
+    assert expected.max() > 0.0
+    assert error < 0.002
+
+
+def test_a_zero_field_scatters_nothing_and_changes_of_the_data_are_seen(messages):
+    renderer, window, info, shafts = marching(width=48, height=36)
+    image = field_image(lambda x, y, z: np.zeros_like(x), samples=3)
+    shafts.SetMediumDensity(image)
+    assert rendered(window, shafts).max() == 0.0
+    # The same image's values change (the pipeline's way): the next frame uses them.
+    scalars = image.GetPointData().GetScalars()
+    for i in range(scalars.GetNumberOfTuples()):
+        scalars.SetValue(i, 1.0)
+    scalars.Modified()
+    ones = rendered(window, shafts)
+    assert ones.max() > 0.0
+    # Then it becomes unusable: one error, and the last usable field stays in use.
+    log = messages(shafts)
+    scalars.SetValue(0, math.nan)
+    scalars.Modified()
+    again = rendered(window, shafts)
+    rendered(window, shafts)
+    assert len(log.errors) == 1 and "the last usable density field is kept" in log.errors[0]
+    assert np.array_equal(again, ones)
+
+
+def test_other_methods_give_way_to_ray_march_once(messages):
+    renderer, window, info, shafts = scene(width=48, height=36)
     log = messages(shafts)
     shafts.SetMediumDensity(field_image(linear, samples=3))
-    for _ in range(3):
+    shafts.SetMethod(vtkLightShaftPass.AUTOMATIC)
+    window.Render()
+    assert shafts.GetLastMethod() == vtkLightShaftPass.RAY_MARCH and not log.warnings
+    shafts.SetMethod(vtkLightShaftPass.SLICES)  # (the default)
+    for _ in range(2):
         window.Render()
-    assert len(log.warnings) == 1 and "no method of the pass renders a density field" in \
-        log.warnings[0]
+    assert shafts.GetLastMethod() == vtkLightShaftPass.RAY_MARCH
+    assert len(log.warnings) == 1 and "rendered by RAY_MARCH only" in log.warnings[0]

@@ -1,0 +1,123 @@
+#include "vtkLightShaftMediumTexture.h"
+
+#include "vtkImageData.h"
+#include "vtkLightShaftOpenGL.h"
+#include "vtkObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkTextureObject.h"
+
+vtkLightShaftMediumTexture::vtkLightShaftMediumTexture() = default;
+vtkLightShaftMediumTexture::~vtkLightShaftMediumTexture() = default;
+
+vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* window,
+  vtkObject* owner,
+  vtkImageData* image,
+  const std::string& arrayName)
+{
+  if (!image)
+  {
+    this->Image = nullptr;
+    this->LastError.clear();
+    return nullptr;
+  }
+  const bool same = image == this->Image && arrayName == this->ArrayName;
+  if (same && this->Texture && image->GetMTime() <= this->UploadTime)
+  {
+    return this->Texture;
+  }
+  vtkLightShaftDensityField field;
+  std::string why = field.Read(image, arrayName.c_str());
+  GLint maximum = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maximum);
+  const int* samples = field.GetSamples();
+  if (why.empty() && (samples[0] > maximum || samples[1] > maximum || samples[2] > maximum))
+  {
+    why = "has more samples along an axis than this GL's 3D textures hold (" +
+          std::to_string(maximum) + "; resample it, e.g. with vtkImageResample)";
+  }
+  if (!why.empty())
+  {
+    // Changed into something unusable since it was set: keep the last usable field.
+    if (why != this->LastError)
+    {
+      vtkErrorWithObjectMacro(
+        owner, "MediumDensity: the image " << why << "; the last usable density field is kept.");
+      this->LastError = why;
+    }
+    return (same && this->Texture) ? this->Texture.Get() : nullptr;
+  }
+  this->LastError.clear();
+  if (this->Texture)
+  {
+    this->Texture->ReleaseGraphicsResources(window);
+  }
+  this->Texture = vtkSmartPointer<vtkTextureObject>::New();
+  this->Texture->SetContext(window);
+  this->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  this->Texture->SetWrapR(vtkTextureObject::ClampToEdge);
+  this->Texture->SetMinificationFilter(vtkTextureObject::Linear);
+  this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  this->Texture->SetInternalFormat(GL_R32F);
+  this->Texture->SetFormat(GL_RED);
+  this->Texture->SetDataType(GL_FLOAT);
+  this->Texture->Create3DFromRaw(
+    samples[0], samples[1], samples[2], 1, VTK_FLOAT, const_cast<float*>(field.GetValues().data()));
+  this->Field = std::move(field);
+  this->Image = image;
+  this->ArrayName = arrayName;
+  this->UploadTime = image->GetMTime();
+  return this->Texture;
+}
+
+glm::dmat4 vtkLightShaftMediumTexture::TextureFromWorld() const
+{
+  // Point index p = A x + c (the field's placement), then texture coordinate (p + offset) / N:
+  // texel centres sit at the samples (points, or cell centres half a cell on).
+  const double zero[3] = { 0.0, 0.0, 0.0 };
+  double c[3];
+  this->Field.ToIndex(zero, c);
+  const int* samples = this->Field.GetSamples();
+  const double offset = this->Field.GetCellCentred() ? 0.0 : 0.5;
+  glm::dmat4 m(1.0);
+  for (int col = 0; col < 3; ++col)
+  {
+    double unit[3] = { 0.0, 0.0, 0.0 };
+    unit[col] = 1.0;
+    double p[3];
+    this->Field.ToIndex(unit, p);
+    for (int row = 0; row < 3; ++row)
+    {
+      m[col][row] = (p[row] - c[row]) / samples[row];
+    }
+  }
+  for (int row = 0; row < 3; ++row)
+  {
+    m[3][row] = (c[row] + offset) / samples[row];
+  }
+  return m;
+}
+
+void vtkLightShaftMediumTexture::TextureBounds(float low[3], float high[3]) const
+{
+  const int* samples = this->Field.GetSamples();
+  const bool cells = this->Field.GetCellCentred();
+  const double offset = cells ? 0.0 : 0.5;
+  for (int k = 0; k < 3; ++k)
+  {
+    const int points = cells ? samples[k] + 1 : samples[k];
+    low[k] = static_cast<float>(offset / samples[k]);
+    high[k] = static_cast<float>((points - 1 + offset) / samples[k]);
+  }
+}
+
+void vtkLightShaftMediumTexture::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Texture)
+  {
+    this->Texture->ReleaseGraphicsResources(window);
+  }
+  this->Texture = nullptr;
+  this->Image = nullptr;
+  this->UploadTime = 0;
+}

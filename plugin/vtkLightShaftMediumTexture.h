@@ -1,0 +1,75 @@
+/**
+ * @file   vtkLightShaftMediumTexture.h
+ * @brief  The medium's density field as a 3D texture for vtkLightShaftPass (private, not
+ *         installed), uploaded when its image or array changes.
+ */
+
+#ifndef vtkLightShaftMediumTexture_h
+#define vtkLightShaftMediumTexture_h
+
+#include "vtkLightShaftDensityField.h" // For the field held
+#include "vtkSmartPointer.h"           // For the texture held
+#include "vtkType.h"                   // For vtkMTimeType
+
+#include <glm/glm.hpp> // For the texture's placement
+
+#include <string> // For the array name and the last error
+
+class vtkImageData;
+class vtkObject;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+/**
+ * @class   vtkLightShaftMediumTexture
+ * @brief   SetMediumDensity's field on the GPU: float32 samples in a 3D texture, filtered
+ *          linearly and clamped to its edge (vtkLightShaftDensityField's trilinear rule).
+ *
+ * The image is read again when its MTime (or its data's) or the array name changes. An image
+ * that became unusable since it was set is reported once (error from the owner) and the last
+ * usable field stays in use.
+ */
+class vtkLightShaftMediumTexture
+{
+public:
+  vtkLightShaftMediumTexture();
+  ~vtkLightShaftMediumTexture();
+
+  /**
+   * The texture of `image`'s density (nullptr when `image` is nullptr, or no usable field was
+   * ever read from it).
+   */
+  vtkTextureObject* Ready(vtkOpenGLRenderWindow* window,
+    vtkObject* owner,
+    vtkImageData* image,
+    const std::string& arrayName);
+
+  /// The field the texture holds.
+  const vtkLightShaftDensityField& GetField() const { return this->Field; }
+
+  /**
+   * World coordinates to the texture's coordinates, and the field's bounds there (the image's
+   * box of points; outside it the density is 0).
+   */
+  glm::dmat4 TextureFromWorld() const;
+  void TextureBounds(float low[3], float high[3]) const;
+
+  /// When the field in use was last uploaded (a still picture changes with it).
+  vtkMTimeType GetUploadTime() const { return this->UploadTime; }
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkLightShaftMediumTexture(const vtkLightShaftMediumTexture&) = delete;
+  void operator=(const vtkLightShaftMediumTexture&) = delete;
+
+  vtkLightShaftDensityField Field;
+  vtkSmartPointer<vtkTextureObject> Texture;
+  vtkImageData* Image = nullptr; ///< (only compared: which image the texture came from)
+  std::string ArrayName;
+  vtkMTimeType UploadTime = 0;
+  std::string LastError;
+};
+
+#endif
