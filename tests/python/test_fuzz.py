@@ -54,6 +54,7 @@ SCALARS = [
     ("Exposure", False, True), ("Anisotropy", False, False), ("NoiseAmplitude", False, False),
     ("NoiseScale", False, True), ("Time", False, False), ("Decay", False, False),
     ("Density", False, False), ("Weight", False, False), ("RadialGuardBand", False, False),
+    ("MediumDensityScale", False, True), ("MediumBackgroundDensity", False, True),
 ]
 VECTORS = [("ScatteringCoefficient", 3), ("AbsorptionCoefficient", 3),
            ("NoiseVelocity1", 2), ("NoiseVelocity2", 2)]
@@ -62,6 +63,7 @@ BOOLEANS = ["AttenuateScene", "ShadowSurfaces", "AutomaticSliceCount", "Jitter",
 # Setters that refuse non-finite values (with an error naming the parameter).
 REFUSING = {"Exposure", "Anisotropy", "NoiseAmplitude", "NoiseScale", "Time", "Decay",
             "Density", "Weight", "RadialGuardBand", "ScatteringCoefficient",
+            "MediumDensityScale", "MediumBackgroundDensity",
             "AbsorptionCoefficient", "NoiseVelocity1", "NoiseVelocity2", "TimeBudget"}
 # The pass's documented warnings (README "Behaviour with any scene").
 DOCUMENTED_WARNINGS = ["No spot or point light in the renderer", "given to the pass are switched off",
@@ -70,6 +72,7 @@ DOCUMENTED_WARNINGS = ["No spot or point light in the renderer", "given to the p
                        "Method ANALYTIC ignores shadows", "lattice cells in a frame",
                        "segments in a frame",
                        "Method LIGHT_VOLUME has no closed form",
+                       "is rendered by RAY_MARCH only",
                        # junk on the VTK objects the pass reads (junk_vtk)
                        "is left out of the shafts", "The camera cannot be used for the shafts",
                        "casts no shadow in the shafts", "image cannot be used (texel"]
@@ -115,6 +118,36 @@ def nan_image(value):
     return texture
 
 
+def density_image(rng):
+    """A small random density field over (or beside) the scene: point or cell data, placed,
+    spaced and turned at random; or one the pass must refuse (a NaN or negative value, 2D, no
+    scalars): (image, the words of the error expected or None)."""
+    kind = rng.choice(["field"] * 6 + ["nan", "negative", "flat", "no scalars"])
+    dims = [rng.choice([2, 3, 5, 9]) for _ in range(3)]
+    if kind == "flat":
+        dims[2] = 1
+    image = vtkImageData()
+    image.SetDimensions(*dims)
+    image.SetSpacing(*[rng.choice([0.05, 0.5, 2.0, 40.0]) for _ in range(3)])
+    image.SetOrigin(*[rng.uniform(-8.0, 4.0) for _ in range(3)])
+    angle = math.radians(rng.uniform(0.0, 360.0))
+    c, s = math.cos(angle), math.sin(angle)
+    image.SetDirectionMatrix(c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c)
+    cells = rng.random() < 0.3 and kind != "flat"
+    count = int(np.prod([d - 1 for d in dims])) if cells else int(np.prod(dims))
+    values = np.array([rng.choice([0.0, 0.01, 1.0, rng.uniform(0.0, 20.0)])
+                       for _ in range(count)])
+    if kind in ("nan", "negative"):
+        values[rng.randrange(count)] = math.nan if kind == "nan" else -1.0
+    if kind != "no scalars":
+        data = image.GetCellData() if cells else image.GetPointData()
+        data.SetScalars(numpy_to_vtk(values, deep=1))
+    expected = {"field": None, "nan": "finite and not negative",
+                "negative": "finite and not negative", "flat": "is not a 3D image",
+                "no scalars": "has no point or cell scalars"}[kind]
+    return image, expected
+
+
 def image_texture(rng, components=3):
     size = rng.choice([1, 2, 7, 64])
     image = vtkImageData()
@@ -152,6 +185,7 @@ class Fuzzer:
         self.steps = []
         self.undo = []  # how to undo the junk set on VTK objects
         self.refused = set()  # parameters given a non-finite value this step
+        self.expected_errors = []  # words of the errors this step's bad images must give
         self.frame_times = []
         self.shafted = 0  # frames that computed shafts
 
@@ -217,6 +251,16 @@ class Fuzzer:
                    "empty": vtkTexture, "none": lambda: None}[kind]()
         getattr(self.shafts, "Set" + which)(texture)
         return f"Set{which}({kind})"
+
+    def medium(self):
+        if self.rng.random() < 0.3:
+            self.shafts.SetMediumDensity(None)
+            return "SetMediumDensity(None)"
+        image, expected = density_image(self.rng)
+        if expected:
+            self.expected_errors.append(expected)
+        self.shafts.SetMediumDensity(image)
+        return f"SetMediumDensity({image.GetDimensions()}, {expected or 'usable'})"
 
     def light(self):
         rng, spot = self.rng, self.spot
@@ -398,13 +442,15 @@ class Fuzzer:
 
     ACTIONS = [(set_scalar, 30), (set_vector, 8), (set_boolean, 6), (preset, 2), (textures, 5),
                (light, 10), (several_lights, 8), (usable_light, 5), (camera, 10), (window_size, 6), (viewport, 4), (multisamples, 3),
-               (delegate, 2), (selection, 2), (still, 6), (update_rate, 3), (junk_vtk, 6)]
+               (delegate, 2), (selection, 2), (still, 6), (update_rate, 3), (junk_vtk, 6),
+               (medium, 3)]
 
     # --- one frame --------------------------------------------------------------------------
     def step(self, index):
         self.errors.clear()
         self.warnings.clear()
         self.refused.clear()
+        self.expected_errors.clear()
         actions, weights = zip(*self.ACTIONS)
         done = [action(self) for action in self.rng.choices(actions, weights,
                                                             k=self.rng.randint(1, 3))]
@@ -426,8 +472,12 @@ class Fuzzer:
         if self.shafts.GetLastGLErrorCount():
             problems.append(f"{self.shafts.GetLastGLErrorCount()} GL errors")
         for error in self.errors:
-            if not any(name in error and "non-finite" in error for name in self.refused):
+            if not any(name in error and "non-finite" in error for name in self.refused) and \
+                    not any(words in error for words in self.expected_errors):
                 problems.append(f"error: {error.strip()}")
+        for words in self.expected_errors:
+            if not any(words in e for e in self.errors):
+                problems.append(f"no error for a density image that {words}")
         for name in self.refused:
             if not any(name in e for e in self.errors):
                 problems.append(f"no error for the non-finite {name}")
