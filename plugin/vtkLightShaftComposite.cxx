@@ -39,6 +39,10 @@ void vtkLightShaftComposite::Render(vtkLightShaftFrame& frame, vtkTextureObject*
   if (attenuate)
   {
     defines.emplace_back("LIGHTSHAFT_ATTENUATE");
+    if (frame.Density)
+    {
+      defines.emplace_back("LIGHTSHAFT_FIELD");
+    }
   }
   if (correction)
   {
@@ -77,6 +81,11 @@ void vtkLightShaftComposite::Render(vtkLightShaftFrame& frame, vtkTextureObject*
   if (attenuate)
   {
     program->SetUniform3f("sigmaT", frame.Medium.SigmaT);
+    if (frame.Density)
+    {
+      vtkLightShaftShaders::SetDensityUniforms(program, frame); // (activates its texture)
+      active.push_back(frame.Density);
+    }
   }
   if (correction)
   {

@@ -1,6 +1,7 @@
 //VTK::System::Dec
 // Composite: out = (scene - correction) * exp(-sigma_t * t_surface) + Exposure * L_in, depth
-// passed through. Features (#defines): LIGHTSHAFT_ATTENUATE (aerial perspective),
+// passed through. Features (#defines): LIGHTSHAFT_ATTENUATE (aerial perspective; with
+// LIGHTSHAFT_FIELD, through the medium's density field),
 // LIGHTSHAFT_SURFACE_CORRECTION (the light the lights' shadow maps and cookie take away from
 // the surfaces, vtkLightShaftSurfaceLightFS), LIGHTSHAFT_MULTISAMPLE (the
 // scene was rendered multisampled: the composite runs once per sample, reading and writing that
@@ -16,6 +17,7 @@
 in vec2 texCoord;
 
 //VTK::LightShaft::Common
+//VTK::LightShaft::Field
 
 uniform sampler2D inScatter;
 uniform vec3 sigmaT;
@@ -65,7 +67,13 @@ void main()
   vec3 dirVC;
   vec2 ndc;
   lightShaftViewRay(vec2(pixel) + 0.5, originVC, dirVC, ndc);
-  color.rgb *= exp(-sigmaT * lightShaftSurfaceDistance(ndc, depth, dirVC));
+  float surfaceDistance = lightShaftSurfaceDistance(ndc, depth, dirVC);
+#ifdef LIGHTSHAFT_FIELD
+  // A medium from data: its optical depth up to the surface.
+  color.rgb *= exp(-sigmaT * lightShaftOpticalDepth(originVC, originVC + surfaceDistance * dirVC));
+#else
+  color.rgb *= exp(-sigmaT * surfaceDistance);
+#endif
 #endif
 
   // Alpha: the shafts are light in front of whatever lies behind, so a pixel is at least as

@@ -313,3 +313,21 @@ def test_other_methods_give_way_to_ray_march_once(messages):
         window.Render()
     assert shafts.GetLastMethod() == vtkLightShaftPass.RAY_MARCH
     assert len(log.warnings) == 1 and "rendered by RAY_MARCH only" in log.warnings[0]
+
+
+def test_the_scene_is_dimmed_by_the_field_not_by_the_coefficients():
+    # AttenuateScene (on by default) dims the surfaces by the field's optical depth up to them:
+    # a zero field leaves the picture as the plain scene's (in-scatter 0, nothing dimmed), a
+    # uniform one as the homogeneous medium's.
+    renderer, window, info, shafts = marching(width=96, height=72)
+    renderer.SetPass(None)
+    window.Render()
+    plain = rh.screenshot(window).astype(int)
+    renderer.SetPass(shafts)
+    homogeneous = rh.screenshot(window).astype(int)
+    shafts.SetMediumDensity(field_image(lambda x, y, z: np.zeros_like(x), samples=2))
+    assert np.array_equal(rh.screenshot(window).astype(int), plain)
+    shafts.SetMediumDensity(field_image(lambda x, y, z: np.ones_like(x), samples=2))
+    uniform = rh.screenshot(window).astype(int)
+    assert np.abs(uniform - homogeneous).max() <= 1
+    assert np.abs(homogeneous - plain).max() > 20  # (the medium does dim and light the scene)
