@@ -943,6 +943,9 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Lights: " << this->GetNumberOfLights() << " given\n";
   print("ScatteringCoefficient", this->ScatteringCoefficient, 3);
   print("AbsorptionCoefficient", this->AbsorptionCoefficient, 3);
+  os << indent << "MediumDensity: " << this->Impl->MediumDensity.Get() << " (array \""
+     << this->Impl->MediumDensityArrayName << "\", scale " << this->MediumDensityScale
+     << ", background " << this->MediumBackgroundDensity << ")\n";
   os << indent << "PhaseFunction: " << this->PhaseFunction << "\n";
   os << indent << "Anisotropy: " << this->Anisotropy << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
