@@ -77,9 +77,6 @@ void vtkLightShaftComposite::Render(vtkLightShaftFrame& frame, vtkTextureObject*
   if (attenuate)
   {
     vtkLightShaftShaders::SetViewUniforms(program, frame.Camera, w, h);
-  }
-  if (attenuate)
-  {
     program->SetUniform3f("sigmaT", frame.Medium.SigmaT);
     if (frame.Density)
     {

@@ -16,7 +16,7 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
 {
   if (!image)
   {
-    this->Image = nullptr;
+    this->ReleaseGraphicsResources(window); // (no field: its texture is not kept)
     this->LastError.clear();
     return nullptr;
   }
