@@ -8,6 +8,7 @@ set(lightshafts_private_classes
   vtkLightShaftEpipolar
   vtkLightShaftEpipolarMethod
   vtkLightShaftErrorModel
+  vtkLightShaftFieldShadow
   vtkLightShaftGeometry
   vtkLightShaftInScatter
   vtkLightShaftInScatterTarget
@@ -33,7 +34,8 @@ set(lightshafts_private_classes
   vtkLightShaftSurfaceLight)
 # vtkLightShaftPass's read-outs and its choice of sampling are compiled with it (the public
 # class's second and third source files).
-set(lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassReadouts.cxx"
+set(lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassMedium.cxx"
+  "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassReadouts.cxx"
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassSampling.cxx")
 set(lightshafts_private_headers
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftFrame.h"

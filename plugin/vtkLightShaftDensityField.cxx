@@ -140,6 +140,7 @@ std::string vtkLightShaftDensityField::Read(vtkImageData* image, const char* arr
     {
       this->Origin[r] += indexToWorld[3 * r + c] * extent[2 * c];
       this->WorldToIndex[r][c] = worldToIndex[3 * r + c];
+      this->IndexToWorld[r][c] = indexToWorld[3 * r + c];
     }
     this->Samples[r] = samples[r];
     this->Points[r] = points[r];
@@ -285,6 +286,78 @@ double vtkLightShaftDensityField::Integral(const double a[3], const double b[3])
     sum += 0.5 * width * pieceSum;
   }
   return sum * length;
+}
+
+void vtkLightShaftDensityField::Cumulative(const double origin[3],
+  const double dir[3],
+  double t0,
+  const double* t,
+  int n,
+  float* out,
+  int stride) const
+{
+  if (n <= 0)
+  {
+    return;
+  }
+  const double t1 = t[n - 1];
+  std::vector<double> breaks;
+  this->Breakpoints(origin, dir, t0, t1, breaks);
+  double p0[3];
+  this->ToIndex(origin, p0);
+  double d[3];
+  for (int r = 0; r < 3; ++r)
+  {
+    d[r] = this->WorldToIndex[r][0] * dir[0] + this->WorldToIndex[r][1] * dir[1] +
+           this->WorldToIndex[r][2] * dir[2];
+  }
+  // Two-point Gauss-Legendre over each piece between consecutive breakpoints and targets.
+  const double node = 0.5 / std::sqrt(3.0);
+  auto piece = [&](double a, double b)
+  {
+    double sum = 0.0;
+    for (double at : { 0.5 * (a + b) - node * (b - a), 0.5 * (a + b) + node * (b - a) })
+    {
+      const double p[3] = { p0[0] + at * d[0], p0[1] + at * d[1], p0[2] + at * d[2] };
+      sum += this->DensityAtIndex(p);
+    }
+    return 0.5 * (b - a) * sum;
+  };
+  double total = 0.0;
+  double at = t0;
+  std::size_t next = 0;
+  for (int k = 0; k < n; ++k)
+  {
+    for (; next < breaks.size() && breaks[next] < t[k]; ++next)
+    {
+      if (breaks[next] > at)
+      {
+        total += piece(at, breaks[next]);
+        at = breaks[next];
+      }
+    }
+    if (t[k] > at)
+    {
+      total += piece(at, t[k]);
+      at = t[k];
+    }
+    out[static_cast<std::size_t>(k) * stride] = static_cast<float>(total);
+  }
+}
+
+void vtkLightShaftDensityField::Corners(double corners[8][3]) const
+{
+  for (int c = 0; c < 8; ++c)
+  {
+    for (int r = 0; r < 3; ++r)
+    {
+      corners[c][r] = this->Origin[r];
+      for (int k = 0; k < 3; ++k)
+      {
+        corners[c][r] += this->IndexToWorld[r][k] * (((c >> k) & 1) ? this->Points[k] - 1.0 : 0.0);
+      }
+    }
+  }
 }
 
 void vtkLightShaftDensityField::Breakpoints(const double origin[3],

@@ -75,6 +75,22 @@ public:
     double t1,
     std::vector<double>& breaks) const;
 
+  /**
+   * The integrals of rho along origin + t dir (dir of unit length) from t0 to each of the
+   * ascending parameters t[0..n-1] (each at least t0), into out[k * stride]: exact as
+   * Integral's, one pass along the ray.
+   */
+  void Cumulative(const double origin[3],
+    const double dir[3],
+    double t0,
+    const double* t,
+    int n,
+    float* out,
+    int stride) const;
+
+  /// The bounds' eight corners in world coordinates (corner c: index box bit k of c).
+  void Corners(double corners[8][3]) const;
+
   /// World point to continuous point index relative to the extent's start.
   void ToIndex(const double x[3], double p[3]) const;
 
@@ -90,6 +106,7 @@ private:
   double Maximum = 0.0;
   double Origin[3] = { 0.0, 0.0, 0.0 };
   double WorldToIndex[3][3] = { { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 } };
+  double IndexToWorld[3][3] = { { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 } };
   std::vector<float> Values;
 };
 

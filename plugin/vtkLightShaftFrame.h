@@ -21,6 +21,7 @@
 #include <string> // For the shader variant
 #include <vector> // For the per-light statistics
 
+class vtkLightShaftFieldShadow;
 class vtkLightShaftMediumTexture;
 class vtkLightShaftMethod;
 class vtkLightShaftShadowMap;
@@ -60,6 +61,7 @@ struct vtkLightShaftParameters
   int EpipolarSamples{};
   int EpipolarStep{};
   int LightVolumeResolution{};
+  int MediumShadowResolution{};
   double Decay{};
   double Density{};
   double Weight{};
@@ -164,6 +166,9 @@ struct vtkLightShaftFrame
   const vtkLightShaftMediumTexture* DensityField = nullptr;
   double DensityScale = 1.0;
   double DensityBackground = 0.0;
+  /// The light's precomputed light leg through the field (nullptr: marched per sample).
+  vtkTextureObject* FieldShadow = nullptr;
+  const vtkLightShaftFieldShadow* FieldShadowLayout = nullptr;
   /// Progressive refinement's shift of the sampling offsets (steps, slab jitter), in [0, 1),
   /// and where in each piece its light-space lookups are, in (0, 1); 0 and 0.5 (the midpoint)
   /// render the picture without refinement.

@@ -166,6 +166,7 @@ void vtkLightShaftLights::KeepOnly(const std::vector<vtkLight*>& used, vtkWindow
       continue;
     }
     (*it)->ShadowMap.ReleaseGraphicsResources(window);
+    (*it)->FieldShadow.ReleaseGraphicsResources(window);
     (*it)->Timer.ReleaseGraphicsResources();
     it = this->States.erase(it);
   }
@@ -189,6 +190,7 @@ void vtkLightShaftLights::ReleaseGraphicsResources(vtkWindow* window)
   for (auto& state : this->States)
   {
     state->ShadowMap.ReleaseGraphicsResources(window);
+    state->FieldShadow.ReleaseGraphicsResources(window);
     state->Timer.ReleaseGraphicsResources();
   }
 }

@@ -8,10 +8,11 @@
 #ifndef vtkLightShaftLights_h
 #define vtkLightShaftLights_h
 
-#include "vtkLightShaftShadowMap.h" // For the per-light shadow map
-#include "vtkOpenGLRenderTimer.h"   // For the per-light timer
-#include "vtkSmartPointer.h"        // For the given lights
-#include "vtkWeakPointer.h"         // For the used lights
+#include "vtkLightShaftFieldShadow.h" // For the per-light light leg through a field
+#include "vtkLightShaftShadowMap.h"   // For the per-light shadow map
+#include "vtkOpenGLRenderTimer.h"     // For the per-light timer
+#include "vtkSmartPointer.h"          // For the given lights
+#include "vtkWeakPointer.h"           // For the used lights
 
 #include <memory>  // For the per-light states
 #include <string>  // For the shader variants, the unusable values
@@ -37,6 +38,10 @@ struct vtkLightShaftLightStatistics
   double LightDepthRange[2] = { 0.0, 0.0 }; ///< of its shadow map, when it had one
   double ShadowBias = 0.0;                  ///< of its shadow map, when it had one
   double Time = -1.0;                       ///< GPU milliseconds (timer queries), -1: unknown
+  /// The field's light-leg texture (vtkLightShaftFieldShadow): its bytes (0: none) and the
+  /// milliseconds its build took this frame (0: reused).
+  double FieldShadowBytes = 0.0;
+  double FieldShadowBuildTime = 0.0;
   std::string ShaderVariant;
   vtkWeakPointer<vtkLight> Light;
 };
@@ -52,6 +57,7 @@ struct vtkLightShaftLightState
 
   vtkWeakPointer<vtkLight> Light;
   vtkLightShaftShadowMap ShadowMap;
+  vtkLightShaftFieldShadow FieldShadow; ///< the light leg through a medium from data
   vtkOpenGLRenderTimer Timer;
 };
 

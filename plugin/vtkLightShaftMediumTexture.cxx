@@ -17,13 +17,18 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
   if (!image)
   {
     this->ReleaseGraphicsResources(window); // (no field: its texture is not kept)
-    this->LastError.clear();
+    this->Refused = nullptr;
     return nullptr;
   }
   const bool same = image == this->Image && arrayName == this->ArrayName;
   if (same && this->Texture && image->GetMTime() <= this->UploadTime)
   {
     return this->Texture;
+  }
+  if (image == this->Refused && image->GetMTime() == this->RefusedTime &&
+      arrayName == this->RefusedName)
+  {
+    return this->Texture; // (refused as it is: said once, not read again)
   }
   vtkLightShaftDensityField field;
   std::string why = field.Read(image, arrayName.c_str());
@@ -37,16 +42,16 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
   }
   if (!why.empty())
   {
-    // Changed into something unusable since it was set: keep the last usable field.
-    if (why != this->LastError)
-    {
-      vtkErrorWithObjectMacro(
-        owner, "MediumDensity: the image " << why << "; the last usable density field is kept.");
-      this->LastError = why;
-    }
-    return (same && this->Texture) ? this->Texture.Get() : nullptr;
+    // Changed into something unusable since it was set (or a pipeline made it): keep the
+    // last usable field.
+    vtkErrorWithObjectMacro(
+      owner, "MediumDensity: the image " << why << "; the last usable density field is kept.");
+    this->Refused = image;
+    this->RefusedTime = image->GetMTime();
+    this->RefusedName = arrayName;
+    return this->Texture;
   }
-  this->LastError.clear();
+  this->Refused = nullptr;
   if (this->Texture)
   {
     this->Texture->ReleaseGraphicsResources(window);
@@ -67,6 +72,7 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
   this->Image = image;
   this->ArrayName = arrayName;
   this->UploadTime = image->GetMTime();
+  ++this->Version;
   return this->Texture;
 }
 

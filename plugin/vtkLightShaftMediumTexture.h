@@ -58,6 +58,9 @@ public:
   /// When the field in use was last uploaded (a still picture changes with it).
   vtkMTimeType GetUploadTime() const { return this->UploadTime; }
 
+  /// Counts the uploads: what is derived from the field is stale when it changed.
+  vtkMTimeType GetVersion() const { return this->Version; }
+
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
@@ -69,7 +72,11 @@ private:
   vtkImageData* Image = nullptr; ///< (only compared: which image the texture came from)
   std::string ArrayName;
   vtkMTimeType UploadTime = 0;
-  std::string LastError;
+  vtkMTimeType Version = 0;
+  /// The image last refused, as it was then (only compared: refused once, not read again).
+  vtkImageData* Refused = nullptr;
+  vtkMTimeType RefusedTime = 0;
+  std::string RefusedName;
 };
 
 #endif

@@ -232,52 +232,6 @@ void vtkLightShaftPass::SetAbsorptionCoefficient(double grey)
   this->SetAbsorptionCoefficient(grey, grey, grey);
 }
 
-void vtkLightShaftPass::SetMediumDensity(vtkImageData* density)
-{
-  vtkLightShaftDensityField field;
-  const std::string why =
-    density ? field.Read(density, this->Impl->MediumDensityArrayName.c_str()) : "";
-  if (!why.empty())
-  {
-    vtkErrorMacro("MediumDensity: the image " << why << "; the previous density field is kept.");
-    return;
-  }
-  if (this->Impl->MediumDensity != density)
-  {
-    this->Impl->MediumDensity = density;
-    this->Modified();
-  }
-}
-
-vtkImageData* vtkLightShaftPass::GetMediumDensity()
-{
-  return this->Impl->MediumDensity;
-}
-
-void vtkLightShaftPass::SetMediumDensityArrayName(const char* name)
-{
-  const std::string wanted = name ? name : "";
-  vtkLightShaftDensityField field;
-  vtkImageData* density = this->Impl->MediumDensity;
-  const std::string why = density ? field.Read(density, wanted.c_str()) : "";
-  if (!why.empty())
-  {
-    vtkErrorMacro(
-      "MediumDensityArrayName: the density image " << why << "; the previous name is kept.");
-    return;
-  }
-  if (this->Impl->MediumDensityArrayName != wanted)
-  {
-    this->Impl->MediumDensityArrayName = wanted;
-    this->Modified();
-  }
-}
-
-const char* vtkLightShaftPass::GetMediumDensityArrayName()
-{
-  return this->Impl->MediumDensityArrayName.c_str();
-}
-
 void vtkLightShaftPass::SetMediumDensityScale(double scale)
 {
   SetClamped(
@@ -736,6 +690,7 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
   p.EpipolarSamples = self.EpipolarSamples;
   p.EpipolarStep = self.EpipolarStep;
   p.LightVolumeResolution = self.LightVolumeResolution;
+  p.MediumShadowResolution = self.MediumShadowResolution;
   p.Decay = self.Decay;
   p.Density = self.Density;
   p.Weight = self.Weight;
@@ -911,6 +866,7 @@ void vtkLightShaftPass::Internals::RenderLight(vtkLightShaftFrame& frame,
   }
   if (frame.Medium.Scatters())
   {
+    this->ReadyFieldShadow(frame, state.FieldShadow);
     this->InScatter.Add(frame, this->InScatter.ChooseMethod(frame));
   }
   if (shadowSurfaces || frame.Cookie)
@@ -925,6 +881,8 @@ void vtkLightShaftPass::Internals::RenderLight(vtkLightShaftFrame& frame,
     stats.Time = seconds > 0.0 ? 1e3 * seconds : -1.0;
   }
   frame.ShadowMap = nullptr;
+  frame.FieldShadow = nullptr;
+  frame.FieldShadowLayout = nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -943,9 +901,10 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Lights: " << this->GetNumberOfLights() << " given\n";
   print("ScatteringCoefficient", this->ScatteringCoefficient, 3);
   print("AbsorptionCoefficient", this->AbsorptionCoefficient, 3);
-  os << indent << "MediumDensity: " << this->Impl->MediumDensity.Get() << " (array \""
-     << this->Impl->MediumDensityArrayName << "\", scale " << this->MediumDensityScale
-     << ", background " << this->MediumBackgroundDensity << ")\n";
+  os << indent << "MediumDensity: " << this->Impl->MediumDensity.Get() << " (connection "
+     << this->Impl->MediumProducer.Get() << ", array \"" << this->Impl->MediumDensityArrayName
+     << "\", scale " << this->MediumDensityScale << ", background " << this->MediumBackgroundDensity
+     << ")\n";
   os << indent << "PhaseFunction: " << this->PhaseFunction << "\n";
   os << indent << "Anisotropy: " << this->Anisotropy << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
@@ -972,6 +931,7 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EpipolarSamples: " << this->EpipolarSamples << "\n";
   os << indent << "EpipolarStep: " << this->EpipolarStep << "\n";
   os << indent << "LightVolumeResolution: " << this->LightVolumeResolution << "\n";
+  os << indent << "MediumShadowResolution: " << this->MediumShadowResolution << "\n";
   os << indent << "Decay: " << this->Decay << "\n";
   os << indent << "Density: " << this->Density << "\n";
   os << indent << "Weight: " << this->Weight << "\n";

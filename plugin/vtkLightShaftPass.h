@@ -1,8 +1,8 @@
 /**
  * @class   vtkLightShaftPass
  * @brief   Adds physically based volumetric light shafts (single scattering of the scene's
- *          lights in a homogeneous participating medium, shadowed by the scene) to any VTK
- *          scene.
+ *          lights in a participating medium, homogeneous or from data, shadowed by the scene)
+ *          to any VTK scene.
  *
  * Use it as the renderer's pass:
  * @code{.cpp}
@@ -12,17 +12,15 @@
  * @endcode
  *
  * Every frame the pass
- *  1. renders the scene through its delegate pass into an off-screen colour + depth target
- *     (with no delegate set it renders as VTK's default vtkRenderStepsPass would, and keeps the
- *     2D overlay step for the end so text and scalar bars stay on top and unfogged);
- *  2. for each light that scatters (every switched-on spot and point light of the renderer, or
- *     the lights given with SetLight / AddLight, directional ones included): renders a depth
- *     map of the opaque geometry that can shadow its light (a perspective map for a spot, a
- *     cube of six for a point light, an orthographic one for a directional light), kept from
- *     frame to frame while nothing that decides it changes; draws view-aligned slabs covering
- *     only the part of the view volume the light reaches, each fragment integrating the
- *     in-scattered radiance over its slab of the pixel's view ray, added in a 32-bit float
- *     target; and with ShadowSurfaces (or a cookie) takes the shadowed light off the surfaces;
+ *  1. renders the scene through its delegate (else as vtkRenderStepsPass would, keeping the 2D
+ *     overlays for the end, on top and unfogged) into an off-screen colour + depth target;
+ *  2. for each light that scatters (the renderer's switched-on spot and point lights, or those
+ *     given with SetLight / AddLight, directional ones included): renders a depth map of what
+ *     can shadow its light (perspective for a spot, a cube of six for a point light,
+ *     orthographic for a directional one; kept while nothing that decides it changes) and adds
+ *     the in-scattered radiance over the part of the view volume the light reaches into a
+ *     32-bit float target; with ShadowSurfaces (or a cookie) takes the shadowed light off the
+ *     surfaces;
  *  3. composites: out = scene * exp(-sigma_t * t_surface) + Exposure * L_in.
  *
  * The in-scattered radiance along the pixel-centre view ray x = eye + t d, up to the first
@@ -44,27 +42,19 @@
  *    perpendicular to a: r = (x - Position) . a is the distance from that plane (so a sun placed
  *    above the scene crosses an explicit depth of medium), l = a, S = A = 1.
  *
- * Within each slab the pass clips the ray exactly to where the light shines and to the
- * surface, integrates A(r) in closed form (exact when c1 = 0), weights the phase, spot and
- * extinction factors with 3-point Gauss-Legendre in the equiangular angle, and looks up the
- * shadow map once, at the segment's midpoint; the error shrinks as the number of slices grows
- * (docs/accuracy.md). Slab fragments that start behind the scene surface are culled by the
- * depth test.
+ * Within each slab the ray is clipped exactly to where the light shines and to the surface,
+ * A(r) is integrated in closed form, the phase, spot and extinction factors with Gauss-Legendre,
+ * and the shadow map is looked up once per segment (docs/accuracy.md).
  *
- * That is the default method, SLICES. SetMethod() selects another way to compute the same
- * L_in: RAY_MARCH (per-pixel march with interleaved sampling), RADIAL_BLUR (screen-space
- * radial blur of an occlusion buffer over the unshadowed integral), ANALYTIC (the unshadowed
- * integral, exact when nothing occludes) or AUTOMATIC; SetLatticeResolution() evaluates the
- * slabs' smooth factors on a lattice. Every method supports every kind of light. README
- * "Methods" has their measured cost and error.
+ * That is the default method, SLICES; SetMethod() selects another way to compute the same
+ * L_in (RAY_MARCH, RADIAL_BLUR, ANALYTIC, EPIPOLAR, LIGHT_VOLUME, AUTOMATIC), each for every
+ * kind of light; README "Methods" has their measured cost and error. A medium from data
+ * (SetMediumDensity) scales sigma_s and sigma_a by its density.
  *
  * With both coefficients zero, or with no usable light, the pass renders the delegate's image
- * unchanged (pixel-identical; one warning for a missing light).
- *
- * The lit pool on surfaces comes from VTK's own lighting, which has no shadows. With
- * ShadowSurfaces on, the pass takes each light's shadowed light off the surfaces with the same
- * shadow maps the shafts use (with any delegate), so floors show the same occluders as the
- * shafts; the cookie shapes the surfaces' light the same way.
+ * unchanged (pixel-identical; one warning for a missing light). VTK's own surface lighting has
+ * no shadows: with ShadowSurfaces on, the pass takes each light's shadowed light off the
+ * surfaces with the shafts' shadow maps (and cookie).
  *
  * @sa vtkImageProcessingPass vtkLightShaftReference
  */
@@ -78,6 +68,7 @@
 
 #include <memory> // For std::unique_ptr (GL objects and state live in Internals)
 
+class vtkAlgorithmOutput;
 class vtkImageData;
 class vtkLight;
 class vtkMatrix4x4;
@@ -213,12 +204,18 @@ public:
    * data; the scalars when no name), trilinear inside the image's bounds (placed by its origin,
    * spacing and direction matrix) and 0 outside (README, "A medium from data"). An image that
    * cannot be one (no such array, not 3D, over 2^27 samples, NaN or negative values) is refused
-   * with an error saying why; the previous field is kept. RAY_MARCH renders it (AUTOMATIC
-   * takes it; other methods give way to it with one warning); vtkLightShaftReference
-   * integrates it exactly. Default is nullptr (homogeneous) and no name.
+   * with an error saying why; the previous field is kept. RAY_MARCH renders it (other methods
+   * give way to it with one warning). Default is nullptr (homogeneous) and no name.
    */
   void SetMediumDensity(vtkImageData* density);
   vtkImageData* GetMediumDensity();
+  /**
+   * The field from a pipeline (replacing SetMediumDensity's image, and the reverse): brought
+   * up to date every frame; an output that cannot be a field gets one error, and the last
+   * usable field is kept. Default is nullptr.
+   */
+  void SetMediumDensityConnection(vtkAlgorithmOutput* output);
+  vtkAlgorithmOutput* GetMediumDensityConnection();
   void SetMediumDensityArrayName(const char* name);
   const char* GetMediumDensityArrayName();
   ///@}
@@ -232,6 +229,17 @@ public:
   vtkGetMacro(MediumDensityScale, double);
   void SetMediumBackgroundDensity(double density);
   vtkGetMacro(MediumBackgroundDensity, double);
+  ///@}
+
+  ///@{
+  /**
+   * The light leg through the field: texels per axis of each light's table of the field's
+   * optical depth (half as many per face of a cube around a light inside the field), built on
+   * the CPU when the field or light moves; 0 marches it at every sample (slower; README, "A
+   * medium from data"). In [0, 256]. Default is 64.
+   */
+  vtkSetClampMacro(MediumShadowResolution, int, 0, 256);
+  vtkGetMacro(MediumShadowResolution, int);
   ///@}
 
   ///@{
@@ -618,14 +626,10 @@ public:
   ///@{
   /**
    * RADIAL_BLUR: extent of the occlusion buffer relative to the screen, in [1, 4] (the
-   * chapter's extended guard band). Above 1 the casters' depth is rendered once more with the
-   * scene camera's frustum widened by this factor about its axis, so occluders outside the
-   * picture (a light off-screen behind them) still cut the shafts on it; 1 uses the screen's
-   * own depth. Cameras with an explicit projection or an off-centre window always use 1.
-   * Measured (README "Methods"): 2 halves the error when the occluders are off the picture,
-   * but costs a second render of the casters, and where the screen-space occluder test
-   * over-darkens (the isosurface scene) its extra occluders raise the error. Non-finite values
-   * are refused. Default is 1.
+   * chapter's guard band): above 1 the casters' depth is rendered again with the frustum
+   * widened by this factor, so occluders off the picture still cut the shafts on it (1: the
+   * screen's depth; always 1 for explicit projections and off-centre windows). Measured in
+   * README "Methods". Non-finite values are refused. Default is 1.
    */
   void SetRadialGuardBand(double extent);
   vtkGetMacro(RadialGuardBand, double);
@@ -634,13 +638,11 @@ public:
   ///@{
   /**
    * Distributed rendering (each process holding part of the scene, e.g. ParaView under MPI):
-   * the world bounds of every process's shadow casters. When set, the light camera's depth
-   * range comes from them rather than from this process's props, so all processes render
-   * their shadow maps with one light camera, and each renders one (cleared when it holds no
-   * caster) whenever any caster reaches into the light's volume; an observer of
-   * ShadowMapRenderedEvent can then combine the maps (their minimum) so that every process
-   * sees every occluder. AUTOMATIC and RADIAL_BLUR decide from them too, so that all processes
-   * take the same path. Default is unset (this process's props).
+   * the world bounds of every process's shadow casters. When set, all processes render their
+   * shadow maps with one light camera (each one, cleared when it holds no caster, whenever any
+   * caster reaches into the light's volume), so that an observer of ShadowMapRenderedEvent can
+   * combine them (their minimum); AUTOMATIC and RADIAL_BLUR decide from them too. Default is
+   * unset (this process's props).
    */
   void SetShadowCasterBounds(const double bounds[6]);
   void UnsetShadowCasterBounds();
@@ -677,9 +679,8 @@ public:
    * predicted error meets the target, or with the most accurate one when none does; it then
    * overrides Method, the method's sampling parameters, AutomaticSliceCount, Jitter,
    * InterleaveSize, BlurRadius, DownsampleFactor, ShadowMapSize and AccumulationPrecision for
-   * that frame (the values set stay, and apply again at 0). The prediction is an upper estimate: on
-   * held-out random scenes at least 90% achieve the target (README "Target error"). Non-finite
-   * values are refused. Default is 0 (off).
+   * that frame (the values set apply again at 0). On held-out random scenes at least 90% meet
+   * the target (README "Target error"). Non-finite values are refused. Default is 0 (off).
    */
   void SetTargetError(double error);
   vtkGetMacro(TargetError, double);
@@ -720,12 +721,10 @@ public:
    * model's ladder (EPIPOLAR, LIGHT_VOLUME and RAY_MARCH settings, as TargetError's), at full
    * resolution if any fits, else at half, else at quarter resolution (DownsampleFactor), the
    * lowest predicted error first; with a TargetError as well, the cheapest of those that fit
-   * and meet it at full resolution; when nothing fits, the cheapest. The frame's time is predicted
-   * by a cost model learnt from the frames the pass renders under a budget (each finished with
-   * glFinish to be measured), starting from the costs measured on the random scenes. While the view
-   * is still the choice is kept (progressive refinement can then converge). The choice overrides
-   * the parameters set for that frame as TargetError's does. Non-finite values are refused.
-   * Default is 0 (off).
+   * and meet it at full resolution; when nothing fits, the cheapest. A cost model learnt from
+   * the frames rendered under a budget (each ended with glFinish) predicts the time. While the
+   * view is still the choice is kept. It overrides the parameters as TargetError does.
+   * Non-finite values are refused. Default is 0 (off).
    */
   void SetTimeBudget(double seconds);
   vtkGetMacro(TimeBudget, double);
@@ -872,7 +871,8 @@ public:
    * that decides it changed (the light, its casters and their data, the map's size and
    * extent); its casters; and the GPU time its in-scatter took (its shadow map, slabs or march
    * and own passes), in milliseconds, measured with OpenGL timer queries of the most recent
-   * frame whose queries completed (-1 where timer queries are not available).
+   * frame whose queries completed (-1 where timer queries are not available); its light-leg
+   * table through a medium from data: bytes (0: none) and build milliseconds (0: reused).
    */
   int GetLastLightKind(int index);
   int GetLastLightMethod(int index);
@@ -881,6 +881,8 @@ public:
   bool GetLastLightShadowMapReused(int index);
   int GetLastLightShadowCasters(int index);
   double GetLastLightTime(int index);
+  double GetLastLightFieldShadowBytes(int index);
+  double GetLastLightFieldShadowBuildTime(int index);
   ///@}
 
   /**
@@ -908,6 +910,7 @@ protected:
   double AbsorptionCoefficient[3] = { 0.0, 0.0, 0.0 };
   double MediumDensityScale = 1.0;
   double MediumBackgroundDensity = 0.0;
+  int MediumShadowResolution = 64;
   int PhaseFunction = ISOTROPIC;
   double Anisotropy = 0.0;
   double Exposure = 1.0;

@@ -22,6 +22,7 @@
 #include "vtkLightShaftSceneRenderer.h" // For the scene
 #include "vtkLightShaftSurfaceLight.h"  // For the surface light
 
+#include "vtkAlgorithm.h"               // For the medium's pipeline
 #include "vtkCallbackCommand.h"         // For the window's deletion
 #include "vtkImageData.h"               // For the medium's density
 #include "vtkNew.h"                     // For vtkNew
@@ -47,6 +48,11 @@ public:
   bool WarnedPointCookie = false;
   vtkSmartPointer<vtkImageData> MediumDensity; ///< SetMediumDensity's image (checked when set)
   std::string MediumDensityArrayName;
+  /// SetMediumDensityConnection's producer and port, and its last output that was an image.
+  vtkSmartPointer<vtkAlgorithm> MediumProducer;
+  int MediumPort = 0;
+  vtkSmartPointer<vtkImageData> MediumOutput;
+  std::string MediumOutputError;
   int FrameCounter = 0;
 
   // The components, in the order a frame uses them.
@@ -85,6 +91,8 @@ public:
     bool shadowSurfaces);
   /// Cookie and noise readied, the sampling chosen, refinement begun (and its shadow-map
   /// shift applied to `lightFrames`); returns the cookie texture (vtkLightShaftPassSampling.cxx).
+  vtkImageData* MediumImage(vtkObject* owner);
+  void ReadyFieldShadow(vtkLightShaftFrame& frame, vtkLightShaftFieldShadow& shadow);
   vtkTextureObject* ChooseSampling(vtkLightShaftFrame& frame,
     const std::vector<vtkLight*>& lights,
     std::vector<vtkLightShaftGeometry::LightFrame>& lightFrames);

@@ -78,6 +78,18 @@ double vtkLightShaftPass::GetLastLightTime(int index)
   return light ? light->Time : -1.0;
 }
 
+double vtkLightShaftPass::GetLastLightFieldShadowBytes(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
+  return light ? light->FieldShadowBytes : 0.0;
+}
+
+double vtkLightShaftPass::GetLastLightFieldShadowBuildTime(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
+  return light ? light->FieldShadowBuildTime : 0.0;
+}
+
 //------------------------------------------------------------------------------
 // What the frame did, as the pass's read-outs: per light, and the totals and first light's
 // values the older read-outs report.

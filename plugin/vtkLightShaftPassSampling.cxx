@@ -101,7 +101,7 @@ vtkTextureObject* vtkLightShaftPass::Internals::ChooseSampling(vtkLightShaftFram
     frame.Noise = this->Textures.ReadyNoise(frame.Window, frame.Owner);
   }
   frame.Density = this->Medium.Ready(
-    frame.Window, frame.Owner, this->MediumDensity, this->MediumDensityArrayName);
+    frame.Window, frame.Owner, this->MediumImage(frame.Owner), this->MediumDensityArrayName);
   frame.DensityField = frame.Density ? &this->Medium : nullptr;
   // What decides the picture, signed only when refinement or a budget asks whether it changed:
   // features that are off cost nothing (a prop's redraw MTime updates its pipeline).
@@ -225,4 +225,27 @@ void vtkLightShaftPass::Internals::ObserveFrameTime(vtkLightShaftFrame& frame,
       shafts,
       total);
   }
+}
+
+//------------------------------------------------------------------------------
+// The light's leg through a medium from data, tabulated (MediumShadowResolution > 0; rebuilt
+// when the field or the light moved), or nothing: the shaders march it.
+void vtkLightShaftPass::Internals::ReadyFieldShadow(vtkLightShaftFrame& frame,
+  vtkLightShaftFieldShadow& shadow)
+{
+  frame.FieldShadow = nullptr;
+  frame.FieldShadowLayout = nullptr;
+  if (!frame.Density || frame.Parameters.MediumShadowResolution == 0)
+  {
+    shadow.ReleaseGraphicsResources(frame.Window);
+    return;
+  }
+  frame.FieldShadow = shadow.Ready(frame.Window,
+    this->Medium.GetField(),
+    this->Medium.GetVersion(),
+    frame.Light.Model,
+    frame.Parameters.MediumShadowResolution);
+  frame.FieldShadowLayout = &shadow;
+  frame.LightStatistics->FieldShadowBytes = static_cast<double>(shadow.GetBytes());
+  frame.LightStatistics->FieldShadowBuildTime = shadow.GetBuildTime();
 }

@@ -1,5 +1,6 @@
 #include "vtkLightShaftShaders.h"
 
+#include "vtkLightShaftFieldShadow.h"
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftGeometry.h"
 #include "vtkLightShaftMediumTexture.h"
@@ -105,6 +106,7 @@ Variant IntegrandVariant(const char* methodName,
   variant.Feature(frame.Cookie != nullptr, "LIGHTSHAFT_COOKIE", "cookie");
   variant.Feature(frame.Noise != nullptr, "LIGHTSHAFT_NOISE", "noise");
   variant.Feature(frame.Density != nullptr, "LIGHTSHAFT_FIELD", "field");
+  variant.Feature(frame.FieldShadow != nullptr, "LIGHTSHAFT_FIELD_SHADOW", "field-shadow");
   // Progressive refinement moves the lookups within each piece (none: nothing to move).
   const bool lookups = shadows || frame.Cookie != nullptr || frame.Noise != nullptr;
   variant.Feature(lookups && frame.LookupFraction != 0.5, "LIGHTSHAFT_REFINE", "refine");
@@ -220,6 +222,42 @@ void SetDensityUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& fra
   program->SetUniformi("densitySteps", DensitySteps(frame.Parameters.NumberOfSteps));
   frame.Density->Activate();
   program->SetUniformi("densityTexture", frame.Density->GetTextureUnit());
+  if (frame.FieldShadow)
+  {
+    SetFieldShadowUniforms(program, frame);
+  }
+}
+
+void SetFieldShadowUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame)
+{
+  const vtkLightShaftFieldShadow::Layout& layout = frame.FieldShadowLayout->GetLayout();
+  // View coordinates -> world -> the face's frame (origin at the light).
+  glm::dmat4 toFace(glm::dmat3(layout.ToFace));
+  toFace[3] = glm::dvec4(-(layout.ToFace * layout.Origin), 1.0);
+  const glm::dmat4 fromVC = toFace * glm::inverse(frame.Camera.WorldToView);
+  program->SetUniformMatrix4x4(
+    "fieldShadowFromVC", vtkLightShaftGeometry::ToFloatColumnMajor(fromVC).data());
+  program->SetUniformi("fieldShadowFaces", layout.Faces);
+  // Texel centres at the range's ends: tc = (0.5 + (x - low) / (high - low) * (n - 1)) / n.
+  float scale[3];
+  float offset[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    const double n = (k < 2) ? layout.Lateral : layout.Depth;
+    const double s = (n - 1.0) / (n * (layout.High[k] - layout.Low[k]));
+    scale[k] = static_cast<float>(s);
+    offset[k] = static_cast<float>(0.5 / n - layout.Low[k] * s);
+  }
+  program->SetUniform3f("fieldShadowScale", scale);
+  program->SetUniform3f("fieldShadowOffset", offset);
+  const float lateral[4] = { static_cast<float>(layout.Low[0]),
+    static_cast<float>(layout.Low[1]),
+    static_cast<float>(layout.High[0]),
+    static_cast<float>(layout.High[1]) };
+  program->SetUniform4f("fieldShadowLateral", lateral);
+  program->SetUniformf("fieldShadowDepth", static_cast<float>(layout.Depth));
+  frame.FieldShadow->Activate();
+  program->SetUniformi("fieldShadowTexture", frame.FieldShadow->GetTextureUnit());
 }
 
 void SetLightSpaceUniforms(vtkShaderProgram* program,

@@ -108,6 +108,9 @@ int DensitySteps(int viewSteps);
 /// The density field's uniforms (LIGHTSHAFT_FIELD) and its texture, activated.
 void SetDensityUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame);
 
+/// The light leg's table through the field (LIGHTSHAFT_FIELD_SHADOW) and its texture, activated.
+void SetFieldShadowUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame);
+
 /**
  * The LightSpace chunk's uniforms for the frame's current light and a target `width` pixels
  * wide: the light's square and footprints (cookie and noise levels), and with `shadowMap`

@@ -154,7 +154,8 @@ void vtkLightShaftSlabDrawer::Draw(vtkLightShaftFrame& frame,
   this->DrawBatch(program, false, frame);
 
   slabs.Depth->Deactivate();
-  for (vtkTextureObject* t : { slabs.ShadowMap, frame.Cookie, frame.Noise, frame.Density })
+  for (vtkTextureObject* t :
+    { slabs.ShadowMap, frame.Cookie, frame.Noise, frame.Density, frame.FieldShadow })
   {
     if (t)
     {

@@ -62,3 +62,54 @@ float lightShaftOpticalDepth(vec3 aVC, vec3 bVC)
   return len * (densityBackground + densityScale * inside);
 }
 #endif
+
+#ifdef LIGHTSHAFT_FIELD_SHADOW
+// The light leg's field part, precomputed per light (vtkLightShaftFieldShadow): the integral of
+// rho from the light to the point, tabulated in the light's frame. One face (orthographic for a
+// directional light, else perspective) or six (a cube around the light, world-axis aligned).
+uniform sampler3D fieldShadowTexture;
+uniform mat4 fieldShadowFromVC; // view coordinates to the face's frame (the cube's: world axes)
+uniform int fieldShadowFaces;   // 1 or 6
+uniform vec3 fieldShadowScale;  // (u, v, w) to texture coordinates: offset + scale * (u, v, w)
+uniform vec3 fieldShadowOffset;
+uniform vec4 fieldShadowLateral; // a single face's (u, v) range: rays outside it miss the field
+uniform float fieldShadowDepth;  // texels along w per face
+
+float lightShaftFieldShadow(vec3 pointVC)
+{
+  vec3 q = (fieldShadowFromVC * vec4(pointVC, 1.0)).xyz;
+  vec3 uvw;
+  float face = 0.0;
+  if (fieldShadowFaces == 6)
+  {
+    vec3 a = abs(q);
+    int k = (a.x >= a.y && a.x >= a.z) ? 0 : ((a.y >= a.z) ? 1 : 2);
+    float major = max(a[k], 1e-30);
+    uvw = vec3(q[(k + 1) % 3] / major, q[(k + 2) % 3] / major, length(q));
+    face = float(2 * k + ((q[k] < 0.0) ? 1 : 0));
+  }
+  else
+  {
+#ifdef LIGHTSHAFT_DIRECTIONAL
+    uvw = q;
+#else
+    if (q.z <= 0.0)
+    {
+      return 0.0;
+    }
+    uvw = vec3(q.xy / q.z, length(q));
+#endif
+    if (any(lessThan(uvw.xy, fieldShadowLateral.xy)) ||
+      any(greaterThan(uvw.xy, fieldShadowLateral.zw)))
+    {
+      return 0.0;
+    }
+  }
+  vec3 tc = fieldShadowOffset + fieldShadowScale * uvw;
+  // Within the face's own layers: before the first texel centre tau is 0 (the field starts
+  // later), past the last it stays the box's total.
+  tc.z = (clamp(tc.z, 0.5 / fieldShadowDepth, 1.0 - 0.5 / fieldShadowDepth) + face) /
+    float(fieldShadowFaces);
+  return texture(fieldShadowTexture, tc).r;
+}
+#endif

@@ -130,8 +130,14 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
 #else
   vec3 sourceVC = lightPositionVC;
 #endif
-  float depth =
-    lightShaftOpticalDepthSoFar + 0.5 * segmentDepth + lightShaftOpticalDepth(sampleVC, sourceVC);
+#ifdef LIGHTSHAFT_FIELD_SHADOW
+  // The light leg: the background over its length, the field's part looked up.
+  float lightLeg = densityBackground * length(sourceVC - sampleVC) +
+    densityScale * lightShaftFieldShadow(sampleVC);
+#else
+  float lightLeg = lightShaftOpticalDepth(sampleVC, sourceVC);
+#endif
+  float depth = lightShaftOpticalDepthSoFar + 0.5 * segmentDepth + lightLeg;
   lightShaftOpticalDepthSoFar += segmentDepth;
   smoothMean *= density * exp(-sigmaT * depth);
 #endif

@@ -67,6 +67,8 @@ def main():
     parser.add_argument("--size", default="640x480")
     parser.add_argument("--frames", type=int, default=5)
     parser.add_argument("--steps", type=int, default=64)
+    parser.add_argument("--resolutions", type=int, nargs="+", default=[0, 64, 128],
+                        help="MediumShadowResolution values (0: the light leg marched)")
     args = parser.parse_args()
     width, height = (int(v) for v in args.size.split("x"))
     renderer, window, plain, shafts = rh.window_scene(width, height)
@@ -77,23 +79,33 @@ def main():
     homogeneous = median_shaft_frame(window, shafts, args.frames)
     print(f"window scene {width}x{height}, RAY_MARCH {args.steps} steps; plain frame "
           f"{1e3 * plain:.1f} ms")
-    print("| medium | frame | shafts | shafts / homogeneous | first frame extra (upload) "
-          "| texture |")
-    print("|---|---:|---:|---:|---:|---:|")
-    print(f"| homogeneous | {1e3 * homogeneous:.0f} ms | {1e3 * (homogeneous - plain):.0f} ms "
-          f"| 1.00 | | |")
+    print("| medium | light leg | frame | shafts | shafts / homogeneous | first frame extra "
+          "| light-leg build | light-leg table | field texture |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
+    print(f"| homogeneous | | {1e3 * homogeneous:.0f} ms | {1e3 * (homogeneous - plain):.0f} ms "
+          f"| 1.00 | | | | |")
     for samples in (64, 128, 256):
         field = wavelet_field(samples, bounds)
         shafts.SetMediumDensity(field)
-        start = time.perf_counter()
-        window.Render()
-        window.WaitForCompletion()
-        first = time.perf_counter() - start
-        frame = median_shaft_frame(window, shafts, args.frames)
-        ratio = (frame - plain) / (homogeneous - plain)
-        memory = samples ** 3 * 4 / 2 ** 20
-        print(f"| wavelet {samples}³ | {1e3 * frame:.0f} ms | {1e3 * (frame - plain):.0f} ms "
-              f"| {ratio:.2f} | {1e3 * (first - frame):.0f} ms | {memory:.0f} MiB |")
+        for resolution in args.resolutions:
+            shafts.SetMediumShadowResolution(resolution)
+            start = time.perf_counter()
+            window.Render()
+            window.WaitForCompletion()
+            first = time.perf_counter() - start
+            build = sum(shafts.GetLastLightFieldShadowBuildTime(i)
+                        for i in range(shafts.GetLastNumberOfUsedLights()))
+            table = sum(shafts.GetLastLightFieldShadowBytes(i)
+                        for i in range(shafts.GetLastNumberOfUsedLights()))
+            frame = median_shaft_frame(window, shafts, args.frames)
+            ratio = (frame - plain) / (homogeneous - plain)
+            memory = samples ** 3 * 4 / 2 ** 20
+            leg = f"table {resolution}" if resolution else "marched"
+            build_text = f"{build:.0f} ms" if resolution else ""
+            table_text = f"{table / 2 ** 20:.1f} MiB" if resolution else ""
+            print(f"| wavelet {samples}³ | {leg} | {1e3 * frame:.0f} ms "
+                  f"| {1e3 * (frame - plain):.0f} ms | {ratio:.2f} | {1e3 * (first - frame):.0f} ms "
+                  f"| {build_text} | {table_text} | {memory:.0f} MiB |", flush=True)
         shafts.SetMediumDensity(None)
 
 

@@ -1,0 +1,257 @@
+#include "vtkLightShaftFieldShadow.h"
+
+#include "vtkLightShaftDensityField.h"
+#include "vtkLightShaftOpenGL.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkSMPTools.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace
+{
+// A unit vector perpendicular to `axis` (unit), from the world axis least aligned with it.
+glm::dvec3 Perpendicular(const glm::dvec3& axis)
+{
+  const glm::dvec3 a = glm::abs(axis);
+  const glm::dvec3 helper = (a.x <= a.y && a.x <= a.z) ? glm::dvec3(1.0, 0.0, 0.0)
+                            : (a.y <= a.z)             ? glm::dvec3(0.0, 1.0, 0.0)
+                                                       : glm::dvec3(0.0, 0.0, 1.0);
+  return glm::normalize(glm::cross(helper, axis));
+}
+
+// Rows right, up, forward: world directions to the face's frame.
+glm::dmat3 FaceFrame(const glm::dvec3& right, const glm::dvec3& up, const glm::dvec3& forward)
+{
+  return glm::transpose(glm::dmat3(right, up, forward));
+}
+}
+
+vtkLightShaftFieldShadow::vtkLightShaftFieldShadow() = default;
+vtkLightShaftFieldShadow::~vtkLightShaftFieldShadow() = default;
+
+//------------------------------------------------------------------------------
+void vtkLightShaftFieldShadow::Layout::Column(int face,
+  int i,
+  int j,
+  glm::dvec3& origin,
+  glm::dvec3& direction) const
+{
+  const double u = this->Low[0] + (this->High[0] - this->Low[0]) * i / (this->Lateral - 1);
+  const double v = this->Low[1] + (this->High[1] - this->Low[1]) * j / (this->Lateral - 1);
+  const glm::dmat3 fromFace = glm::transpose(this->ToFace);
+  if (this->Orthographic)
+  {
+    origin = this->Origin + fromFace * glm::dvec3(u, v, 0.0);
+    direction = fromFace[2];
+    return;
+  }
+  origin = this->Origin;
+  if (this->Faces == 1)
+  {
+    direction = glm::normalize(fromFace * glm::dvec3(u, v, 1.0));
+    return;
+  }
+  const int k = face / 2;
+  glm::dvec3 q(0.0);
+  q[k] = (face % 2) ? -1.0 : 1.0;
+  q[(k + 1) % 3] = u;
+  q[(k + 2) % 3] = v;
+  direction = glm::normalize(q);
+}
+
+double vtkLightShaftFieldShadow::Layout::DepthAt(int k) const
+{
+  return this->Low[2] + (this->High[2] - this->Low[2]) * k / (this->Depth - 1);
+}
+
+//------------------------------------------------------------------------------
+vtkLightShaftFieldShadow::Layout vtkLightShaftFieldShadow::Plan(
+  const vtkLightShaftDensityField& field,
+  const vtkLightShaftModel::Light& light,
+  int resolution)
+{
+  Layout layout;
+  layout.Lateral = std::max(resolution, 2);
+  layout.Depth = layout.Lateral;
+  layout.Origin = light.Position;
+  double corners[8][3];
+  field.Corners(corners);
+  auto project = [&](bool perspective, double low[3], double high[3])
+  {
+    bool inFront = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      low[k] = HUGE_VAL;
+      high[k] = -HUGE_VAL;
+    }
+    for (const double* corner : corners)
+    {
+      const glm::dvec3 q =
+        layout.ToFace * (glm::dvec3(corner[0], corner[1], corner[2]) - layout.Origin);
+      inFront = inFront && q.z > 0.0;
+      const glm::dvec3 uvw = perspective ? glm::dvec3(q.x / q.z, q.y / q.z, glm::length(q)) : q;
+      for (int k = 0; k < 3; ++k)
+      {
+        low[k] = std::min(low[k], uvw[k]);
+        high[k] = std::max(high[k], uvw[k]);
+      }
+      // (The box is convex: no point of it is nearer the light than its corners' least q.z.)
+      low[2] = std::min(low[2], perspective ? q.z : uvw.z);
+    }
+    return inFront;
+  };
+
+  if (light.Kind == vtkLightShaftModel::LightKind::Directional)
+  {
+    // From the light's plane (q.z = 0) or the box, whichever is later, to the box's far side.
+    layout.Orthographic = true;
+    layout.ToFace = FaceFrame(light.Right, light.Up, light.Axis);
+    project(false, layout.Low, layout.High);
+    layout.Low[2] = std::max(layout.Low[2], 0.0);
+  }
+  else
+  {
+    glm::dvec3 centre(0.0);
+    for (const double* corner : corners)
+    {
+      centre += glm::dvec3(corner[0], corner[1], corner[2]) / 8.0;
+    }
+    const glm::dvec3 toCentre = centre - layout.Origin;
+    const double distance = glm::length(toCentre);
+    bool single = distance > 0.0;
+    if (single)
+    {
+      const glm::dvec3 forward = toCentre / distance;
+      const glm::dvec3 right = Perpendicular(forward);
+      layout.ToFace = FaceFrame(right, glm::cross(forward, right), forward);
+      single = project(true, layout.Low, layout.High) &&
+               std::max({ -layout.Low[0], -layout.Low[1], layout.High[0], layout.High[1] }) <=
+                 MaximumFaceTangent;
+    }
+    if (!single)
+    {
+      layout.Faces = 6;
+      layout.ToFace = glm::dmat3(1.0);
+      layout.Lateral = std::max(resolution / 2, 2);
+      layout.Depth = layout.Lateral;
+      double farthest = 0.0;
+      for (const double* corner : corners)
+      {
+        farthest = std::max(
+          farthest, glm::length(glm::dvec3(corner[0], corner[1], corner[2]) - layout.Origin));
+      }
+      layout.Low[0] = layout.Low[1] = -1.0;
+      layout.High[0] = layout.High[1] = 1.0;
+      layout.Low[2] = 0.0;
+      layout.High[2] = farthest;
+    }
+  }
+  // A box behind a directional light's plane, or flat: keep a non-empty range.
+  for (int k = 0; k < 3; ++k)
+  {
+    const double scale = std::max(std::abs(layout.Low[k]), std::abs(layout.High[k]));
+    layout.High[k] = std::max(layout.High[k], layout.Low[k] + 1e-9 * scale + 1e-30);
+  }
+  return layout;
+}
+
+//------------------------------------------------------------------------------
+std::vector<float> vtkLightShaftFieldShadow::Integrate(const vtkLightShaftDensityField& field,
+  const Layout& layout)
+{
+  std::vector<float> values(layout.Values());
+  const int n = layout.Lateral;
+  const int columns = layout.Faces * n * n;
+  std::vector<double> depths(layout.Depth);
+  for (int k = 0; k < layout.Depth; ++k)
+  {
+    depths[k] = layout.DepthAt(k);
+  }
+  const int stride = n * n;
+  vtkSMPTools::For(0,
+    columns,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType column = first; column < last; ++column)
+      {
+        const int face = static_cast<int>(column / stride);
+        const int j = static_cast<int>(column % stride) / n;
+        const int i = static_cast<int>(column % n);
+        glm::dvec3 origin;
+        glm::dvec3 direction;
+        layout.Column(face, i, j, origin, direction);
+        const double o[3] = { origin.x, origin.y, origin.z };
+        const double d[3] = { direction.x, direction.y, direction.z };
+        float* out = values.data() + static_cast<std::size_t>(face) * layout.Depth * stride +
+                     static_cast<std::size_t>(j) * n + i;
+        field.Cumulative(o, d, 0.0, depths.data(), layout.Depth, out, stride);
+      }
+    });
+  return values;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftFieldShadow::Ready(vtkOpenGLRenderWindow* window,
+  const vtkLightShaftDensityField& field,
+  vtkMTimeType fieldTime,
+  const vtkLightShaftModel::Light& light,
+  int resolution)
+{
+  const int kind = static_cast<int>(light.Kind);
+  const bool directional = light.Kind == vtkLightShaftModel::LightKind::Directional;
+  // (A directional light's position matters only through its plane, a positional one's axis
+  // not at all; comparing both is simpler and only rebuilds in those rare cases.)
+  if (this->Texture && fieldTime == this->FieldTime && kind == this->Kind &&
+      resolution == this->Resolution && light.Position == this->Position &&
+      (!directional || light.Axis == this->Axis))
+  {
+    this->BuildTime = 0.0;
+    return this->Texture;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  this->Current = Plan(field, light, resolution);
+  const std::vector<float> values = Integrate(field, this->Current);
+  if (this->Texture)
+  {
+    this->Texture->ReleaseGraphicsResources(window); // (the size may change)
+  }
+  {
+    this->Texture = vtkSmartPointer<vtkTextureObject>::New();
+    this->Texture->SetContext(window);
+    this->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    this->Texture->SetWrapR(vtkTextureObject::ClampToEdge);
+    this->Texture->SetMinificationFilter(vtkTextureObject::Linear);
+    this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
+    this->Texture->SetInternalFormat(GL_R32F);
+    this->Texture->SetFormat(GL_RED);
+    this->Texture->SetDataType(GL_FLOAT);
+  }
+  this->Texture->Create3DFromRaw(this->Current.Lateral,
+    this->Current.Lateral,
+    this->Current.Depth * this->Current.Faces,
+    1,
+    VTK_FLOAT,
+    const_cast<float*>(values.data()));
+  this->FieldTime = fieldTime;
+  this->Kind = kind;
+  this->Resolution = resolution;
+  this->Position = light.Position;
+  this->Axis = light.Axis;
+  this->BuildTime =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return this->Texture;
+}
+
+void vtkLightShaftFieldShadow::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Texture)
+  {
+    this->Texture->ReleaseGraphicsResources(window);
+  }
+  this->Texture = nullptr;
+  this->Kind = -1;
+}

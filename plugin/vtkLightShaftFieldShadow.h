@@ -1,0 +1,128 @@
+/**
+ * @class   vtkLightShaftFieldShadow
+ * @brief   The light leg through a medium from data: the density field's integral from a light
+ *          to every point, precomputed in the light's frame as a 3D texture (private, not
+ *          installed).
+ *
+ * The extinction of the light that reaches a sample of a view ray is exp(-sigma_t * tau), tau
+ * the optical depth from the light to the sample. Marching that leg for every sample costs a
+ * loop per step; instead, as Frostbite's and Unreal's volumetric shadows do, tau of the field is
+ * tabulated once per light in the light's frame, and each sample looks it up. The texture holds
+ * the integral of rho alone: MediumDensityScale and the background (a straight length) are
+ * applied in the shader, so changing them rebuilds nothing. It is rebuilt when the field or the
+ * light's position or direction changes.
+ *
+ * Its layout (Plan, no GL):
+ * - a directional light: one orthographic face along the light's direction over the field's
+ *   box, from the light's plane (or the box, whichever is later) to the box's far side;
+ * - a spot or point light outside the field's box, seeing it within MaximumFaceTangent: one
+ *   perspective face aimed at the box's centre over the box's projection, radial distance from
+ *   the box's nearest to its farthest point;
+ * - otherwise (the light inside or next to the box) the six faces of a cube around the light,
+ *   world-axis aligned, radial distance from 0.
+ * Along a face's lateral axes and its depth the texel centres sit at the grid's ends, so that
+ * the texture is interpolated, not extrapolated, over the whole range. Rays outside a single
+ * face's range miss the box (tau = 0); beyond the far end tau stays its value at the box's exit.
+ *
+ * The values are the field's exact integrals (vtkLightShaftDensityField::Cumulative, float64,
+ * stored as float32): the only approximation is the texture's trilinear interpolation.
+ */
+
+#ifndef vtkLightShaftFieldShadow_h
+#define vtkLightShaftFieldShadow_h
+
+#include "vtkLightShaftModel.h" // For the light
+#include "vtkSmartPointer.h"    // For the texture held
+#include "vtkType.h"            // For vtkMTimeType
+
+#include <glm/glm.hpp> // For the faces' frames
+
+#include <vector> // For the values
+
+class vtkLightShaftDensityField;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkLightShaftFieldShadow
+{
+public:
+  vtkLightShaftFieldShadow();
+  ~vtkLightShaftFieldShadow();
+
+  /// A single face sees the box within this tangent of its half-angle (63 degrees).
+  static constexpr double MaximumFaceTangent = 2.0;
+
+  /**
+   * Where the texture's values lie. Face coordinates q = ToFace * (x - Origin) (world x); a
+   * face's (u, v, w) is (q.x, q.y, q.z) orthographic, (q.x / q.z, q.y / q.z, |q|) perspective.
+   * Cube face f = 2 k + (q_k < 0) for the major axis k of q (ToFace the identity), with
+   * (u, v, w) = (q_{k+1} / |q_k|, q_{k+2} / |q_k|, |q|).
+   */
+  struct Layout
+  {
+    int Faces = 1; ///< 1 or 6 (cube)
+    bool Orthographic = false;
+    int Lateral = 0; ///< texels along u and along v
+    int Depth = 0;   ///< texels along w, per face
+    glm::dvec3 Origin{ 0.0 };
+    glm::dmat3 ToFace{ 1.0 };
+    double Low[3] = { -1.0, -1.0, 0.0 }; ///< (u, v, w) at the first texel centres
+    double High[3] = { 1.0, 1.0, 1.0 };  ///< and at the last
+
+    /// The ray through texel column (face, i, j): its origin and unit direction in world.
+    void Column(int face, int i, int j, glm::dvec3& origin, glm::dvec3& direction) const;
+    /// w of depth texel k.
+    double DepthAt(int k) const;
+    std::size_t Bytes() const { return sizeof(float) * Values(); }
+    std::size_t Values() const
+    {
+      return static_cast<std::size_t>(this->Lateral) * this->Lateral * this->Depth * this->Faces;
+    }
+  };
+
+  /**
+   * The layout for `light` over `field`'s box, `resolution` texels along each axis of a single
+   * face (half of it for each of a cube's six).
+   */
+  static Layout Plan(const vtkLightShaftDensityField& field,
+    const vtkLightShaftModel::Light& light,
+    int resolution);
+
+  /// The integrals of rho from the light along every texel column (x fastest, then y, then w).
+  static std::vector<float> Integrate(const vtkLightShaftDensityField& field, const Layout& layout);
+
+  /**
+   * The texture for `light` through `field` (uploaded at `fieldTime`), built again when either
+   * changed or `resolution` did.
+   */
+  vtkTextureObject* Ready(vtkOpenGLRenderWindow* window,
+    const vtkLightShaftDensityField& field,
+    vtkMTimeType fieldTime,
+    const vtkLightShaftModel::Light& light,
+    int resolution);
+
+  const Layout& GetLayout() const { return this->Current; }
+
+  /// The last build's time (ms; 0: the texture was reused) and the texture's size (bytes).
+  double GetBuildTime() const { return this->BuildTime; }
+  std::size_t GetBytes() const { return this->Texture ? this->Current.Bytes() : 0; }
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkLightShaftFieldShadow(const vtkLightShaftFieldShadow&) = delete;
+  void operator=(const vtkLightShaftFieldShadow&) = delete;
+
+  vtkSmartPointer<vtkTextureObject> Texture;
+  Layout Current;
+  // What the texture was built for.
+  vtkMTimeType FieldTime = 0;
+  glm::dvec3 Position{ 0.0 };
+  glm::dvec3 Axis{ 0.0 };
+  int Kind = -1;
+  int Resolution = 0;
+  double BuildTime = 0.0;
+};
+
+#endif
