@@ -32,18 +32,38 @@ vtkLightShaftMethod* vtkLightShaftInScatter::GetMethod(int method)
 }
 
 //------------------------------------------------------------------------------
+bool vtkLightShaftInScatter::RendersField(int method)
+{
+  return method == vtkLightShaftPass::SLICES || method == vtkLightShaftPass::RAY_MARCH ||
+         method == vtkLightShaftPass::EPIPOLAR;
+}
+
+//------------------------------------------------------------------------------
 // AUTOMATIC takes the exact unshadowed integral when nothing can shadow the light's volume and
-// the medium is homogeneous, else the slabs; RAY_MARCH for a medium from data, which the other
-// methods give way to (saying so once). ANALYTIC says once that it ignores the shadows
-// props could cast; LIGHT_VOLUME says once that it gives way to RAY_MARCH.
+// the medium is homogeneous, else the slabs; RAY_MARCH for a medium from data, which the
+// methods that cannot render one give way to (saying so once). ANALYTIC says once that it ignores
+// the shadows props could cast; LIGHT_VOLUME says once that it gives way to RAY_MARCH.
 int vtkLightShaftInScatter::ChooseMethod(const vtkLightShaftFrame& frame)
 {
   int method = frame.Parameters.Method;
   if (method == vtkLightShaftPass::AUTOMATIC)
   {
     const bool noise = frame.Parameters.NoiseAmplitude > 0.0;
-    method = (!frame.Light.ShadowsPossible && !noise) ? vtkLightShaftPass::ANALYTIC
-                                                      : vtkLightShaftPass::SLICES;
+    method = frame.Density                              ? vtkLightShaftPass::RAY_MARCH
+             : (!frame.Light.ShadowsPossible && !noise) ? vtkLightShaftPass::ANALYTIC
+                                                        : vtkLightShaftPass::SLICES;
+  }
+  if (frame.Density && !vtkLightShaftInScatter::RendersField(method))
+  {
+    if (!this->WarnedFieldMethod)
+    {
+      vtkWarningWithObjectMacro(frame.Owner,
+        "A medium from data (MediumDensity) is rendered by SLICES, RAY_MARCH and EPIPOLAR: "
+        "RAY_MARCH computes the shafts instead of method "
+          << vtkLightShaftPass::GetMethodName(method) << ".");
+      this->WarnedFieldMethod = true;
+    }
+    return vtkLightShaftPass::RAY_MARCH;
   }
   if (method == vtkLightShaftPass::ANALYTIC && !frame.Light.Casters.empty() &&
       !this->WarnedAnalyticShadows)
@@ -53,19 +73,6 @@ int vtkLightShaftInScatter::ChooseMethod(const vtkLightShaftFrame& frame)
         << frame.Light.Casters.size()
         << " prop(s) reach into the light's volume: use SLICES or AUTOMATIC for shadowed shafts.");
     this->WarnedAnalyticShadows = true;
-  }
-  if (frame.Density && method != vtkLightShaftPass::RAY_MARCH)
-  {
-    // (AUTOMATIC takes RAY_MARCH for a field without a word.)
-    if (!this->WarnedFieldMethod && frame.Parameters.Method != vtkLightShaftPass::AUTOMATIC)
-    {
-      vtkWarningWithObjectMacro(frame.Owner,
-        "A medium from data (MediumDensity) is rendered by RAY_MARCH only so far: RAY_MARCH "
-        "computes the shafts instead of method "
-          << vtkLightShaftPass::GetMethodName(method) << ".");
-      this->WarnedFieldMethod = true;
-    }
-    return vtkLightShaftPass::RAY_MARCH;
   }
   if (method == vtkLightShaftPass::LIGHT_VOLUME && (frame.Cookie || frame.Noise))
   {

@@ -41,6 +41,8 @@ public:
   /// vtkLightShaftPass::SetMethod), with one warning when ANALYTIC ignores possible shadows,
   /// and one when LIGHT_VOLUME gives way to RAY_MARCH for a cookie or noise.
   int ChooseMethod(const vtkLightShaftFrame& frame);
+  /// Whether `method` renders a medium from data (the others give way to RAY_MARCH).
+  static bool RendersField(int method);
   /// Start the frame: the depth the shafts read, no light added.
   void Begin(vtkLightShaftFrame& frame);
 

@@ -46,6 +46,7 @@ public:
   vtkNew<vtkCallbackCommand> WindowDeleted;
   unsigned long WindowDeletedTag = 0;
   bool WarnedPointCookie = false;
+  bool WarnedFieldTarget = false;
   vtkSmartPointer<vtkImageData> MediumDensity; ///< SetMediumDensity's image (checked when set)
   std::string MediumDensityArrayName;
   /// SetMediumDensityConnection's producer and port, and its last output that was an image.
@@ -101,7 +102,7 @@ public:
   static double FrameBudget(const vtkLightShaftFrame& frame);
   void ApplyErrorModel(vtkLightShaftFrame& frame,
     const std::vector<vtkLightShaftGeometry::LightFrame>& lights,
-    bool cookieOrNoise,
+    bool noLightVolume,
     bool still);
   /// A measured frame: `shafts` seconds of in-scatter of `total` (the cost model learns).
   void ObserveFrameTime(vtkLightShaftFrame& frame, double shafts, double total);

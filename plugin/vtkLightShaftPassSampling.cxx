@@ -112,7 +112,7 @@ vtkTextureObject* vtkLightShaftPass::Internals::ChooseSampling(vtkLightShaftFram
           : vtkLightShaftRefinement::Signature();
   this->ApplyErrorModel(frame,
     lightFrames,
-    cookie != nullptr || frame.Noise != nullptr,
+    cookie != nullptr || frame.Noise != nullptr || frame.Density != nullptr,
     signs && this->Refinement.IsStill(signature));
   vtkLightShaftRefinement::SetSampling(signature, frame);
   this->Refinement.Begin(frame, std::move(signature));
@@ -145,10 +145,13 @@ double vtkLightShaftPass::Internals::FrameBudget(const vtkLightShaftFrame& frame
 // The frame's sampling: with a frame budget, the most accurate (ladder setting, resolution)
 // the cost model predicts will fit, the choice kept while the view is still; else with a
 // target error, the cheapest setting predicted to meet it on every lit light; else the
-// parameters set, with the model's prediction when they are one of its settings.
+// parameters set, with the model's prediction when they are one of its settings. LIGHT_VOLUME's
+// settings are left out where it has no closed form (cookie, noise, a medium from data). The
+// model has no feature for a medium from data: with one it predicts nothing, and a target
+// error is not applied (said once).
 void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
   const std::vector<vtkLightShaftGeometry::LightFrame>& lights,
-  bool cookieOrNoise,
+  bool noLightVolume,
   bool still)
 {
   std::vector<model::Features> features;
@@ -182,7 +185,7 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
     {
       this->BudgetOfChoice = frame.Statistics.TimeBudget;
       this->BudgetChoice = this->Costs.Choose(
-        frame.Statistics.TimeBudget, p.TargetError, features, !cookieOrNoise, pixels, lit);
+        frame.Statistics.TimeBudget, p.TargetError, features, !noLightVolume, pixels, lit);
       this->HasBudgetChoice = true;
     }
     const vtkLightShaftCostModel::Choice& choice = this->BudgetChoice;
@@ -193,10 +196,21 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
     frame.Statistics.PredictedFrameTime = choice.Seconds;
     frame.Statistics.BudgetLights = lit;
   }
+  else if (p.TargetError > 0.0 && frame.Density)
+  {
+    this->HasBudgetChoice = false;
+    if (!this->WarnedFieldTarget)
+    {
+      vtkWarningWithObjectMacro(frame.Owner,
+        "TargetError: the error model has no feature for a medium from data (MediumDensity), so "
+        "the target is not applied while a field is set: the parameters set are used.");
+      this->WarnedFieldTarget = true;
+    }
+  }
   else if (p.TargetError > 0.0)
   {
     this->HasBudgetChoice = false;
-    setting = model::Choose(p.TargetError, features, !cookieOrNoise, predicted);
+    setting = model::Choose(p.TargetError, features, !noLightVolume, predicted);
     const model::Setting& chosen = model::GetSetting(setting);
     ApplySetting(frame, chosen, chosen.DownsampleFactor, lights);
   }
@@ -207,7 +221,7 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
     predicted = setting >= 0 ? model::Predict(setting, features) : -1.0;
   }
   frame.Statistics.ErrorModelSetting = setting;
-  frame.Statistics.PredictedError = predicted;
+  frame.Statistics.PredictedError = frame.Density ? -1.0 : predicted;
 }
 
 //------------------------------------------------------------------------------

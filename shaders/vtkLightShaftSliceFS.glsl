@@ -4,7 +4,8 @@
 // SLICES: one fragment of slab slabIndex integrates the pixel's view ray over the slab (its
 // view-depth interval), cut at the cone and the scene surface. Features (#defines):
 // LIGHTSHAFT_PHASE_HG / _RAYLEIGH (else isotropic), LIGHTSHAFT_SHADOW, LIGHTSHAFT_COOKIE,
-// LIGHTSHAFT_NOISE, LIGHTSHAFT_LATTICE, LIGHTSHAFT_JITTER, LIGHTSHAFT_ACCUMULATE_8BIT.
+// LIGHTSHAFT_NOISE, LIGHTSHAFT_LATTICE, LIGHTSHAFT_JITTER, LIGHTSHAFT_ACCUMULATE_8BIT,
+// LIGHTSHAFT_FIELD (and _FIELD_SHADOW).
 //VTK::LightShaft::Features
 
 flat in float slabIndex;
@@ -47,6 +48,12 @@ void main()
   {
     discard;
   }
+#ifdef LIGHTSHAFT_FIELD
+  // A medium from data: the view ray's extinction up to this slab (each slab is its own
+  // fragment: no running sum as RAY_MARCH's), the light leg's in lightShaftSegment.
+  lightShaftOpticalDepthSoFar =
+    lightShaftOpticalDepth(ray.originVC, ray.originVC + (ray.x0 - ray.b) * ray.dirVC);
+#endif
   vec3 radiance = lightShaftSegment(ray.originVC, ray.dirVC, ray.b, ray.h2, ray.x0, ray.x1);
 
 #ifdef LIGHTSHAFT_ACCUMULATE_8BIT
