@@ -39,7 +39,8 @@ vtkDataArray* DensityArray(vtkImageData* image, const char* name, bool& cells, s
   }
   if (!array)
   {
-    why = "has no point or cell scalars (name the array with SetMediumDensityArrayName)";
+    why = "has no point or cell scalars (name its array with SetMediumDensityArrayName before "
+          "setting it)";
   }
   return array;
 }

@@ -15,6 +15,8 @@
 #                                      # (the cost model's exponents; docs/budget.md)
 #   tools/measure.sh medium-field      # a density field's cost against the homogeneous
 #                                      # medium (docs/medium-field.md; about 1 min)
+#   tools/measure.sh medium-field-pareto  # each method through a plume: speed against
+#                                      # error (docs/medium-field.md; about 2 min)
 #   tools/measure.sh worst-corners     # the slider corners (docs/robustness.md)
 #   tools/measure.sh random-scenes     # 50 random scenes: presets, methods, targets, the
 #                                      # fitted ladder (TargetError's cost against the oracle)
@@ -57,6 +59,7 @@ case "$what" in
   reprojection) run tests/benchmarks/reprojection_bound.py --output docs/reprojection.md "$@" ;;
   resolution-cost) run tests/benchmarks/resolution_cost.py "$@" ;;
   medium-field) run tests/benchmarks/medium_field_cost.py "$@" ;;
+  medium-field-pareto) run tests/benchmarks/medium_field_pareto.py "$@" ;;
   worst-corners) run tests/benchmarks/worst_corners.py "$@" ;;
   random-scenes)
     run tests/benchmarks/random_scenes.py --validation --seed 0 --scenes 50 --max-height 720 \

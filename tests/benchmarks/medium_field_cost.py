@@ -67,6 +67,8 @@ def main():
     parser.add_argument("--size", default="640x480")
     parser.add_argument("--frames", type=int, default=5)
     parser.add_argument("--steps", type=int, default=64)
+    parser.add_argument("--samples", type=int, nargs="+", default=[64, 128, 256],
+                        help="the fields' samples per axis")
     parser.add_argument("--resolutions", type=int, nargs="+", default=[0, 64, 128],
                         help="MediumShadowResolution values (0: the light leg marched)")
     args = parser.parse_args()
@@ -84,7 +86,7 @@ def main():
     print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
     print(f"| homogeneous | | {1e3 * homogeneous:.0f} ms | {1e3 * (homogeneous - plain):.0f} ms "
           f"| 1.00 | | | | |")
-    for samples in (64, 128, 256):
+    for samples in args.samples:
         field = wavelet_field(samples, bounds)
         shafts.SetMediumDensity(field)
         for resolution in args.resolutions:

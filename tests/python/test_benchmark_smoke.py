@@ -196,3 +196,29 @@ def test_resolution_cost_smoke():
     assert result.returncode == 0, result.stderr
     rows = [line for line in result.stdout.splitlines() if line.startswith("| ") and " ms |" in line]
     assert len(rows) == 4
+
+
+def test_medium_field_benchmarks_smoke(tmp_path):
+    # The cost of a field (with the light leg marched and tabulated) and the methods' speed
+    # against error through a plume: they run, and every method that renders a field is on
+    # the Pareto plot.
+    here = os.path.dirname(BENCHMARK)
+    result = subprocess.run([sys.executable, os.path.join(here, "medium_field_cost.py"),
+                             "--size", "64x48", "--frames", "1", "--samples", "16",
+                             "--resolutions", "0", "16"],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    assert "| wavelet 16³ | marched |" in result.stdout
+    assert "| wavelet 16³ | table 16 |" in result.stdout
+    result = subprocess.run([sys.executable, os.path.join(here, "medium_field_pareto.py"),
+                             "--size", "48", "36", "--frames", "1",
+                             "--output-dir", str(tmp_path)],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    with open(tmp_path / "medium-field-pareto.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert {r["family"] for r in rows} == {"RAY_MARCH", "RAY_MARCH, light leg marched",
+                                           "SLICES", "EPIPOLAR"}
+    assert all(0.0 < float(r["time_ratio"]) and 0.0 <= float(r["relative_rmse"]) < 0.5
+               for r in rows)
+    assert (tmp_path / "images" / "medium_field_pareto.png").stat().st_size > 10000
