@@ -346,6 +346,45 @@ void vtkLightShaftDensityField::Cumulative(const double origin[3],
   }
 }
 
+vtkLightShaftDensityField vtkLightShaftDensityField::Resampled(int maximum) const
+{
+  vtkLightShaftDensityField out;
+  double step[3]; // this field's point index per point of the resampled one
+  for (int k = 0; k < 3; ++k)
+  {
+    const int points = this->Samples[k] > maximum ? maximum : this->Points[k];
+    out.Samples[k] = out.Points[k] = std::max(points, 2);
+    step[k] = (this->Points[k] - 1.0) / (out.Points[k] - 1.0);
+    out.Origin[k] = this->Origin[k];
+  }
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      out.IndexToWorld[r][c] = this->IndexToWorld[r][c] * step[c];
+      out.WorldToIndex[r][c] = this->WorldToIndex[r][c] / step[r];
+    }
+  }
+  out.Values.resize(std::size_t(out.Samples[0]) * out.Samples[1] * out.Samples[2]);
+  std::size_t i = 0;
+  for (int z = 0; z < out.Samples[2]; ++z)
+  {
+    for (int y = 0; y < out.Samples[1]; ++y)
+    {
+      for (int x = 0; x < out.Samples[0]; ++x, ++i)
+      {
+        // (The last point lands on the far bound exactly, not an ulp beyond.)
+        const double p[3] = { std::min(x * step[0], this->Points[0] - 1.0),
+          std::min(y * step[1], this->Points[1] - 1.0),
+          std::min(z * step[2], this->Points[2] - 1.0) };
+        out.Values[i] = static_cast<float>(this->DensityAtIndex(p));
+        out.Maximum = std::max(out.Maximum, static_cast<double>(out.Values[i]));
+      }
+    }
+  }
+  return out;
+}
+
 void vtkLightShaftDensityField::Corners(double corners[8][3]) const
 {
   for (int c = 0; c < 8; ++c)

@@ -88,6 +88,13 @@ public:
     float* out,
     int stride) const;
 
+  /**
+   * This field resampled to at most `maximum` samples along each axis (an axis with more
+   * gets `maximum` points spanning its bounds, trilinear samples of this field), as point
+   * data over the same bounds; an axis within it keeps its points.
+   */
+  vtkLightShaftDensityField Resampled(int maximum) const;
+
   /// The bounds' eight corners in world coordinates (corner c: index box bit k of c).
   void Corners(double corners[8][3]) const;
 

@@ -37,8 +37,19 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
   const int* samples = field.GetSamples();
   if (why.empty() && (samples[0] > maximum || samples[1] > maximum || samples[2] > maximum))
   {
-    why = "has more samples along an axis than this GL's 3D textures hold (" +
-          std::to_string(maximum) + "; resample it, e.g. with vtkImageResample)";
+    if (image != this->Resampled) // (said once per image, not at each of its updates)
+    {
+      vtkWarningWithObjectMacro(owner,
+        "MediumDensity: the image has " << samples[0] << " x " << samples[1] << " x " << samples[2]
+                                        << " samples, more along an axis than this "
+                                        << "GL's 3D textures hold (" << maximum
+                                        << "): it is resampled to " << maximum
+                                        << " along that axis (vtkLightShaftReference integrates "
+                                        << "it as it is).");
+      this->Resampled = image;
+    }
+    field = field.Resampled(maximum);
+    samples = field.GetSamples();
   }
   if (!why.empty())
   {

@@ -73,6 +73,7 @@ private:
   std::string ArrayName;
   vtkMTimeType UploadTime = 0;
   vtkMTimeType Version = 0;
+  vtkImageData* Resampled = nullptr; ///< the image last said to be resampled (only compared)
   /// The image last refused, as it was then (only compared: refused once, not read again).
   vtkImageData* Refused = nullptr;
   vtkMTimeType RefusedTime = 0;

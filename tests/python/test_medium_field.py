@@ -528,3 +528,30 @@ def test_a_target_error_is_not_applied_to_a_field_and_says_so_once(messages):
     shafts.SetMediumDensity(None)
     window.Render()
     assert shafts.GetLastPredictedError() > 0.0
+
+
+def test_an_image_over_the_gl_3d_texture_size_is_resampled_with_one_warning(messages):
+    # More samples along x than this GL's 3D textures hold: resampled to that many along x (one
+    # warning per image), the reference integrates the image as it is. A linear field is
+    # reproduced exactly by the resampling, so the picture stays within the usual bound.
+    from vtkmodules.vtkRenderingOpenGL2 import vtkTextureObject
+    renderer, window, info, shafts = marching()
+    limit = vtkTextureObject.GetMaximumTextureSize3D(window)
+    image = field_image(linear, samples=3)
+    image.SetDimensions(2 * limit + 1, 3, 3)
+    image.SetSpacing(2.0 * HALF / (2 * limit), 2.0 * HALF, 2.0 * HALF)
+    image.SetOrigin(-HALF, -HALF, -HALF)
+    image.SetDirectionMatrix(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)
+    x = -HALF + image.GetSpacing()[0] * np.arange(2 * limit + 1)
+    grid = np.meshgrid(x, [-HALF, 0.0, HALF], [-HALF, 0.0, HALF], indexing="ij")
+    values = linear(*grid).transpose(2, 1, 0)  # (z, y, x): x fastest when raveled
+    image.GetPointData().SetScalars(numpy_to_vtk(values.ravel(), deep=True))
+    log = messages(shafts)
+    shafts.SetMediumDensity(image)
+    picture = rendered(window, shafts)
+    rendered(window, shafts)
+    assert len(log.warnings) == 1 and f"resampled to {limit} along that axis" in log.warnings[0]
+    assert not log.errors
+    expected, _, _ = cpp_reference(renderer, shafts, VisibilityMode=1)
+    error, _ = ref.relative_rms_error(picture, expected)
+    assert expected.max() > 0.0 and error < 0.002
