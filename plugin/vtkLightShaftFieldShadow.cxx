@@ -1,7 +1,7 @@
 #include "vtkLightShaftFieldShadow.h"
 
 #include "vtkLightShaftDensityField.h"
-#include "vtkLightShaftOpenGL.h"
+#include "vtkLightShaftResources.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkSMPTools.h"
 #include "vtkTextureObject.h"
@@ -214,28 +214,12 @@ vtkTextureObject* vtkLightShaftFieldShadow::Ready(vtkOpenGLRenderWindow* window,
   const auto start = std::chrono::steady_clock::now();
   this->Current = Plan(field, light, resolution);
   const std::vector<float> values = Integrate(field, this->Current);
-  if (this->Texture)
-  {
-    this->Texture->ReleaseGraphicsResources(window); // (the size may change)
-  }
-  {
-    this->Texture = vtkSmartPointer<vtkTextureObject>::New();
-    this->Texture->SetContext(window);
-    this->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
-    this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
-    this->Texture->SetWrapR(vtkTextureObject::ClampToEdge);
-    this->Texture->SetMinificationFilter(vtkTextureObject::Linear);
-    this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
-    this->Texture->SetInternalFormat(GL_R32F);
-    this->Texture->SetFormat(GL_RED);
-    this->Texture->SetDataType(GL_FLOAT);
-  }
-  this->Texture->Create3DFromRaw(this->Current.Lateral,
+  vtkLightShaftResources::UploadFloatVolume(this->Texture,
+    window,
+    values.data(),
     this->Current.Lateral,
-    this->Current.Depth * this->Current.Faces,
-    1,
-    VTK_FLOAT,
-    const_cast<float*>(values.data()));
+    this->Current.Lateral,
+    this->Current.Depth * this->Current.Faces);
   this->FieldTime = fieldTime;
   this->Kind = kind;
   this->Resolution = resolution;

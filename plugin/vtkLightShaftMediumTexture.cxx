@@ -2,6 +2,7 @@
 
 #include "vtkImageData.h"
 #include "vtkLightShaftOpenGL.h"
+#include "vtkLightShaftResources.h"
 #include "vtkObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkTextureObject.h"
@@ -63,22 +64,8 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
     return this->Texture;
   }
   this->Refused = nullptr;
-  if (this->Texture)
-  {
-    this->Texture->ReleaseGraphicsResources(window);
-  }
-  this->Texture = vtkSmartPointer<vtkTextureObject>::New();
-  this->Texture->SetContext(window);
-  this->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  this->Texture->SetWrapR(vtkTextureObject::ClampToEdge);
-  this->Texture->SetMinificationFilter(vtkTextureObject::Linear);
-  this->Texture->SetMagnificationFilter(vtkTextureObject::Linear);
-  this->Texture->SetInternalFormat(GL_R32F);
-  this->Texture->SetFormat(GL_RED);
-  this->Texture->SetDataType(GL_FLOAT);
-  this->Texture->Create3DFromRaw(
-    samples[0], samples[1], samples[2], 1, VTK_FLOAT, const_cast<float*>(field.GetValues().data()));
+  vtkLightShaftResources::UploadFloatVolume(
+    this->Texture, window, field.GetValues().data(), samples[0], samples[1], samples[2]);
   this->Field = std::move(field);
   this->Image = image;
   this->ArrayName = arrayName;

@@ -183,6 +183,31 @@ void BindTargets(vtkOpenGLFramebufferObject* fbo,
 }
 
 //------------------------------------------------------------------------------
+void UploadFloatVolume(vtkSmartPointer<vtkTextureObject>& texture,
+  vtkOpenGLRenderWindow* window,
+  const float* values,
+  int width,
+  int height,
+  int depth)
+{
+  if (texture)
+  {
+    texture->ReleaseGraphicsResources(window);
+  }
+  texture = vtkSmartPointer<vtkTextureObject>::New();
+  texture->SetContext(window);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetWrapR(vtkTextureObject::ClampToEdge);
+  texture->SetMinificationFilter(vtkTextureObject::Linear);
+  texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  texture->SetInternalFormat(GL_R32F);
+  texture->SetFormat(GL_RED);
+  texture->SetDataType(GL_FLOAT);
+  texture->Create3DFromRaw(width, height, depth, 1, VTK_FLOAT, const_cast<float*>(values));
+}
+
+//------------------------------------------------------------------------------
 void UploadMipmapped(vtkSmartPointer<vtkTextureObject>& texture,
   vtkOpenGLRenderWindow* window,
   const std::vector<float>& texels,

@@ -104,6 +104,15 @@ void UploadMipmapped(vtkSmartPointer<vtkTextureObject>& texture,
   int components,
   bool repeat);
 
+/// A linearly filtered, edge-clamped single-channel float32 3D texture of `values` (x fastest),
+/// replacing `texture`'s (its size may change).
+void UploadFloatVolume(vtkSmartPointer<vtkTextureObject>& texture,
+  vtkOpenGLRenderWindow* window,
+  const float* values,
+  int width,
+  int height,
+  int depth);
+
 /**
  * Samples per pixel of the bound draw framebuffer (the window's multisampled render
  * framebuffer, or an outer pass's target), 0 when it is not multisampled or when multisampled
