@@ -32,7 +32,18 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
     return this->Texture; // (refused as it is: said once, not read again)
   }
   vtkLightShaftDensityField field;
-  std::string why = field.Read(image, arrayName.c_str());
+  std::string why;
+  if (image == this->AdoptedImage && image->GetMTime() == this->AdoptedTime &&
+      arrayName == this->AdoptedName)
+  {
+    field = std::move(this->AdoptedField); // (read by the pass's setter: not read twice)
+  }
+  else
+  {
+    why = field.Read(image, arrayName.c_str());
+  }
+  this->AdoptedImage = nullptr;
+  this->AdoptedField = vtkLightShaftDensityField();
   GLint maximum = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maximum);
   const int* samples = field.GetSamples();
@@ -72,6 +83,16 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
   this->UploadTime = image->GetMTime();
   ++this->Version;
   return this->Texture;
+}
+
+void vtkLightShaftMediumTexture::Adopt(vtkImageData* image,
+  const std::string& arrayName,
+  vtkLightShaftDensityField&& field)
+{
+  this->AdoptedField = std::move(field);
+  this->AdoptedImage = image;
+  this->AdoptedTime = image ? image->GetMTime() : 0;
+  this->AdoptedName = arrayName;
 }
 
 glm::dmat4 vtkLightShaftMediumTexture::TextureFromWorld() const

@@ -45,6 +45,12 @@ public:
     vtkImageData* image,
     const std::string& arrayName);
 
+  /**
+   * The field the pass's setter read from `image` (as it is now) with `arrayName`: the next
+   * Ready for them uses it instead of reading the image again.
+   */
+  void Adopt(vtkImageData* image, const std::string& arrayName, vtkLightShaftDensityField&& field);
+
   /// The field the texture holds.
   const vtkLightShaftDensityField& GetField() const { return this->Field; }
 
@@ -73,6 +79,11 @@ private:
   std::string ArrayName;
   vtkMTimeType UploadTime = 0;
   vtkMTimeType Version = 0;
+  /// The field adopted from the setter, and the image, time and name it was read for.
+  vtkLightShaftDensityField AdoptedField;
+  vtkImageData* AdoptedImage = nullptr;
+  vtkMTimeType AdoptedTime = 0;
+  std::string AdoptedName;
   vtkImageData* Resampled = nullptr; ///< the image last said to be resampled (only compared)
   /// The image last refused, as it was then (only compared: refused once, not read again).
   vtkImageData* Refused = nullptr;

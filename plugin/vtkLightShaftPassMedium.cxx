@@ -17,6 +17,7 @@ void vtkLightShaftPass::SetMediumDensity(vtkImageData* density)
     vtkErrorMacro("MediumDensity: the image " << why << "; the previous density field is kept.");
     return;
   }
+  this->Impl->Medium.Adopt(density, this->Impl->MediumDensityArrayName, std::move(field));
   if (this->Impl->MediumDensity != density || this->Impl->MediumProducer)
   {
     this->Impl->MediumDensity = density;
@@ -69,6 +70,10 @@ void vtkLightShaftPass::SetMediumDensityArrayName(const char* name)
     vtkErrorMacro(
       "MediumDensityArrayName: the density image " << why << "; the previous name is kept.");
     return;
+  }
+  if (density)
+  {
+    this->Impl->Medium.Adopt(density, wanted, std::move(field));
   }
   if (this->Impl->MediumDensityArrayName != wanted)
   {
