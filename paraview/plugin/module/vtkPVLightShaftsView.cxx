@@ -226,6 +226,16 @@ double vtkPVLightShaftsView::GetLastTimeBudget()
   return this->Impl->Shafts->GetLastTimeBudget();
 }
 
+const char* vtkPVLightShaftsView::GetLastShaderVariant()
+{
+  return this->Impl->Shafts->GetLastShaderVariant();
+}
+
+double vtkPVLightShaftsView::GetLastMediumShadowBuildTime()
+{
+  return this->Impl->Shafts->GetLastLightFieldShadowBuildTime(0);
+}
+
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::UpdateImageProcessing()
 {
@@ -671,6 +681,36 @@ void vtkPVLightShaftsView::SetNoiseVelocity1(double u, double v)
 void vtkPVLightShaftsView::SetNoiseVelocity2(double u, double v)
 {
   this->Impl->Shafts->SetNoiseVelocity2(u, v);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetMediumDensityConnection(vtkAlgorithmOutput* output)
+{
+  this->Impl->Shafts->SetMediumDensityConnection(output);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetMediumDensityArray(const char* name)
+{
+  this->Impl->Shafts->SetMediumDensityArrayName(name);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetMediumDensityScale(double scale)
+{
+  this->Impl->Shafts->SetMediumDensityScale(scale);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetMediumBackgroundDensity(double density)
+{
+  this->Impl->Shafts->SetMediumBackgroundDensity(density);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetMediumShadowResolution(int resolution)
+{
+  this->Impl->Shafts->SetMediumShadowResolution(resolution);
 }
 
 //------------------------------------------------------------------------------

@@ -28,6 +28,7 @@
 
 #include <memory> // For std::unique_ptr (state lives in Internals)
 
+class vtkAlgorithmOutput;
 class vtkLight;
 class vtkLightShaftPass;
 
@@ -61,6 +62,16 @@ public:
   bool GetRefinementConverged();
   int GetRefinementEstimates();
   double GetLastTimeBudget();
+  ///@}
+
+  ///@{
+  /**
+   * The last render's shader variant and its first light's light-leg table build time
+   * (vtkLightShaftPass::GetLastShaderVariant, GetLastLightFieldShadowBuildTime(0)), for
+   * scripts: the information properties LastShaderVariant and LastMediumShadowBuildTime.
+   */
+  const char* GetLastShaderVariant();
+  double GetLastMediumShadowBuildTime();
   ///@}
 
   ///@{
@@ -194,6 +205,21 @@ public:
   void SetNoiseScale(double scale);
   void SetNoiseVelocity1(double u, double v);
   void SetNoiseVelocity2(double u, double v);
+  ///@}
+
+  ///@{
+  /**
+   * A medium from data, forwarded to vtkLightShaftPass (same ranges and defaults): the
+   * MediumDensity property's pipeline output (a vtkImageData, brought up to date at each
+   * render; none: the homogeneous medium), its array (MediumDensityArray: point or cell data,
+   * the first component; empty: the scalars), scale, background density and the light leg's
+   * table resolution.
+   */
+  void SetMediumDensityConnection(vtkAlgorithmOutput* output);
+  void SetMediumDensityArray(const char* name);
+  void SetMediumDensityScale(double scale);
+  void SetMediumBackgroundDensity(double density);
+  void SetMediumShadowResolution(int resolution);
   ///@}
 
   ///@{
