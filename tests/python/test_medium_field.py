@@ -218,6 +218,10 @@ def test_bad_images_are_refused_and_the_previous_field_kept(messages):
     shafts.SetMediumDensityScale(-1.0)
     shafts.SetMediumBackgroundDensity(1e9)
     assert (shafts.GetMediumDensityScale(), shafts.GetMediumBackgroundDensity()) == (0.0, 1e6)
+    shafts.SetMediumShadowResolution(-5)
+    assert shafts.GetMediumShadowResolution() == 0
+    shafts.SetMediumShadowResolution(100000)
+    assert shafts.GetMediumShadowResolution() == 256
     shafts.SetMediumDensity(None)
     assert shafts.GetMediumDensity() is None
 
