@@ -117,6 +117,8 @@ cmake -S examples/cpp -B build/example -DCMAKE_BUILD_TYPE=Release >> build.log
 cmake --build build/example -j "$jobs" >> build.log
 
 echo "== rendering the example scene offscreen"
-xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" /usr/bin/python3 examples/window_shafts.py -o window_shafts.png
-xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" build/example/window_shafts window_shafts_cpp.png
+# (LIGHTSHAFTS_XVFB_SERVERNUM: the first display number tried; tools/test.sh says why.)
+xvfb=(xvfb-run -a -n "${LIGHTSHAFTS_XVFB_SERVERNUM:-99}" -s "-screen 0 1280x1024x24 -noreset")
+"${xvfb[@]}" /usr/bin/python3 examples/window_shafts.py -o window_shafts.png
+"${xvfb[@]}" build/example/window_shafts window_shafts_cpp.png
 echo "== done: window_shafts.png (Python) and window_shafts_cpp.png (C++)"

@@ -10,6 +10,9 @@
 #      release's VTK has it, VTK 9.4 and later; it says when the release has no headless route);
 #   4. prints one line per release, with what it has (VTK, ParaView, PyVista, Python) and the
 #      suites' counts, then "N passed, N failed"; the exit status is non-zero when any failed.
+# The releases run side by side (their downloads and installs overlap), each with its own X
+# display numbers (LIGHTSHAFTS_XVFB_SERVERNUM: 110 for the first, 120 for the second, ...; the
+# machine's own lane keeps 99).
 #
 #   tools/test-distros.sh [trixie] [sid]
 #
@@ -23,7 +26,9 @@
 #
 # Environment: LIGHTSHAFTS_DISTROS_ROOT (default /opt/lightshafts/distros),
 # LIGHTSHAFTS_DEBIAN_MIRROR (default http://deb.debian.org/debian),
-# LIGHTSHAFTS_DISTRO_TIMEOUT (seconds per step, default 3600).
+# LIGHTSHAFTS_DISTRO_TIMEOUT (seconds per step, default 3600), LIGHTSHAFTS_DISTROS_PYTEST_MARK
+# (a pytest -m expression for tools/test.sh's Python tests, default none: all of them; CI gives
+# "not sweep", conftest.py).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 checkout=$PWD
@@ -31,6 +36,7 @@ checkout=$PWD
 distros_root=${LIGHTSHAFTS_DISTROS_ROOT:-/opt/lightshafts/distros}
 mirror=${LIGHTSHAFTS_DEBIAN_MIRROR:-http://deb.debian.org/debian}
 timeout_s=${LIGHTSHAFTS_DISTRO_TIMEOUT:-3600}
+pytest_mark=${LIGHTSHAFTS_DISTROS_PYTEST_MARK:-}
 releases=("$@")
 [ ${#releases[@]} -gt 0 ] || releases=(trixie sid)
 
@@ -96,18 +102,21 @@ make_root() {
   mount --bind "$cache" "$root/var/cache/apt/archives"
 }
 
-# Runs $2... inside the root $1 as a new user's root shell would, in /root/LightShafts.
+# Runs $3... inside the root $1 as a new user's root shell would, in /root/LightShafts, with X
+# display numbers from $2 on.
 inside() {
-  local root=$1
-  shift
+  local root=$1 servernum=$2
+  shift 2
   chroot "$root" /usr/bin/env -i HOME=/root LANG=C.UTF-8 TERM=dumb \
     PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+    LIGHTSHAFTS_XVFB_SERVERNUM="$servernum" \
     bash -c 'cd /root/LightShafts && "$@"' bash "$@"
 }
 
 # One release: its root, the README's two commands and the headless script; prints its line.
+# $2: its first X display number.
 test_release() {
-  local release=$1 root=$distros_root/$1 log=$distros_root/$1.log
+  local release=$1 servernum=$2 root=$distros_root/$1 log=$distros_root/$1.log
   local cache=$distros_root/apt-cache/$1 status=0 start steps="" step_start outcome
   start=$(date +%s)
   : > "$log"
@@ -117,10 +126,12 @@ test_release() {
   fi
   for step in quickstart.sh test.sh test-headless.sh; do
     step_start=$(date +%s)
-    echo "== [$release] tools/$step" >> "$log"
+    local args=()
+    [ "$step" = test.sh ] && [ -n "$pytest_mark" ] && args=(-m "$pytest_mark")
+    echo "== [$release] tools/$step ${args[*]}" >> "$log"
     outcome=0
     timeout "$timeout_s" bash -c "$(declare -f inside); inside \"\$@\"" bash "$root" \
-      "tools/$step" >> "$log" 2>&1 || outcome=$?
+      "$servernum" "tools/$step" "${args[@]}" >> "$log" 2>&1 || outcome=$?
     steps+="${steps:+, }$step $(($(date +%s) - step_start)) s"
     if [ "$outcome" -ne 0 ]; then
       status=1
@@ -160,12 +171,19 @@ test_release() {
 passed=0
 failed=0
 lines=()
-for release in "${releases[@]}"; do
-  if line=$(test_release "$release"); then
+pids=()
+for i in "${!releases[@]}"; do
+  test_release "${releases[$i]}" $((110 + 10 * i)) > "$distros_root/${releases[$i]}.line" &
+  pids+=($!)
+done
+for i in "${!releases[@]}"; do
+  if wait "${pids[$i]}"; then
     passed=$((passed + 1))
   else
     failed=$((failed + 1))
   fi
+  line=$(cat "$distros_root/${releases[$i]}.line")
+  [ -n "$line" ] || line="${releases[$i]}: FAILED: it printed no result ($distros_root/${releases[$i]}.log)"
   echo "$line"
   lines+=("$line")
 done

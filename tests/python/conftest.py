@@ -80,6 +80,13 @@ def pytest_configure(config):
         "filterwarnings",
         r"error::DeprecationWarning:(test_|lightshafts|render_helpers|lightshaft_reference|"
         r"vtk_output)")
+    # The sweeps: one code path over many parameter values, a numerical bound per case, or the
+    # benchmark scripts. CI runs them on Debian 12; the other releases' lanes leave them out
+    # (tools/test-distros.sh with LIGHTSHAFTS_DISTROS_PYTEST_MARK="not sweep"), and run every
+    # other test: the API, the methods, the light kinds, the features, PyVista, the examples.
+    config.addinivalue_line(
+        "markers", "sweep: a parameter sweep or numerical bound that no VTK version changes "
+        "(left out of CI's Debian 13 and unstable lanes)")
 
 
 def pytest_addoption(parser):

@@ -6,6 +6,11 @@ import os
 import subprocess
 import sys
 
+import pytest
+
+# A sweep (conftest.py): the benchmark scripts.
+pytestmark = pytest.mark.sweep
+
 BENCHMARK = os.path.join(os.path.dirname(__file__), "..", "benchmarks", "benchmark.py")
 
 

@@ -20,6 +20,10 @@ import lightshaft_reference as ref
 import render_helpers as rh
 from vtk_output import ANALYTIC_IGNORES_SHADOWS, VTK_OUTPUT
 
+# A sweep (conftest.py): numerical stability at the extremes: the shaders' arithmetic, which no VTK
+# version changes (the GL limits: LightShaftContexts, on every release).
+pytestmark = pytest.mark.sweep
+
 
 METHODS = ["slices", "ray-march", "radial-blur", "analytic", "epipolar", "light-volume"]
 # RADIAL_BLUR measures 6% on the test scene's default view (README); at the extremes (eye in

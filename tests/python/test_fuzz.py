@@ -23,6 +23,7 @@ import resource
 import time
 
 import numpy as np
+import pytest
 
 from lightshafts import scenes, vtkLightShaftPass
 from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkImageData
@@ -34,6 +35,9 @@ from vtkmodules.vtkCommonMath import vtkMatrix4x4
 
 import render_helpers as rh
 from vtk_output import VTK_OUTPUT, Messages
+
+# A sweep (conftest.py): random parameter sequences through the same calls the other tests make.
+pytestmark = pytest.mark.sweep
 
 # A run-away frame, not a slow one: the process's CPU time (every thread's: llvmpipe renders on
 # all cores), which a busy machine does not inflate as it does the wall time. Measured here

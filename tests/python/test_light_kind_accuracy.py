@@ -28,6 +28,10 @@ import lightshaft_reference as ref
 import render_helpers as rh
 from vtk_output import ANALYTIC_IGNORES_SHADOWS, VTK_OUTPUT
 
+# A sweep (conftest.py): the in-scatter against the float64 reference per kind and method
+# (LightShaftAccuracy checks it on every release).
+pytestmark = pytest.mark.sweep
+
 KINDS = ["spot", "point", "directional", "pair"]
 WIDTH, HEIGHT = 200, 150
 FINAL_RELATIVE_RMS_BOUND = 0.02

@@ -10,6 +10,10 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 import lightshaft_reference as ref
 import render_helpers as rh
 
+# A sweep (conftest.py): the float64 references against each other and the pass (LightShaftAccuracy
+# checks the pass against it on every release).
+pytestmark = pytest.mark.sweep
+
 
 def cpp_reference(renderer, shafts, **params):
     reference = vtkLightShaftReference()
