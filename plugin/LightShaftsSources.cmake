@@ -31,7 +31,9 @@ set(lightshafts_private_classes
   vtkLightShaftShadowMap
   vtkLightShaftSlabDrawer
   vtkLightShaftSlicesMethod
-  vtkLightShaftSurfaceLight)
+  vtkLightShaftSurfaceLight
+  vtkLightShaftTranslucentLayers
+  vtkLightShaftTranslucentPeel)
 # vtkLightShaftPass's read-outs and its choice of sampling are compiled with it (the public
 # class's second and third source files).
 set(lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassMedium.cxx"

@@ -62,6 +62,7 @@ struct vtkLightShaftParameters
   int EpipolarStep{};
   int LightVolumeResolution{};
   int MediumShadowResolution{};
+  int TranslucentLayers{}; ///< the most layers of translucent casters (0: they cast nothing)
   double Decay{};
   double Density{};
   double Weight{};
@@ -153,6 +154,10 @@ struct vtkLightShaftFrame
   /// what the frame records of it.
   vtkLightShaftGeometry::LightFrame Light;
   vtkLightShaftShadowMap* ShadowMap = nullptr;
+  /// Its translucent casters' layers side by side (nullptr: none) and how many, set when its
+  /// shadow map is readied (vtkLightShaftShadowMap::Ready).
+  vtkTextureObject* Translucency = nullptr;
+  int TranslucentLayers = 0;
   vtkLightShaftLightStatistics* LightStatistics = nullptr;
   /// The lights that radiate this frame: they share the frame's segment budget.
   int RadiatingLights = 1;

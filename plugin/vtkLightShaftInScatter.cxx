@@ -4,8 +4,10 @@
 #include "vtkLightShaftPass.h"
 
 #include "vtkObject.h"
+#include "vtkProp.h"
 #include "vtkTextureObject.h"
 
+#include <algorithm>
 #include <initializer_list>
 
 //------------------------------------------------------------------------------
@@ -74,15 +76,23 @@ int vtkLightShaftInScatter::ChooseMethod(const vtkLightShaftFrame& frame)
         << " prop(s) reach into the light's volume: use SLICES or AUTOMATIC for shadowed shafts.");
     this->WarnedAnalyticShadows = true;
   }
-  if (method == vtkLightShaftPass::LIGHT_VOLUME && (frame.Cookie || frame.Noise))
+  const bool translucent =
+    frame.Parameters.TranslucentLayers > 0 &&
+    std::any_of(frame.Light.Casters.begin(),
+      frame.Light.Casters.end(),
+      [](vtkProp* prop) { return prop->HasTranslucentPolygonalGeometry() != 0; });
+  if (method == vtkLightShaftPass::LIGHT_VOLUME && (frame.Cookie || frame.Noise || translucent))
   {
-    // The unshadowed integral up to a crossing is in closed form only without them.
+    // The unshadowed integral up to a crossing is in closed form only without them; its mesh
+    // is the opaque casters' shadow.
     if (!this->WarnedLightVolumeFeatures)
     {
       vtkWarningWithObjectMacro(frame.Owner,
-        "Method LIGHT_VOLUME has no closed form with a "
-          << (frame.Cookie ? "cookie" : "density noise") << ": RAY_MARCH computes the shafts of "
-          << "a light that has one.");
+        "Method LIGHT_VOLUME has no closed form with "
+          << (frame.Cookie   ? "a cookie"
+               : frame.Noise ? "density noise"
+                             : "translucent casters")
+          << ": RAY_MARCH computes the shafts of a light that has one.");
       this->WarnedLightVolumeFeatures = true;
     }
     method = vtkLightShaftPass::RAY_MARCH;

@@ -42,6 +42,11 @@ struct vtkLightShaftLightStatistics
   /// milliseconds its build took this frame (0: reused).
   double FieldShadowBytes = 0.0;
   double FieldShadowBuildTime = 0.0;
+  /// Its translucent casters' layers (vtkLightShaftTranslucentLayers): how many (0: none),
+  /// their bytes, and whether they were peeled this frame (not reused).
+  int TranslucentLayers = 0;
+  double TranslucentBytes = 0.0;
+  bool TranslucentLayersRendered = false;
   std::string ShaderVariant;
   vtkWeakPointer<vtkLight> Light;
 };

@@ -691,6 +691,7 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
   p.EpipolarStep = self.EpipolarStep;
   p.LightVolumeResolution = self.LightVolumeResolution;
   p.MediumShadowResolution = self.MediumShadowResolution;
+  p.TranslucentLayers = self.TranslucentShadows ? self.TranslucentShadowLayers : 0;
   p.Decay = self.Decay;
   p.Density = self.Density;
   p.Weight = self.Weight;
@@ -881,6 +882,8 @@ void vtkLightShaftPass::Internals::RenderLight(vtkLightShaftFrame& frame,
     stats.Time = seconds > 0.0 ? 1e3 * seconds : -1.0;
   }
   frame.ShadowMap = nullptr;
+  frame.Translucency = nullptr;
+  frame.TranslucentLayers = 0;
   frame.FieldShadow = nullptr;
   frame.FieldShadowLayout = nullptr;
 }
@@ -932,6 +935,8 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EpipolarStep: " << this->EpipolarStep << "\n";
   os << indent << "LightVolumeResolution: " << this->LightVolumeResolution << "\n";
   os << indent << "MediumShadowResolution: " << this->MediumShadowResolution << "\n";
+  os << indent << "TranslucentShadows: " << this->TranslucentShadows << "\n";
+  os << indent << "TranslucentShadowLayers: " << this->TranslucentShadowLayers << "\n";
   os << indent << "Decay: " << this->Decay << "\n";
   os << indent << "Density: " << this->Density << "\n";
   os << indent << "Weight: " << this->Weight << "\n";

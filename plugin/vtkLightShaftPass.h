@@ -11,28 +11,24 @@
  *   renderer->SetPass(shafts);
  * @endcode
  *
- * Every frame the pass
- *  1. renders the scene through its delegate (else as vtkRenderStepsPass would, keeping the 2D
- *     overlays for the end, on top and unfogged) into an off-screen colour + depth target;
- *  2. for each light that scatters (the renderer's switched-on spot and point lights, or those
- *     given with SetLight / AddLight, directional ones included): renders a depth map of what
- *     can shadow its light (perspective for a spot, a cube of six for a point light,
- *     orthographic for a directional one; kept while nothing that decides it changes) and adds
- *     the in-scattered radiance over the part of the view volume the light reaches into a
- *     32-bit float target; with ShadowSurfaces (or a cookie) takes the shadowed light off the
- *     surfaces;
- *  3. composites: out = scene * exp(-sigma_t * t_surface) + Exposure * L_in.
+ * Every frame the pass renders the scene through its delegate (else as vtkRenderStepsPass
+ * would, the 2D overlays kept for the end) off screen; for each light that scatters (SetLight,
+ * AddLight, else the renderer's spot and point lights) renders a depth map of what can shadow
+ * it (perspective, a cube of six for a point light, orthographic for a directional one; kept
+ * while nothing that decides it changes) and adds the in-scattered radiance where it shines;
+ * then composites: out = scene * exp(-sigma_t * t_surface) + Exposure * L_in.
  *
  * The in-scattered radiance along the pixel-centre view ray x = eye + t d, up to the first
  * surface (or the far clipping plane) at distance t_s, is the sum over the lights of
  *
  *   L_in = int_0^{t_s} sigma_s p(cos theta) I S(x) A(r) V(x) exp(-sigma_t r) exp(-sigma_t t) dt
  *
- * with I = intensity * diffuse colour, V the shadow-map visibility, sigma_t = sigma_s + sigma_a
- * per colour channel, and p the phase function normalised over the sphere. theta is the
- * scattering angle between the light's propagation direction l and the direction towards the
- * eye, -d: cos theta = -d . l, so Henyey-Greenstein with g > 0 is forward scattering (brightest
- * looking into the light). Per kind of light (LightKindType):
+ * with I = intensity * diffuse colour, V the shadow map's visibility (times the transmittance
+ * of the translucent casters in front), sigma_t = sigma_s + sigma_a per colour channel, and p the
+ * phase function normalised over the sphere. theta is the scattering angle between the light's
+ * propagation direction l and the direction towards the eye, -d: cos theta = -d . l, so
+ * Henyey-Greenstein with g > 0 is forward scattering (brightest looking into the light). Per kind
+ * of light (LightKindType):
  *  - spot (positional, cone angle below 90 degrees): r = |x - light|, l = (x - light) / r, S the
  *    VTK spot term (0 outside the cone half-angle GetConeAngle(), else cos(angle to the
  *    axis)^GetExponent()), A = 1 / (c0 + c1 r + c2 r^2) from GetAttenuationValues();
@@ -42,19 +38,13 @@
  *    perpendicular to a: r = (x - Position) . a is the distance from that plane (so a sun placed
  *    above the scene crosses an explicit depth of medium), l = a, S = A = 1.
  *
- * Within each slab the ray is clipped exactly to where the light shines and to the surface,
- * A(r) is integrated in closed form, the phase, spot and extinction factors with Gauss-Legendre,
- * and the shadow map is looked up once per segment (docs/accuracy.md).
- *
- * That is the default method, SLICES; SetMethod() selects another way to compute the same
- * L_in (RAY_MARCH, RADIAL_BLUR, ANALYTIC, EPIPOLAR, LIGHT_VOLUME, AUTOMATIC), each for every
- * kind of light; README "Methods" has their measured cost and error. A medium from data
- * (SetMediumDensity) scales sigma_s and sigma_a by its density.
+ * The default method, SLICES, clips the ray within each slab to where the light shines,
+ * integrates A(r) in closed form and the rest with Gauss-Legendre, and looks the shadow map up
+ * once per segment (docs/accuracy.md); SetMethod() selects another (README "Methods"). A
+ * medium from data (SetMediumDensity) scales sigma_s and sigma_a by its density.
  *
  * With both coefficients zero, or with no usable light, the pass renders the delegate's image
- * unchanged (pixel-identical; one warning for a missing light). VTK's own surface lighting has
- * no shadows: with ShadowSurfaces on, the pass takes each light's shadowed light off the
- * surfaces with the shafts' shadow maps (and cookie).
+ * unchanged (pixel-identical; one warning for a missing light).
  *
  * @sa vtkImageProcessingPass vtkLightShaftReference
  */
@@ -286,16 +276,32 @@ public:
 
   ///@{
   /**
-   * Shadow the surfaces too: take off the surfaces the light of each scattering light that its
-   * shadow map (the shafts' own) shadows, so the pool of light on the floor shows the same
-   * shadows as the shafts, for every kind of light and with any delegate. Costs one more render
-   * of the scene and one full-screen pass per light that has casters (README "Shadows on
-   * surfaces"); applies also when the medium is empty. Default is off (the scene renders
-   * exactly as the delegate renders it).
+   * Shadow the surfaces too (VTK's lighting has no shadows): take off the surfaces the light
+   * that each scattering light's shadow map (the shafts' own) shadows, for every kind of light
+   * and any delegate; one more render of the scene and one full-screen pass per light with
+   * casters (README "Shadows on surfaces"), also when the medium is empty. Default is off.
    */
   vtkSetMacro(ShadowSurfaces, bool);
   vtkGetMacro(ShadowSurfaces, bool);
   vtkBooleanMacro(ShadowSurfaces, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Translucent casters (props with opacity below 1) dim and tint the light that passes them,
+   * in the shafts and with ShadowSurfaces on the surfaces: a surface of opacity a and diffuse
+   * colour c passes 1 - a (1 - c) per channel, and the surfaces a ray crosses multiply. They
+   * are peeled front to back into at most TranslucentShadowLayers layers per light, next to
+   * its shadow map and kept with it (README "Translucent casters"). Off, they cast nothing.
+   * Default is on.
+   */
+  vtkSetMacro(TranslucentShadows, bool);
+  vtkGetMacro(TranslucentShadows, bool);
+  vtkBooleanMacro(TranslucentShadows, bool);
+  /// In [1, 8]; fewer are peeled when no surface is left, or when more would not fit side by
+  /// side in the GL's largest texture. Default is 4.
+  vtkSetClampMacro(TranslucentShadowLayers, int, 1, 8);
+  vtkGetMacro(TranslucentShadowLayers, int);
   ///@}
 
   ///@{
@@ -461,33 +467,23 @@ public:
 
   ///@{
   /**
-   * The method that computes the in-scattered radiance; every parameter that is not
-   * method-specific (light, coefficients, phase, cookie, noise, Time, Exposure, read-outs)
-   * means the same in all of them.
+   * The method that computes the in-scattered radiance (README "Methods": how each works, its
+   * cost and error); the parameters that are not method-specific mean the same in all.
    * - SLICES: view-aligned slabs (NumberOfSlices, Jitter, AutomaticSliceCount, precision).
-   * - RAY_MARCH: one full-screen-footprint pass marching NumberOfSteps segments per pixel
-   *   through the lit part of its ray (steps shorten towards the light when A falls off; the
-   *   1/r^2 term is integrated exactly per step), with interleaved sampling over
-   *   InterleaveSize^2 pixel blocks and the separable gather passes that re-assemble them.
-   * - RADIAL_BLUR: the unshadowed in-scatter (as ANALYTIC) darkened by a screen-space radial
-   *   blur of an occlusion buffer towards the light's screen position (RadialSamples, Decay,
-   *   Weight, Density, RadialJitter). No shadow map. Fast, but its shadows are approximate:
-   *   see README for the measured error.
-   * - ANALYTIC: the unshadowed integral per pixel, exact in closed form for an isotropic,
-   *   exponent-0, non-absorbing medium, and integrated to float precision otherwise. Ignores
+   * - RAY_MARCH: NumberOfSteps segments per pixel through the lit part of its ray (1/r^2
+   *   exact per step), interleaved over InterleaveSize^2 pixel blocks and gathered back.
+   * - RADIAL_BLUR: ANALYTIC's in-scatter darkened by a screen-space radial blur of an
+   *   occlusion buffer (RadialSamples, Decay, Weight, Density, RadialJitter); no shadow map.
+   * - ANALYTIC: the unshadowed integral per pixel (closed form or float precision). Ignores
    *   shadows and noise (a warning says so when they would matter); the cookie is kept.
    * - AUTOMATIC: ANALYTIC when nothing casts a shadow into the light's volume and the noise is
    *   off, else SLICES. GetLastMethod() reports the choice.
-   * - EPIPOLAR: RAY_MARCH's march (NumberOfSteps segments) at samples along EpipolarLines
-   *   lines through the light's screen image, every EpipolarStep-th of EpipolarSamples and
-   *   where the depth breaks or the in-scatter changes sharply; the other samples and the
-   *   pixels are interpolated along and across the lines from samples on their own surface.
-   *   Pixels with none (thin props between lines) are marched themselves.
-   * - LIGHT_VOLUME: no steps. The region the shadow map shadows is a closed mesh
-   *   (LightVolumeResolution cells across the map) drawn from the camera: each crossing adds or
-   *   subtracts the closed-form unshadowed in-scatter up to it. Exact with respect to that mesh.
-   *   Cookie and noise are not in closed form: a light with either gets RAY_MARCH, with one
-   *   warning.
+   * - EPIPOLAR: RAY_MARCH's march at every EpipolarStep-th of EpipolarSamples samples on
+   *   EpipolarLines lines through the light's screen image (and at depth breaks), the rest
+   *   interpolated along and across the lines.
+   * - LIGHT_VOLUME: the closed-form unshadowed in-scatter up to each crossing of the shadow
+   *   map's shadow volume (LightVolumeResolution cells across the map). A light with a cookie,
+   *   noise or translucent casters' layers gets RAY_MARCH, with one warning.
    * Default is SLICES.
    */
   vtkSetClampMacro(Method, int, SLICES, LIGHT_VOLUME);
@@ -872,7 +868,8 @@ public:
    * extent); its casters; and the GPU time its in-scatter took (its shadow map, slabs or march
    * and own passes), in milliseconds, measured with OpenGL timer queries of the most recent
    * frame whose queries completed (-1 where timer queries are not available); its light-leg
-   * table through a medium from data: bytes (0: none) and build milliseconds (0: reused).
+   * table through a medium from data: bytes (0: none) and build milliseconds (0: reused); its
+   * translucent casters' layers: how many (0: none) and their bytes.
    */
   int GetLastLightKind(int index);
   int GetLastLightMethod(int index);
@@ -883,6 +880,8 @@ public:
   double GetLastLightTime(int index);
   double GetLastLightFieldShadowBytes(int index);
   double GetLastLightFieldShadowBuildTime(int index);
+  int GetLastLightTranslucentLayers(int index);
+  double GetLastLightTranslucentBytes(int index);
   ///@}
 
   /**
@@ -916,6 +915,8 @@ protected:
   double Exposure = 1.0;
   bool AttenuateScene = true;
   bool ShadowSurfaces = false;
+  bool TranslucentShadows = true;
+  int TranslucentShadowLayers = 4;
   int NumberOfSlices = 64;
   int ShadowMapSize = 1024;
   double NoiseAmplitude = 0.0;

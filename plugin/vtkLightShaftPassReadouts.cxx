@@ -90,6 +90,18 @@ double vtkLightShaftPass::GetLastLightFieldShadowBuildTime(int index)
   return light ? light->FieldShadowBuildTime : 0.0;
 }
 
+int vtkLightShaftPass::GetLastLightTranslucentLayers(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
+  return light ? light->TranslucentLayers : 0;
+}
+
+double vtkLightShaftPass::GetLastLightTranslucentBytes(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->LastLight(index);
+  return light ? light->TranslucentBytes : 0.0;
+}
+
 //------------------------------------------------------------------------------
 // What the frame did, as the pass's read-outs: per light, and the totals and first light's
 // values the older read-outs report.

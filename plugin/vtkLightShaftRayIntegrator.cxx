@@ -574,9 +574,24 @@ void LitInterval(const Model& model, const Vec& origin, const Vec& dir, double& 
 //------------------------------------------------------------------------------
 namespace
 {
+// A piece of the ray, [First, Second] in the integration variable, with the light's
+// transmittance to it (the same all along it).
+struct Piece
+{
+  double First;
+  double Second;
+  RGB Transmittance;
+};
+
+bool Dark(const RGB& transmittance)
+{
+  return transmittance[0] == 0.0 && transmittance[1] == 0.0 && transmittance[2] == 0.0;
+}
+
 // The lit pieces of [u0, u1] (in the integration variable; toT maps it to the ray's t): the
-// visibility sampled at `samples` points, every change bisected to 1e-12 of the interval.
-std::vector<std::pair<double, double>> FindLitPieces(const std::function<bool(const Vec&)>& visible,
+// transmittance sampled at `samples` points, every change bisected to 1e-12 of the interval;
+// the pieces it is zero on left out.
+std::vector<Piece> FindLitPieces(const Transmittance& transmittance,
   const std::function<double(double)>& toT,
   const Vec& origin,
   const Vec& dir,
@@ -584,38 +599,51 @@ std::vector<std::pair<double, double>> FindLitPieces(const std::function<bool(co
   double u1,
   int samples)
 {
-  std::vector<std::pair<double, double>> lit;
-  bool previous = visible(origin + toT(u0) * dir);
+  std::vector<Piece> lit;
+  RGB previous = transmittance(origin + toT(u0) * dir);
   double start = u0;
   double uPrevious = u0;
+  auto close = [&](double end)
+  {
+    if (!Dark(previous))
+    {
+      lit.push_back({ start, end, previous });
+    }
+  };
   for (int k = 1; k <= samples; ++k)
   {
     const double u = u0 + (u1 - u0) * k / samples;
-    const bool now = visible(origin + toT(u) * dir);
-    if (now != previous)
+    const RGB now = transmittance(origin + toT(u) * dir);
+    double lo = uPrevious;
+    while (now != previous)
     {
-      double lo = uPrevious;
+      // The first change in (lo, u] (a sample may step over more than one).
       double hi = u;
+      RGB beyond = now;
       for (int iteration = 0; iteration < 60 && hi - lo > 1e-12 * (std::abs(u1 - u0) + 1e-300);
            ++iteration)
       {
         const double mid = 0.5 * (lo + hi);
-        (visible(origin + toT(mid) * dir) == previous ? lo : hi) = mid;
+        const RGB middle = transmittance(origin + toT(mid) * dir);
+        if (middle == previous)
+        {
+          lo = mid;
+        }
+        else
+        {
+          hi = mid;
+          beyond = middle;
+        }
       }
       const double transition = 0.5 * (lo + hi);
-      if (previous)
-      {
-        lit.emplace_back(start, transition);
-      }
+      close(transition);
       start = transition;
-      previous = now;
+      previous = beyond;
+      lo = hi;
     }
     uPrevious = u;
   }
-  if (previous)
-  {
-    lit.emplace_back(start, u1);
-  }
+  close(u1);
   return lit;
 }
 
@@ -697,7 +725,7 @@ Result IntegrateRay(const Model& model,
   const Vec& dir,
   double t0,
   double t1,
-  const std::function<bool(const Vec&)>& visible,
+  const Transmittance& transmittance,
   int samples,
   double tolerance,
   bool closedForms)
@@ -714,25 +742,25 @@ Result IntegrateRay(const Model& model,
   const std::function<double(double)> toT = [&](double u)
   { return angle ? h * std::tan(u) - b : u; };
 
-  std::vector<std::pair<double, double>> lit =
-    FindLitPieces(visible, toT, origin, dir, toU(t0), toU(t1), samples);
+  std::vector<Piece> lit =
+    FindLitPieces(transmittance, toT, origin, dir, toU(t0), toU(t1), samples);
   if (model.Field)
   {
     // Split where the density stops being one cubic along the ray (its sample planes).
-    std::vector<std::pair<double, double>> split;
-    for (const auto& piece : lit)
+    std::vector<Piece> split;
+    for (const Piece& piece : lit)
     {
       std::vector<double> breaks;
       model.Field->Breakpoints(
-        origin.data(), dir.data(), toT(piece.first), toT(piece.second), breaks);
-      double start = piece.first;
+        origin.data(), dir.data(), toT(piece.First), toT(piece.Second), breaks);
+      double start = piece.First;
       for (double t : breaks)
       {
-        const double u = std::min(std::max(toU(t), start), piece.second);
-        split.emplace_back(start, u);
+        const double u = std::min(std::max(toU(t), start), piece.Second);
+        split.push_back({ start, u, piece.Transmittance });
         start = u;
       }
-      split.emplace_back(start, piece.second);
+      split.push_back({ start, piece.Second, piece.Transmittance });
     }
     lit.swap(split);
   }
@@ -742,10 +770,10 @@ Result IntegrateRay(const Model& model,
     const double closest = -b;
     for (size_t k = 0; k < lit.size(); ++k)
     {
-      if (lit[k].first < closest && closest < lit[k].second)
+      if (lit[k].First < closest && closest < lit[k].Second)
       {
-        lit.insert(lit.begin() + k + 1, { closest, lit[k].second });
-        lit[k].second = closest;
+        lit.insert(lit.begin() + k + 1, { closest, lit[k].Second, lit[k].Transmittance });
+        lit[k].Second = closest;
         ++k;
       }
     }
@@ -754,41 +782,50 @@ Result IntegrateRay(const Model& model,
   RGB sum{};
   RGB error{};
   bool usedClosedForm = false;
-  for (const auto& piece : lit)
+  for (const Piece& piece : lit)
   {
-    const double ta = toT(piece.first);
-    const double tb = toT(piece.second);
+    // Each piece's integral, times the light's transmittance to it.
+    RGB pieceSum{};
+    RGB pieceError{};
+    const double ta = toT(piece.First);
+    const double tb = toT(piece.Second);
     if (closedForms && model.Directional())
     {
-      DirectionalClosedForm(model, origin, dir, ta, tb, sum);
+      DirectionalClosedForm(model, origin, dir, ta, tb, pieceSum);
       usedClosedForm = true;
-      continue;
     }
-    if (closedForms && PositionalClosedForm(model, origin, dir, ta, tb, tolerance, sum))
+    else if (closedForms && PositionalClosedForm(model, origin, dir, ta, tb, tolerance, pieceSum))
     {
       usedClosedForm = true;
-      continue;
     }
-    Integrate(
-      [&](double u)
-      {
-        RGB value = model.Integrand(origin, dir, toT(u));
-        if (angle)
+    else
+    {
+      Integrate(
+        [&](double u)
         {
-          const double jacobian = h / (std::cos(u) * std::cos(u));
-          for (double& channel : value)
+          RGB value = model.Integrand(origin, dir, toT(u));
+          if (angle)
           {
-            channel *= jacobian;
+            const double jacobian = h / (std::cos(u) * std::cos(u));
+            for (double& channel : value)
+            {
+              channel *= jacobian;
+            }
           }
-        }
-        return value;
-      },
-      piece.first,
-      piece.second,
-      tolerance,
-      0,
-      sum,
-      error);
+          return value;
+        },
+        piece.First,
+        piece.Second,
+        tolerance,
+        0,
+        pieceSum,
+        pieceError);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      sum[c] += piece.Transmittance[c] * pieceSum[c];
+      error[c] += piece.Transmittance[c] * pieceError[c];
+    }
   }
   Result result;
   result.Radiance = sum;

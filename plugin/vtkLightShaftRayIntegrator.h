@@ -169,11 +169,16 @@ struct Result
   bool ClosedForm = false;
 };
 
+/// The light's transmittance to a point, per channel: 0 where an opaque surface shadows it, 1
+/// where nothing does, the product of the translucent surfaces in between otherwise.
+using Transmittance = std::function<RGB(const Vec&)>;
+
 /**
  * The integral along origin + t dir over [t0, t1] (inside the lit interval, in front of the
- * surface): the visibility sampled at `samples` points (in the equiangular angle when A falls
- * off, else in t) and every change bisected to 1e-12 of the interval; each lit piece integrated
- * by the closed forms (when `closedForms`) or adaptive Gauss-Kronrod to `tolerance`. In t, the
+ * surface): the transmittance sampled at `samples` points (in the equiangular angle when A
+ * falls off, else in t) and every change bisected to 1e-12 of the interval; each piece where
+ * it is not zero integrated by the closed forms (when `closedForms`) or adaptive Gauss-Kronrod
+ * to `tolerance`, times the piece's transmittance. In t, the
  * pieces of a spot or point light are split where the ray passes closest to the light (the
  * phase function's peak); a ray through (within 1e-6 of its length of) a light whose A is
  * finite there (c0 > 0) is integrated in t, since the angle would crowd it into the ends.
@@ -183,7 +188,7 @@ Result IntegrateRay(const Model& model,
   const Vec& dir,
   double t0,
   double t1,
-  const std::function<bool(const Vec&)>& visible,
+  const Transmittance& transmittance,
   int samples,
   double tolerance,
   bool closedForms);

@@ -365,9 +365,9 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
           {
             continue;
           }
-          auto visible = [&](const Vec& x) { return tracer->Visible(x, model); };
+          auto transmittance = [&](const Vec& x) { return tracer->Transmittance(x, model); };
           const Result result = IntegrateRay(
-            model, origin, dir, t0, t1, visible, samples, tolerance, closedForms[l] != 0);
+            model, origin, dir, t0, t1, transmittance, samples, tolerance, closedForms[l] != 0);
           closed = closed || result.ClosedForm;
           for (int c = 0; c < 3; ++c)
           {

@@ -3,6 +3,7 @@
 #include "vtkActor.h"
 #include "vtkFloatArray.h"
 #include "vtkGenericCell.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkLightShaftPass.h"
 #include "vtkMapper.h"
@@ -73,10 +74,27 @@ void vtkLightShaftReferenceScene::Capture(vtkRenderer* renderer)
   while (vtkProp* prop = renderer->GetViewProps()->GetNextProp(it))
   {
     auto* actor = vtkActor::SafeDownCast(prop);
-    if (!actor || !actor->GetVisibility() || !actor->GetMapper() ||
-        actor->GetProperty()->GetOpacity() < 1.0)
+    if (!actor || !actor->GetVisibility() || !actor->GetMapper())
     {
       continue;
+    }
+    // The surface's transmittance, the pass's rule (vtkLightShaftTranslucentPeel): opacity a
+    // and diffuse colour c pass 1 - a (1 - c); opaque: none, transparent: no occluder.
+    vtkProperty* property = actor->GetProperty();
+    const double opacity = std::min(std::max(property->GetOpacity(), 0.0), 1.0);
+    if (opacity <= 0.0)
+    {
+      continue;
+    }
+    RGB transmittance{};
+    if (opacity < 1.0)
+    {
+      const double* color = property->GetDiffuseColor();
+      for (int c = 0; c < 3; ++c)
+      {
+        const double diffuse = std::min(std::max(property->GetDiffuse() * color[c], 0.0), 1.0);
+        transmittance[c] = 1.0 - opacity * (1.0 - diffuse);
+      }
     }
     actor->GetMapper()->Update();
     auto* polydata = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
@@ -103,6 +121,8 @@ void vtkLightShaftReferenceScene::Capture(vtkRenderer* renderer)
     occluder.Mesh->DeepCopy(triangles->GetOutput());
     occluder.Mesh->BuildCells(); // read-only from the threads afterwards
     occluder.Mesh->GetBounds(occluder.Bounds);
+    occluder.Translucent = opacity < 1.0;
+    occluder.Transmittance = transmittance;
     this->Occluders.push_back(occluder);
   }
 }
@@ -167,6 +187,7 @@ bool vtkLightShaftReferenceScene::ShadowMapVisible(const Vec& x,
 vtkLightShaftReferenceScene::Tracer::Tracer(const vtkLightShaftReferenceScene& scene)
   : Scene(scene)
   , Cell(vtkSmartPointer<vtkGenericCell>::New())
+  , Hits(vtkSmartPointer<vtkIdList>::New())
 {
   for (const Occluder& occluder : scene.Occluders)
   {
@@ -214,7 +235,8 @@ bool vtkLightShaftReferenceScene::Tracer::FirstHit(const Vec& from, const Vec& t
   nearest = 1.0;
   for (size_t k = 0; k < this->Scene.Occluders.size(); ++k)
   {
-    if (!SegmentMeetsBox(from, to, this->Scene.Occluders[k].Bounds))
+    if (this->Scene.Occluders[k].Translucent ||
+        !SegmentMeetsBox(from, to, this->Scene.Occluders[k].Bounds))
     {
       continue;
     }
@@ -235,12 +257,37 @@ bool vtkLightShaftReferenceScene::Tracer::FirstHit(const Vec& from, const Vec& t
 }
 
 //------------------------------------------------------------------------------
-bool vtkLightShaftReferenceScene::Tracer::Visible(const Vec& x,
+RGB vtkLightShaftReferenceScene::Tracer::Crossings(const Vec& from, const Vec& to)
+{
+  RGB product{ 1.0, 1.0, 1.0 };
+  for (size_t k = 0; k < this->Scene.Occluders.size(); ++k)
+  {
+    const Occluder& occluder = this->Scene.Occluders[k];
+    if (!occluder.Translucent || !SegmentMeetsBox(from, to, occluder.Bounds))
+    {
+      continue;
+    }
+    this->Hits->Reset();
+    this->Locators[k]->IntersectWithLine(from.data(), to.data(), 0.0, nullptr, this->Hits);
+    for (vtkIdType hit = 0; hit < this->Hits->GetNumberOfIds(); ++hit)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        product[c] *= occluder.Transmittance[c];
+      }
+    }
+  }
+  return product;
+}
+
+//------------------------------------------------------------------------------
+RGB vtkLightShaftReferenceScene::Tracer::Transmittance(const Vec& x,
   const vtkLightShaftRayIntegrator::Model& model)
 {
   if (this->Scene.ShadowMap)
   {
-    return this->Scene.ShadowMapVisible(x, model);
+    const double visible = this->Scene.ShadowMapVisible(x, model) ? 1.0 : 0.0;
+    return { visible, visible, visible };
   }
   // The segment to the light, or back to a directional light's plane.
   Vec light = model.Light;
@@ -249,7 +296,7 @@ bool vtkLightShaftReferenceScene::Tracer::Visible(const Vec& x,
     const double r = model.Distance(x);
     if (!(r > 0.0))
     {
-      return true; // on (or before) the plane: nothing lies between
+      return { 1.0, 1.0, 1.0 }; // on (or before) the plane: nothing lies between
     }
     light = x - r * model.Axis;
   }
@@ -257,5 +304,9 @@ bool vtkLightShaftReferenceScene::Tracer::Visible(const Vec& x,
   const double distance = Norm(toLight);
   const Vec step = (1e-9 * (distance + 1.0) / std::max(distance, 1e-300)) * toLight;
   double t;
-  return !this->FirstHit(x + step, light - step, t);
+  if (this->FirstHit(x + step, light - step, t))
+  {
+    return { 0.0, 0.0, 0.0 };
+  }
+  return this->Crossings(x + step, light - step);
 }

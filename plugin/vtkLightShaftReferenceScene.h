@@ -16,6 +16,7 @@
 #include <vector> // For the occluders and locators
 
 class vtkGenericCell;
+class vtkIdList;
 class vtkImageData;
 class vtkLightShaftPass;
 class vtkMatrix4x4;
@@ -25,13 +26,17 @@ class vtkRenderer;
 
 /**
  * @class   vtkLightShaftReferenceScene
- * @brief   The opaque polygonal props of a renderer in world coordinates (one triangle mesh and
+ * @brief   The polygonal props of a renderer in world coordinates (one triangle mesh and
  *          bounding box per actor), for the reference's surfaces and exact shadows; or the
  *          pass's last shadow map of one light, looked up as the pass looks it up.
  *
- * Exact visibility of a point x: for a spot or point light, the segment from x to the light is
- * unobstructed; for a directional light, the segment from x back along the light's direction
- * to its plane (geometry before the plane casts nothing).
+ * The light's transmittance to a point x, over the segment from x to the light (for a
+ * directional light, back along its direction to its plane: geometry before the plane casts
+ * nothing): 0 when an opaque actor's surface crosses it, else the product over each crossing
+ * of a translucent actor's surface (opacity a in (0, 1), diffuse colour c: Diffuse times the
+ * property's colour) of 1 - a (1 - c), per channel. The camera's rays end at the first opaque
+ * surface (translucent ones do not stop them, as in the pass). With the shadow map, it is 0 or
+ * 1 (translucent actors left out).
  *
  * Queries go through a Tracer, one per thread (from a TracerPool): VTK 9.1's vtkModifiedBSPTree
  * keeps a scratch cell per tree (shared trees gave non-deterministic results across threads).
@@ -67,15 +72,22 @@ public:
     explicit Tracer(const vtkLightShaftReferenceScene& scene);
     ~Tracer();
 
-    /// The nearest hit of the segment from -> to, as a fraction of it; false when none.
+    /// The nearest hit of an opaque surface by the segment from -> to, as a fraction of it;
+    /// false when none.
     bool FirstHit(const Vec& from, const Vec& to, double& nearest);
-    /// Whether x sees `light` (see the class description).
-    bool Visible(const Vec& x, const vtkLightShaftRayIntegrator::Model& light);
+    /// The light's transmittance to x (see the class description).
+    vtkLightShaftRayIntegrator::RGB Transmittance(const Vec& x,
+      const vtkLightShaftRayIntegrator::Model& light);
 
   private:
     const vtkLightShaftReferenceScene& Scene;
+    /// The product of the translucent surfaces' transmittance over their crossings by the
+    /// segment from -> to.
+    vtkLightShaftRayIntegrator::RGB Crossings(const Vec& from, const Vec& to);
+
     std::vector<vtkSmartPointer<vtkModifiedBSPTree>> Locators;
     vtkSmartPointer<vtkGenericCell> Cell;
+    vtkSmartPointer<vtkIdList> Hits;
   };
 
   /**
@@ -108,6 +120,8 @@ private:
   {
     vtkSmartPointer<vtkPolyData> Mesh;
     double Bounds[6];
+    bool Translucent = false;                        ///< else opaque: it blocks the light
+    vtkLightShaftRayIntegrator::RGB Transmittance{}; ///< per crossing, when translucent
   };
   std::vector<Occluder> Occluders;
 

@@ -103,6 +103,7 @@ Variant IntegrandVariant(const char* methodName,
   }
   AddLightKind(variant, frame.Light.Model);
   variant.Feature(shadows, "LIGHTSHAFT_SHADOW", "shadow");
+  variant.Feature(shadows && frame.Translucency, "LIGHTSHAFT_TRANSLUCENT", "translucent");
   variant.Feature(frame.Cookie != nullptr, "LIGHTSHAFT_COOKIE", "cookie");
   variant.Feature(frame.Noise != nullptr, "LIGHTSHAFT_NOISE", "noise");
   variant.Feature(frame.Density != nullptr, "LIGHTSHAFT_FIELD", "field");
@@ -298,6 +299,12 @@ void SetLightSpaceUniforms(vtkShaderProgram* program,
   }
   shadowMap->Activate();
   program->SetUniformi("shadowMap", shadowMap->GetTextureUnit());
+  if (frame.Translucency)
+  {
+    frame.Translucency->Activate();
+    program->SetUniformi("translucentLayers", frame.Translucency->GetTextureUnit());
+    program->SetUniformi("translucentLayerCount", frame.TranslucentLayers);
+  }
   const float depthRange[2] = { static_cast<float>(light.Near), static_cast<float>(light.Far) };
   program->SetUniform2f("lightDepthRange", depthRange);
   if (point)

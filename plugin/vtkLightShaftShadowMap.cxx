@@ -50,7 +50,7 @@ bool vtkLightShaftShadowMap::Signature::operator==(const Signature& other) const
 {
   return this->Cameras == other.Cameras && this->Casters == other.Casters &&
          this->Range[0] == other.Range[0] && this->Range[1] == other.Range[1] &&
-         this->Size == other.Size;
+         this->Size == other.Size && this->TranslucentLayers == other.TranslucentLayers;
 }
 
 vtkLightShaftShadowMap::Signature vtkLightShaftShadowMap::Sign(vtkLightShaftFrame& frame,
@@ -68,6 +68,7 @@ vtkLightShaftShadowMap::Signature vtkLightShaftShadowMap::Sign(vtkLightShaftFram
   signature.Range[0] = frame.Light.Near;
   signature.Range[1] = frame.Light.Far;
   signature.Size = size;
+  signature.TranslucentLayers = frame.Parameters.TranslucentLayers;
   return signature;
 }
 
@@ -75,12 +76,15 @@ vtkLightShaftShadowMap::Signature vtkLightShaftShadowMap::Sign(vtkLightShaftFram
 vtkTextureObject* vtkLightShaftShadowMap::Ready(vtkLightShaftFrame& frame)
 {
   vtkLightShaftLightStatistics& stats = *frame.LightStatistics;
+  frame.Translucency = nullptr;
+  frame.TranslucentLayers = 0;
   if (!frame.Light.ShadowsPossible)
   {
     return nullptr; // nothing can shadow the light's volume
   }
   if (this->Valid && this->RenderedFrame == frame.Number)
   {
+    this->PublishTranslucency(frame);
     return this->Map.Object; // already readied this frame
   }
   vtkOpenGLRenderWindow* window = frame.Window;
@@ -110,6 +114,20 @@ vtkTextureObject* vtkLightShaftShadowMap::Ready(vtkLightShaftFrame& frame)
     this->EventTexture = this->Map.Object;
     frame.Owner->InvokeEvent(vtkLightShaftPass::ShadowMapRenderedEvent);
     this->EventTexture = nullptr;
+    // The translucent casters in front of the (combined) opaque ones.
+    this->TranslucentLayerCount = this->Translucent.Render(frame,
+      this->Map.Object,
+      cube,
+      frame.Parameters.TranslucentLayers,
+      [this, &frame](int v)
+      {
+        this->SetCamera(frame.Light.Views[v]);
+        return this->LightCamera.Get();
+      });
+    stats.TranslucentLayersRendered = this->TranslucentLayerCount > 0;
+    // (Signed again: the translucent step gives each of its props information keys the first
+    // time, which moves their MTime, not what the map holds.)
+    signature = this->Sign(frame, size);
     this->Rendered = std::move(signature);
     this->Cube = cube;
     this->Valid = true;
@@ -120,7 +138,18 @@ vtkTextureObject* vtkLightShaftShadowMap::Ready(vtkLightShaftFrame& frame)
   stats.LightDepthRange[0] = frame.Light.Near;
   stats.LightDepthRange[1] = frame.Light.Far;
   stats.ShadowBias = this->GetBias(frame);
+  this->PublishTranslucency(frame);
   return this->Map.Object;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftShadowMap::PublishTranslucency(vtkLightShaftFrame& frame)
+{
+  const bool layers = this->TranslucentLayerCount > 0;
+  frame.Translucency = layers ? this->Translucent.GetTexture() : nullptr;
+  frame.TranslucentLayers = this->TranslucentLayerCount;
+  frame.LightStatistics->TranslucentLayers = this->TranslucentLayerCount;
+  frame.LightStatistics->TranslucentBytes = layers ? this->Translucent.GetBytes() : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -203,17 +232,26 @@ void vtkLightShaftShadowMap::RenderCasters(vtkLightShaftFrame& frame,
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_LEQUAL);
 
+  // The opaque step of the casters with another camera, as vtkShadowMapBakerPass does.
+  RenderFromLight(frame, casters, camera, fbo, this->CameraPass);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftShadowMap::RenderFromLight(vtkLightShaftFrame& frame,
+  std::vector<vtkProp*>& casters,
+  vtkCamera* camera,
+  vtkOpenGLFramebufferObject* target,
+  vtkCameraPass* pass)
+{
   vtkRenderer* ren = frame.Renderer;
   vtkRenderState casterState(ren);
   casterState.SetPropArrayAndCount(casters.data(), static_cast<int>(casters.size()));
-  casterState.SetFrameBuffer(fbo);
-
-  // Render the opaque step of the casters with another camera, as vtkShadowMapBakerPass does.
+  casterState.SetFrameBuffer(target);
   vtkSmartPointer<vtkCamera> sceneCamera = ren->GetActiveCamera();
   const vtkTypeBool automaticLights = ren->GetAutomaticLightCreation();
   ren->SetAutomaticLightCreation(false);
   ren->SetActiveCamera(camera);
-  this->CameraPass->Render(&casterState);
+  pass->Render(&casterState);
   ren->SetActiveCamera(sceneCamera);
   ren->SetAutomaticLightCreation(automaticLights);
 #if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
@@ -262,6 +300,8 @@ void vtkLightShaftShadowMap::ReleaseGraphicsResources(vtkWindow* window)
   this->Face.Release(window);
   vtkLightShaftResources::ReleaseFramebuffer(this->Framebuffer, window);
   vtkLightShaftResources::ReleaseFramebuffer(this->FaceFramebuffer, window);
+  this->Translucent.ReleaseGraphicsResources(window);
+  this->TranslucentLayerCount = 0;
   this->Valid = false;
   this->RenderedFrame = -1;
 }

@@ -6,10 +6,11 @@
 #ifndef vtkLightShaftShadowMap_h
 #define vtkLightShaftShadowMap_h
 
-#include "vtkLightShaftResources.h" // For the owned maps
-#include "vtkNew.h"                 // For the passes and camera held
-#include "vtkSmartPointer.h"        // For the framebuffers held
-#include "vtkType.h"                // For vtkMTimeType
+#include "vtkLightShaftResources.h"         // For the owned maps
+#include "vtkLightShaftTranslucentLayers.h" // For the translucent casters' layers
+#include "vtkNew.h"                         // For the passes and camera held
+#include "vtkSmartPointer.h"                // For the framebuffers held
+#include "vtkType.h"                        // For vtkMTimeType
 
 #include <glm/glm.hpp> // For the light cameras' matrices
 
@@ -47,9 +48,11 @@ struct LightView;
  *
  * The map is kept from frame to frame while its signature stays the same: the cameras'
  * matrices and depth range, the map's size, and each caster with its redraw time (the prop,
- * its mapper and the mapper's input). It is rendered every frame when someone observes
- * vtkLightShaftPass::ShadowMapRenderedEvent (distributed processes combine their maps: what
- * the others hold may change without this process seeing it).
+ * its mapper and the mapper's input). Translucent casters are peeled into layers of
+ * transmittance next to it (vtkLightShaftTranslucentLayers), rendered and kept with it; the
+ * frame's Translucency points to them while the light is worked on. It is rendered every frame when
+ * someone observes vtkLightShaftPass::ShadowMapRenderedEvent (distributed processes combine their
+ * maps: what the others hold may change without this process seeing it).
  */
 class vtkLightShaftShadowMap
 {
@@ -64,6 +67,16 @@ public:
    * an earlier render. Records what it did in the frame's statistics of the light.
    */
   vtkTextureObject* Ready(vtkLightShaftFrame& frame);
+
+  /**
+   * Render `pass` (a camera pass over one of VTK's steps) over `casters` into `target`, seen by
+   * `camera` (the scene's camera and automatic light creation are restored after).
+   */
+  static void RenderFromLight(vtkLightShaftFrame& frame,
+    std::vector<vtkProp*>& casters,
+    vtkCamera* camera,
+    vtkOpenGLFramebufferObject* target,
+    vtkCameraPass* pass);
 
   /**
    * Render the opaque step of `casters` into the depth texture `depth` (cleared), seen by
@@ -103,11 +116,14 @@ private:
     std::vector<std::pair<vtkProp*, vtkMTimeType>> Casters;
     double Range[2] = { 0.0, 0.0 };
     int Size = 0;
+    int TranslucentLayers = 0; ///< the most layers asked (0: translucent casters cast nothing)
     bool operator==(const Signature& other) const;
   };
   Signature Sign(vtkLightShaftFrame& frame, int size) const;
   void RenderCube(vtkLightShaftFrame& frame, int size);
   void SetCamera(const vtkLightShaftGeometry::LightView& view);
+  /// The translucent layers (and their statistics) into the frame.
+  void PublishTranslucency(vtkLightShaftFrame& frame);
 
   vtkNew<vtkCameraPass> CameraPass;
   vtkNew<vtkOpaquePass> OpaquePass;
@@ -116,6 +132,8 @@ private:
   vtkLightShaftResources::OwnedTexture Face;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkSmartPointer<vtkOpenGLFramebufferObject> FaceFramebuffer;
+  vtkLightShaftTranslucentLayers Translucent;
+  int TranslucentLayerCount = 0; ///< the layers of the map (0: none)
   vtkTextureObject* EventTexture = nullptr;
   bool Valid = false;
   bool Cube = false;

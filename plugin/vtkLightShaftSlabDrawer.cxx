@@ -154,8 +154,12 @@ void vtkLightShaftSlabDrawer::Draw(vtkLightShaftFrame& frame,
   this->DrawBatch(program, false, frame);
 
   slabs.Depth->Deactivate();
-  for (vtkTextureObject* t :
-    { slabs.ShadowMap, frame.Cookie, frame.Noise, frame.Density, frame.FieldShadow })
+  for (vtkTextureObject* t : { slabs.ShadowMap,
+         frame.Translucency,
+         frame.Cookie,
+         frame.Noise,
+         frame.Density,
+         frame.FieldShadow })
   {
     if (t)
     {

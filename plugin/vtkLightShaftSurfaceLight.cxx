@@ -72,6 +72,8 @@ void vtkLightShaftSurfaceLight::Add(vtkLightShaftFrame& frame,
   vtkLightShaftShaders::Variant variant;
   vtkLightShaftShaders::AddLightKind(variant, frame.Light.Model);
   variant.Feature(shadowMap != nullptr, "LIGHTSHAFT_SHADOW", "shadow");
+  variant.Feature(
+    shadowMap != nullptr && frame.Translucency, "LIGHTSHAFT_TRANSLUCENT", "translucent");
   variant.Feature(frame.Cookie != nullptr, "LIGHTSHAFT_COOKIE", "cookie");
   variant.Feature(multisample, "LIGHTSHAFT_MULTISAMPLE", "multisample");
   vtkLightShaftResources::FullScreenPass& pass =
@@ -98,6 +100,10 @@ void vtkLightShaftSurfaceLight::Add(vtkLightShaftFrame& frame,
   if (shadowMap)
   {
     active.push_back(shadowMap);
+    if (frame.Translucency)
+    {
+      active.push_back(frame.Translucency);
+    }
     const vtkLightShaftGeometry::LightFrame& lightFrame = frame.Light;
     const bool cube = lightFrame.Model.Kind == vtkLightShaftModel::LightKind::Point;
     const double texels = shadowMap->GetHeight() / (cube ? 2.0 : 1.0);

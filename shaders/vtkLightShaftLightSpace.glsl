@@ -1,7 +1,8 @@
 // Shared by the slab fragment shaders and the surface-light pass: what a light does at a point
 // besides the smooth factors, looked up in the light's own space: its shadow map's visibility,
-// its cookie, and the density noise projected from it. Features (#defines): LIGHTSHAFT_SHADOW,
-// LIGHTSHAFT_COOKIE, LIGHTSHAFT_NOISE; the light's kind (LIGHTSHAFT_POINT,
+// its cookie, and the density noise projected from it. Features (#defines): LIGHTSHAFT_SHADOW
+// (with LIGHTSHAFT_TRANSLUCENT: the translucent casters' layers too), LIGHTSHAFT_COOKIE,
+// LIGHTSHAFT_NOISE; the light's kind (LIGHTSHAFT_POINT,
 // LIGHTSHAFT_DIRECTIONAL, else a spot); LIGHTSHAFT_SHADOW_VOLUME: only the map and its depths
 // (LIGHT_VOLUME's mesh). Code for a feature that is off is not compiled.
 #ifndef LIGHTSHAFT_LIGHT_SPACE_CHUNK
@@ -58,13 +59,13 @@ uniform float shadowFaceSize;   // texels across a face (the atlas is 3 x 2 face
 uniform mat4 lightClipFromVC; // VC -> the light camera's clip coordinates
 #endif
 
-// 1 where pointVC (at light distance r) sees the light past the shadow map's casters, else 0;
-// `bias`: the depth tolerance, relative (spot, point) or in world units (directional).
-float lightShaftVisibility(vec3 pointVC, float r, float bias)
+// Where pointVC (at light distance r) falls in the light's map: `uv` across the map (a point
+// light's 3 x 2 atlas of cube faces: the texel nearest the direction, kept inside its face, so
+// no seams between faces) and `w`, the depth the stored depths are compared with. False where
+// the map does not reach (outside a spot's or directional light's square, behind a spot).
+bool lightShaftMapPoint(vec3 pointVC, float r, out vec2 uv, out float w)
 {
 #if defined(LIGHTSHAFT_POINT)
-  // The cube face the direction from the light falls on, its cell in the atlas, the texel
-  // nearest the direction (kept inside the face: no seams between faces).
   vec3 d = worldFromVC * (pointVC - lightPositionVC);
   vec3 a = abs(d);
   int face = (a.x >= a.y && a.x >= a.z) ? (d.x >= 0.0 ? 0 : 1) :
@@ -73,37 +74,75 @@ float lightShaftVisibility(vec3 pointVC, float r, float bias)
   vec2 faceUV = 0.5 * lightClip.xy / max(lightClip.w, 1e-30) + 0.5;
   float inset = 0.5 / shadowFaceSize;
   faceUV = clamp(faceUV, vec2(inset), vec2(1.0 - inset));
-  float stored =
-    texture(shadowMap, (vec2(float(face - 3 * (face / 3)), float(face / 3)) + faceUV) /
-        vec2(3.0, 2.0)).r;
-  if (stored < 1.0 && lightClip.w > lightShaftCasterDepth(stored) * (1.0 + bias))
-  {
-    return 0.0;
-  }
+  uv = (vec2(float(face - 3 * (face / 3)), float(face / 3)) + faceUV) / vec2(3.0, 2.0);
+  w = lightClip.w;
+  return true;
 #elif defined(LIGHTSHAFT_DIRECTIONAL)
   vec4 lightClip = lightClipFromVC * vec4(pointVC, 1.0);
-  if (all(lessThanEqual(abs(lightClip.xy), vec2(1.0))))
-  {
-    float stored = texture(shadowMap, 0.5 * lightClip.xy + 0.5).r;
-    if (stored < 1.0 && r > lightShaftCasterDepth(stored) + bias)
-    {
-      return 0.0;
-    }
-  }
+  uv = 0.5 * lightClip.xy + 0.5;
+  w = r;
+  return all(lessThanEqual(abs(lightClip.xy), vec2(1.0)));
 #else
   vec4 lightClip = lightClipFromVC * vec4(pointVC, 1.0);
   vec2 lightNDC = lightClip.xy / max(lightClip.w, 1e-30);
-  if (lightClip.w > 0.0 && all(lessThanEqual(abs(lightNDC), vec2(1.0))))
-  {
-    float stored = texture(shadowMap, 0.5 * lightNDC + 0.5).r;
-    if (stored < 1.0 && lightClip.w > lightShaftCasterDepth(stored) * (1.0 + bias))
-    {
-      return 0.0;
-    }
-  }
+  uv = 0.5 * lightNDC + 0.5;
+  w = lightClip.w;
+  return lightClip.w > 0.0 && all(lessThanEqual(abs(lightNDC), vec2(1.0)));
 #endif
+}
+
+// Whether depth w lies behind the stored depth (1: nothing stored), beyond the tolerance
+// `bias`: relative (spot, point) or in world units (directional).
+bool lightShaftBehind(float stored, float w, float bias)
+{
+#ifdef LIGHTSHAFT_DIRECTIONAL
+  return stored < 1.0 && w > lightShaftCasterDepth(stored) + bias;
+#else
+  return stored < 1.0 && w > lightShaftCasterDepth(stored) * (1.0 + bias);
+#endif
+}
+
+// 1 where pointVC (at light distance r) sees the light past the shadow map's casters, else 0.
+float lightShaftVisibility(vec3 pointVC, float r, float bias)
+{
+  vec2 uv;
+  float w;
+  if (lightShaftMapPoint(pointVC, r, uv, w) &&
+    lightShaftBehind(texture(shadowMap, uv).r, w, bias))
+  {
+    return 0.0;
+  }
   return 1.0;
 }
+
+#ifdef LIGHTSHAFT_TRANSLUCENT
+uniform sampler2D translucentLayers; // the layers side by side: rgb transmittance, a depth
+uniform int translucentLayerCount;
+
+// The light that reaches pointVC through the translucent casters' surfaces in front of it,
+// per channel: the product of the transmittance of each layer (nearest first) that it lies
+// behind. (Opaque casters: lightShaftVisibility.)
+vec3 lightShaftTranslucency(vec3 pointVC, float r, float bias)
+{
+  vec2 uv;
+  float w;
+  vec3 transmittance = vec3(1.0);
+  if (lightShaftMapPoint(pointVC, r, uv, w))
+  {
+    float layers = float(translucentLayerCount);
+    for (int k = 0; k < translucentLayerCount; ++k)
+    {
+      vec4 layer = texture(translucentLayers, vec2((uv.x + float(k)) / layers, uv.y));
+      if (!lightShaftBehind(layer.a, w, bias))
+      {
+        break; // the layers are sorted by depth: none further is in front
+      }
+      transmittance *= layer.rgb;
+    }
+  }
+  return transmittance;
+}
+#endif
 #endif
 
 #ifdef LIGHTSHAFT_COOKIE

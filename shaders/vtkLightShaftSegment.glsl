@@ -112,6 +112,9 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
 #ifdef LIGHTSHAFT_SHADOW
   visibility = lightShaftVisibility(sampleVC, sampleR, shadowBias);
 #endif
+#ifdef LIGHTSHAFT_TRANSLUCENT
+  modulation *= lightShaftTranslucency(sampleVC, sampleR, shadowBias);
+#endif
 #ifdef LIGHTSHAFT_COOKIE
   modulation *= lightShaftCookie(sampleVC, footprintInSquares);
 #endif

@@ -74,7 +74,7 @@ void main()
   vec3 surfaceVC = surfaceAt(pixel, depth);
   float r = lightShaftLightDistance(surfaceVC);
   float visibility = 1.0;
-  vec3 cookie = vec3(1.0);
+  vec3 cookie = vec3(1.0); // with the translucent casters' transmittance
 #ifdef LIGHTSHAFT_SHADOW
   // Nearest-texel depths err by up to a texel's extent times the slope: tolerate that.
   vec3 normal = cross(surfaceTangent(pixel, surfaceVC, ivec2(1, 0)),
@@ -82,8 +82,11 @@ void main()
   vec3 toLight = -lightShaftLightDirection(surfaceVC, r);
   float cosine = abs(dot(normal, toLight)) / max(length(normal), 1e-30);
   float slope = sqrt(max(1.0 - cosine * cosine, 0.0)) / max(cosine, 1e-3);
-  visibility = lightShaftVisibility(surfaceVC, r, shadowTexel * (1.0 + 1.5 * min(slope, 10.0)) +
-    shadowFloor);
+  float bias = shadowTexel * (1.0 + 1.5 * min(slope, 10.0)) + shadowFloor;
+  visibility = lightShaftVisibility(surfaceVC, r, bias);
+#ifdef LIGHTSHAFT_TRANSLUCENT
+  cookie *= lightShaftTranslucency(surfaceVC, r, bias);
+#endif
 #endif
 #ifdef LIGHTSHAFT_COOKIE
   float footprint = pixelFootprint.x * (-surfaceVC.z) + pixelFootprint.y;

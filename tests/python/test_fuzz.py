@@ -27,7 +27,9 @@ import pytest
 
 from lightshafts import scenes, vtkLightShaftPass
 from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkImageData
-from vtkmodules.vtkRenderingCore import vtkHardwareSelector, vtkLight, vtkTexture
+from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkPlaneSource, vtkSphereSource
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkHardwareSelector, vtkLight,
+                                         vtkPolyDataMapper, vtkTexture)
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
 from vtkmodules.vtkCommonExecutionModel import vtkTrivialProducer
 from vtkmodules.util.numpy_support import numpy_to_vtk
@@ -60,12 +62,12 @@ SCALARS = [
     ("NoiseScale", False, True), ("Time", False, False), ("Decay", False, False),
     ("Density", False, False), ("Weight", False, False), ("RadialGuardBand", False, False),
     ("MediumDensityScale", False, True), ("MediumBackgroundDensity", False, True),
-    ("MediumShadowResolution", True, False),
+    ("MediumShadowResolution", True, False), ("TranslucentShadowLayers", True, False),
 ]
 VECTORS = [("ScatteringCoefficient", 3), ("AbsorptionCoefficient", 3),
            ("NoiseVelocity1", 2), ("NoiseVelocity2", 2)]
 BOOLEANS = ["AttenuateScene", "ShadowSurfaces", "AutomaticSliceCount", "Jitter", "RadialJitter",
-            "ProgressiveRefinement", "UseAllocatedRenderTime"]
+            "ProgressiveRefinement", "UseAllocatedRenderTime", "TranslucentShadows"]
 # Setters that refuse non-finite values (with an error naming the parameter).
 REFUSING = {"Exposure", "Anisotropy", "NoiseAmplitude", "NoiseScale", "Time", "Decay",
             "Density", "Weight", "RadialGuardBand", "ScatteringCoefficient",
@@ -195,6 +197,7 @@ class Fuzzer:
         self.expected_errors = []  # words of the errors this step's bad images must give
         self.frame_times = []
         self.shafted = 0  # frames that computed shafts
+        self.translucent_actors = []
 
     def value(self, name, integer, log):
         low, high = self.ranges[name]
@@ -275,6 +278,40 @@ class Fuzzer:
             self.expected_errors.append(expected)
         self.shafts.SetMediumDensity(image)
         return f"SetMediumDensity({image.GetDimensions()}, {expected or 'usable'})"
+
+    def translucent(self):
+        # Translucent casters: a pane across the spot's beam, a sphere shell around the scene's
+        # sphere (two surfaces a ray crosses), or a red cube: opacity anywhere in [0, 1] (0 and
+        # 1 included), any colour; or one taken out.
+        rng = self.rng
+        if self.translucent_actors and rng.random() < 0.3:
+            actor = self.translucent_actors.pop(rng.randrange(len(self.translucent_actors)))
+            self.renderer.RemoveActor(actor)
+            return "translucent prop removed"
+        kind = rng.choice(["pane", "shell", "cube"])
+        if kind == "pane":
+            source = vtkPlaneSource()
+            y = rng.uniform(1.0, 5.5)
+            source.SetOrigin(-2.0, y, -2.0)
+            source.SetPoint1(2.0, y, -2.0)
+            source.SetPoint2(-2.0, y, 2.0)
+        elif kind == "shell":
+            source = vtkSphereSource()
+            source.SetCenter(0.0, 1.5, 0.0)
+            source.SetRadius(rng.uniform(0.9, 2.5))
+        else:
+            source = vtkCubeSource()
+            source.SetCenter(rng.uniform(-2, 2), rng.uniform(0.5, 4.0), rng.uniform(-2, 2))
+        mapper = vtkPolyDataMapper()
+        mapper.SetInputConnection(source.GetOutputPort())
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        opacity = rng.choice([0.0, 1.0, rng.random(), rng.random()])
+        actor.GetProperty().SetOpacity(opacity)
+        actor.GetProperty().SetColor(rng.random(), rng.random(), rng.random())
+        self.renderer.AddActor(actor)
+        self.translucent_actors.append(actor)
+        return f"translucent {kind} (opacity {opacity:.3f})"
 
     def light(self):
         rng, spot = self.rng, self.spot
@@ -457,7 +494,7 @@ class Fuzzer:
     ACTIONS = [(set_scalar, 30), (set_vector, 8), (set_boolean, 6), (preset, 2), (textures, 5),
                (light, 10), (several_lights, 8), (usable_light, 5), (camera, 10), (window_size, 6), (viewport, 4), (multisamples, 3),
                (delegate, 2), (selection, 2), (still, 6), (update_rate, 3), (junk_vtk, 6),
-               (medium, 3)]
+               (medium, 3), (translucent, 4)]
 
     # --- one frame --------------------------------------------------------------------------
     def step(self, index):

@@ -367,6 +367,12 @@ void vtkPVLightShaftsView::SetShadowSurfaces(bool shadow)
 }
 
 //------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetTranslucentShadows(bool translucent)
+{
+  this->Impl->Shafts->SetTranslucentShadows(translucent);
+}
+
+//------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetScatteringCoefficient(double r, double g, double b)
 {
   this->Impl->Shafts->SetScatteringCoefficient(r, g, b);

@@ -125,6 +125,12 @@ public:
    */
   void SetShadowSurfaces(bool shadow);
 
+  /**
+   * Translucent representations (opacity below 1) dim and tint the light by their opacity and
+   * colour, forwarded to vtkLightShaftPass::SetTranslucentShadows. Default is on.
+   */
+  void SetTranslucentShadows(bool translucent);
+
   ///@{
   /**
    * The method and its own controls, forwarded to vtkLightShaftPass (SetMethod,

@@ -1,0 +1,91 @@
+/**
+ * @file   vtkLightShaftTranslucentLayers.h
+ * @brief  One light's translucent casters as layers of transmittance, next to its depth map,
+ *         for vtkLightShaftPass (private, not installed).
+ */
+
+#ifndef vtkLightShaftTranslucentLayers_h
+#define vtkLightShaftTranslucentLayers_h
+
+#include "vtkLightShaftResources.h" // For the owned textures
+#include "vtkNew.h"                 // For the passes held
+#include "vtkSmartPointer.h"        // For the framebuffers held
+
+#include <functional> // For the light cameras' callback
+#include <vector>     // For the layers
+
+class vtkCamera;
+class vtkCameraPass;
+class vtkLightShaftTranslucentPeel;
+class vtkOpenGLFramebufferObject;
+class vtkProp;
+class vtkTextureObject;
+class vtkWindow;
+struct vtkLightShaftFrame;
+
+/**
+ * @class   vtkLightShaftTranslucentLayers
+ * @brief   Peels the translucent surfaces the light meets in front of its opaque casters, front
+ *          to back, into layers laid out as its depth map (one view, or a point light's 3 x 2
+ *          atlas of cube faces), side by side in one RGBA32F texture: per texel and layer the
+ *          surface's transmittance (rgb, vtkLightShaftTranslucentPeel's rule) and its depth
+ *          (alpha; 1 where the layer is empty). A point lies behind the first n layers that are
+ *          in front of it, and gets the product of their transmittance.
+ *
+ * Layers are peeled while one has a surface (an occlusion query per layer), up to the
+ * maximum asked and as many as fit side by side in the GL's largest texture. The light camera
+ * of each view is set by the caller (its depth map's).
+ */
+class vtkLightShaftTranslucentLayers
+{
+public:
+  vtkLightShaftTranslucentLayers();
+  ~vtkLightShaftTranslucentLayers();
+
+  /// Sets the light camera of view `v` and returns it.
+  using CameraSetter = std::function<vtkCamera*(int v)>;
+
+  /**
+   * Peel the layers of the frame's light: its views' translucent casters in front of the
+   * opaque depth map `opaque` (`cube`: a 3 x 2 atlas of faces), at most `maximumLayers`.
+   * Returns the number of layers that have a surface (0: none; the texture is then not kept).
+   */
+  int Render(vtkLightShaftFrame& frame,
+    vtkTextureObject* opaque,
+    bool cube,
+    int maximumLayers,
+    const CameraSetter& setCamera);
+
+  /// The layers side by side (valid after Render returned more than 0).
+  vtkTextureObject* GetTexture() const { return this->Result; }
+  /// The bytes of GL memory the layers hold.
+  double GetBytes() const;
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkLightShaftTranslucentLayers(const vtkLightShaftTranslucentLayers&) = delete;
+  void operator=(const vtkLightShaftTranslucentLayers&) = delete;
+
+  bool PeelFace(vtkLightShaftFrame& frame,
+    std::vector<vtkProp*>& casters,
+    vtkCamera* camera,
+    int layer,
+    const float rect[4]);
+  void Assemble(vtkLightShaftFrame& frame, int layers);
+
+  vtkNew<vtkLightShaftTranslucentPeel> Peel;
+  vtkNew<vtkCameraPass> CameraPass;
+  std::vector<vtkLightShaftResources::OwnedTexture> Layers;
+  vtkLightShaftResources::OwnedTexture Atlas;
+  vtkLightShaftResources::OwnedTexture FaceColor;
+  vtkLightShaftResources::OwnedTexture FaceDepth;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> FaceFramebuffer;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> LayerFramebuffer;
+  vtkTextureObject* Opaque = nullptr;
+  vtkTextureObject* Result = nullptr;
+  int UsedLayers = 0;
+  unsigned int Query = 0; ///< the occlusion query (GL name; 0: none yet)
+};
+
+#endif
