@@ -17,6 +17,8 @@
 #                                      # medium (docs/medium-field.md; about 1 min)
 #   tools/measure.sh medium-field-pareto  # each method through a plume: speed against
 #                                      # error (docs/medium-field.md; about 2 min)
+#   tools/measure.sh translucent       # translucent casters' cost per layer (README,
+#                                      # "Translucent casters"; about 3 min)
 #   tools/measure.sh worst-corners     # the slider corners (docs/robustness.md)
 #   tools/measure.sh random-scenes     # 50 random scenes: presets, methods, targets, the
 #                                      # fitted ladder (TargetError's cost against the oracle)
@@ -60,6 +62,7 @@ case "$what" in
   resolution-cost) run tests/benchmarks/resolution_cost.py "$@" ;;
   medium-field) run tests/benchmarks/medium_field_cost.py "$@" ;;
   medium-field-pareto) run tests/benchmarks/medium_field_pareto.py "$@" ;;
+  translucent) run tests/benchmarks/translucent_cost.py "$@" ;;
   worst-corners) run tests/benchmarks/worst_corners.py "$@" ;;
   random-scenes)
     run tests/benchmarks/random_scenes.py --validation --seed 0 --scenes 50 --max-height 720 \

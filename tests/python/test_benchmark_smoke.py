@@ -227,3 +227,16 @@ def test_medium_field_benchmarks_smoke(tmp_path):
     assert all(0.0 < float(r["time_ratio"]) and 0.0 <= float(r["relative_rmse"]) < 0.5
                for r in rows)
     assert (tmp_path / "images" / "medium_field_pareto.png").stat().st_size > 10000
+
+
+def test_translucent_cost_smoke():
+    # The cost per layer of translucent casters: it runs and prints a row per pane count, the
+    # layers peeled as many as the panes.
+    script = os.path.join(os.path.dirname(BENCHMARK), "translucent_cost.py")
+    result = subprocess.run([sys.executable, script, "--size", "64x48", "--frames", "1",
+                             "--layers", "2"], capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    rows = [line.split("|") for line in result.stdout.splitlines()
+            if line.startswith("| ") and not line.startswith("| panes")]
+    assert [int(row[1]) for row in rows] == [0, 1, 2]
+    assert [int(row[2]) for row in rows] == [0, 1, 2]

@@ -249,3 +249,13 @@ def test_the_cameras_translucency_modes_work_with_the_layers(peeling):
     assert shafts.GetLastLightTranslucentLayers(0) == 1
     assert np.array_equal(rh.in_scatter(shafts), plain)
     renderer.SetUseDepthPeeling(False)
+
+
+def test_several_lights_each_through_their_own_layers():
+    # The orange spot above the pane and a blue point light under it (render_helpers' "pair"):
+    # each light peels the pane in its own view (the point light's in its upper cube faces).
+    renderer, window, shafts, _ = make_scene("pair", [(4.0, RED, 0.5)])
+    assert shafts.GetLastNumberOfUsedLights() == 2
+    assert [shafts.GetLastLightTranslucentLayers(i) for i in range(2)] == [1, 1]
+    error, pixels = ref.relative_rms_error(rh.in_scatter(shafts), reference(renderer, shafts))
+    assert pixels > 1000 and error < 0.01, f"{error:.4%} over {pixels} pixels"
