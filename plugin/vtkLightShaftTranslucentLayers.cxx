@@ -189,6 +189,11 @@ void vtkLightShaftTranslucentLayers::Assemble(vtkLightShaftFrame& frame, int lay
       0, 0, width, height, k * width, 0, (k + 1) * width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     ostate->PopFramebufferBindings();
   }
+  // The layers live on in the atlas only (half the memory; the next peel allocates them again).
+  for (auto& layer : this->Layers)
+  {
+    layer.Release(window);
+  }
   this->Result = atlas;
 }
 

@@ -56,7 +56,8 @@ public:
     int maximumLayers,
     const CameraSetter& setCamera);
 
-  /// The layers side by side (valid after Render returned more than 0).
+  /// The layers side by side (valid after Render returned more than 0): the one layer's own
+  /// texture, or an atlas of them (the layers' own textures then freed).
   vtkTextureObject* GetTexture() const { return this->Result; }
   /// The bytes of GL memory the layers hold.
   double GetBytes() const;
