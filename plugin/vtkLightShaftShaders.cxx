@@ -304,6 +304,10 @@ void SetLightSpaceUniforms(vtkShaderProgram* program,
     frame.Translucency->Activate();
     program->SetUniformi("translucentLayers", frame.Translucency->GetTextureUnit());
     program->SetUniformi("translucentLayerCount", frame.TranslucentLayers);
+    // The bias is in the map's texels; layers held to their memory budget are coarser.
+    program->SetUniformf("translucentBiasScale",
+      static_cast<float>(shadowMap->GetHeight()) /
+        static_cast<float>(std::max(frame.Translucency->GetHeight(), 1u)));
   }
   const float depthRange[2] = { static_cast<float>(light.Near), static_cast<float>(light.Far) };
   program->SetUniform2f("lightDepthRange", depthRange);

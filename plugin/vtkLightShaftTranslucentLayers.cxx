@@ -13,6 +13,7 @@
 #include "vtkTextureObject.h"
 
 #include <algorithm>
+#include <cmath>
 
 using vtkLightShaftResources::TextureKind;
 
@@ -52,10 +53,15 @@ int vtkLightShaftTranslucentLayers::Render(vtkLightShaftFrame& frame,
     return 0;
   }
   vtkOpenGLRenderWindow* window = frame.Window;
-  const int width = static_cast<int>(opaque->GetWidth());
-  const int height = static_cast<int>(opaque->GetHeight());
-  const int fitting = std::max(vtkTextureObject::GetMaximumTextureSize(window) / width, 1);
-  const int most = std::min(maximumLayers, fitting);
+  int size[2];
+  const int most = vtkLightShaftTranslucentLayers::LayerSize(static_cast<int>(opaque->GetWidth()),
+    static_cast<int>(opaque->GetHeight()),
+    cube,
+    maximumLayers,
+    vtkTextureObject::GetMaximumTextureSize(window),
+    size);
+  const int width = size[0];
+  const int height = size[1];
   if (!this->Query)
   {
     glGenQueries(1, &this->Query);
@@ -110,6 +116,26 @@ int vtkLightShaftTranslucentLayers::Render(vtkLightShaftFrame& frame,
   }
   this->Assemble(frame, this->UsedLayers);
   return this->UsedLayers;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightShaftTranslucentLayers::LayerSize(int width,
+  int height,
+  bool cube,
+  int maximumLayers,
+  int maximumTexture,
+  int size[2])
+{
+  const int most = std::max(1, std::min(maximumLayers, maximumTexture / std::max(width, 1)));
+  const double bytes = 16.0 * most * width * height;
+  const double scale =
+    std::min(1.0, std::sqrt(vtkLightShaftTranslucentLayers::BudgetBytes / bytes));
+  // Whole faces (a point light's 3 x 2), so that the layers' faces line up with the map's.
+  const int across = cube ? 3 : 1;
+  const int down = cube ? 2 : 1;
+  size[0] = across * std::max(1, static_cast<int>(scale * (width / across)));
+  size[1] = down * std::max(1, static_cast<int>(scale * (height / down)));
+  return most;
 }
 
 //------------------------------------------------------------------------------

@@ -33,14 +33,32 @@ struct vtkLightShaftFrame;
  *          in front of it, and gets the product of their transmittance.
  *
  * Layers are peeled while one has a surface (an occlusion query per layer), up to the
- * maximum asked and as many as fit side by side in the GL's largest texture. The light camera
- * of each view is set by the caller (its depth map's).
+ * maximum asked and as many as fit side by side in the GL's largest texture, at the map's
+ * resolution or, where they would hold more than BudgetBytes, a lower one (LayerSize). The
+ * light camera of each view is set by the caller (its depth map's).
  */
 class vtkLightShaftTranslucentLayers
 {
 public:
   vtkLightShaftTranslucentLayers();
   ~vtkLightShaftTranslucentLayers();
+
+  /// The most GL memory one light's layers hold (the layers; twice that while they are
+  /// assembled side by side).
+  static constexpr double BudgetBytes = 1024.0 * 1024.0 * 1024.0;
+
+  /**
+   * The layers' rule for a map of `width` x `height` texels (`cube`: 3 x 2 faces): how many
+   * may be peeled (at most `maximumLayers`, and as many as fit side by side within
+   * `maximumTexture` texels), returned, and each layer's `size`: the map's, or scaled down
+   * (whole faces) so that that many hold at most BudgetBytes.
+   */
+  static int LayerSize(int width,
+    int height,
+    bool cube,
+    int maximumLayers,
+    int maximumTexture,
+    int size[2]);
 
   /// Sets the light camera of view `v` and returns it.
   using CameraSetter = std::function<vtkCamera*(int v)>;

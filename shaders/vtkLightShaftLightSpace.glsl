@@ -118,6 +118,7 @@ float lightShaftVisibility(vec3 pointVC, float r, float bias)
 #ifdef LIGHTSHAFT_TRANSLUCENT
 uniform sampler2D translucentLayers; // the layers side by side: rgb transmittance, a depth
 uniform int translucentLayerCount;
+uniform float translucentBiasScale; // the map's texels per layer texel (> 1: coarser layers)
 
 // The light that reaches pointVC through the translucent casters' surfaces in front of it,
 // per channel: the product of the transmittance of each layer (nearest first) that it lies
@@ -133,7 +134,7 @@ vec3 lightShaftTranslucency(vec3 pointVC, float r, float bias)
     for (int k = 0; k < translucentLayerCount; ++k)
     {
       vec4 layer = texture(translucentLayers, vec2((uv.x + float(k)) / layers, uv.y));
-      if (!lightShaftBehind(layer.a, w, bias))
+      if (!lightShaftBehind(layer.a, w, bias * translucentBiasScale))
       {
         break; // the layers are sorted by depth: none further is in front
       }

@@ -173,6 +173,27 @@ def test_layers_beyond_the_maximum_are_left_out():
     assert not np.array_equal(two, three)
 
 
+@pytest.mark.parametrize("kind", KINDS)
+def test_the_largest_map_holds_its_layers_to_their_memory_budget(kind):
+    """At ShadowMapSize 16384 a layer at the map's resolution would take 4 GiB (16 bytes a
+    texel), more than the GL could allocate (GL_OUT_OF_MEMORY, found by the fuzz with seed
+    23023); a light's layers are held to 1 GiB, coarser than the map, and still dim the light
+    as the pane does."""
+    renderer, window, shafts, _ = make_scene(kind, [(4.0, RED, 0.5)], ShadowMapSize=16384)
+    assert shafts.GetLastLightTranslucentLayers(0) == 1
+    assert 0.9 * 2**30 < shafts.GetLastLightTranslucentBytes(0) <= 2**30
+    pane = rh.in_scatter(shafts)
+    expected = reference(renderer, shafts)
+    error, pixels = ref.relative_rms_error(pane, expected)
+    assert pixels > 1000 and error < 0.01, f"{kind}: {error:.4%} over {pixels} pixels"
+    renderer, window, shafts, _ = make_scene(kind, ShadowMapSize=16384)
+    clear = rh.in_scatter(shafts)
+    mask = beyond(expected, reference(renderer, shafts), (1.0, 0.5, 0.5))
+    assert mask.sum() > 200, f"{kind}: {mask.sum()} pixels beyond the pane"
+    ratio = pane[mask].sum(axis=0) / clear[mask].sum(axis=0)
+    assert np.allclose(ratio, (1.0, 0.5, 0.5), rtol=0.01), f"{kind}: {ratio}"
+
+
 def test_the_layers_are_kept_until_a_translucent_prop_or_the_light_changes():
     renderer, window, shafts, (pane,) = make_scene("spot", [(4.0, RED, 0.5)])
     assert shafts.GetLastLightShadowMapRendered(0)
