@@ -299,7 +299,7 @@ public:
   vtkGetMacro(TranslucentShadows, bool);
   vtkBooleanMacro(TranslucentShadows, bool);
   /// In [1, 8]; fewer when no surface is left or more would not fit side by side in the GL's
-  /// largest texture; a light's layers hold at most 1 GiB (coarser if need be). Default is 4.
+  /// largest texture; a light's layers hold at most 512 MiB (coarser if need be). Default is 4.
   vtkSetClampMacro(TranslucentShadowLayers, int, 1, 8);
   vtkGetMacro(TranslucentShadowLayers, int);
   ///@}

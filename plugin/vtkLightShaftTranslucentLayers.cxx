@@ -72,6 +72,8 @@ int vtkLightShaftTranslucentLayers::Render(vtkLightShaftFrame& frame,
     this->Layers.resize(most);
   }
   vtkOpenGLState* ostate = window->GetState();
+  // (The caller's framebuffer is bound again after the peel, so that its targets can go.)
+  ostate->PushFramebufferBindings();
   for (int k = 0; k < most; ++k)
   {
     // The layer starts empty: everything passes, nothing stored.
@@ -110,11 +112,15 @@ int vtkLightShaftTranslucentLayers::Render(vtkLightShaftFrame& frame,
     this->Layers[k].Release(window);
   }
   this->Layers.resize(this->UsedLayers);
-  if (this->UsedLayers == 0)
+  if (this->UsedLayers > 0)
   {
-    return 0;
+    this->Assemble(frame, this->UsedLayers);
   }
-  this->Assemble(frame, this->UsedLayers);
+  ostate->PopFramebufferBindings();
+  // The peel's targets (one layer's face) are freed: the layers are kept until they change.
+  vtkLightShaftResources::ReleaseFramebuffer(this->FaceFramebuffer, window);
+  this->FaceColor.Release(window);
+  this->FaceDepth.Release(window);
   return this->UsedLayers;
 }
 
