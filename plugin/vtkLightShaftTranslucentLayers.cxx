@@ -133,7 +133,7 @@ int vtkLightShaftTranslucentLayers::LayerSize(int width,
   int size[2])
 {
   const int most = std::max(1, std::min(maximumLayers, maximumTexture / std::max(width, 1)));
-  const double bytes = 16.0 * most * width * height;
+  const double bytes = vtkLightShaftTranslucentLayers::TexelBytes * most * width * height;
   const double scale =
     std::min(1.0, std::sqrt(vtkLightShaftTranslucentLayers::BudgetBytes / bytes));
   // Whole faces (a point light's 3 x 2), so that the layers' faces line up with the map's.
@@ -237,12 +237,14 @@ double vtkLightShaftTranslucentLayers::GetBytes() const
   {
     if (layer.Object)
     {
-      bytes += 16.0 * layer.Object->GetWidth() * layer.Object->GetHeight();
+      bytes += vtkLightShaftTranslucentLayers::TexelBytes * layer.Object->GetWidth() *
+               layer.Object->GetHeight();
     }
   }
   if (this->Atlas.Object)
   {
-    bytes += 16.0 * this->Atlas.Object->GetWidth() * this->Atlas.Object->GetHeight();
+    bytes += vtkLightShaftTranslucentLayers::TexelBytes * this->Atlas.Object->GetWidth() *
+             this->Atlas.Object->GetHeight();
   }
   return bytes;
 }

@@ -46,6 +46,8 @@ public:
   /// The most GL memory one light's layers hold (twice that for a moment while they are
   /// assembled side by side; the peel's own targets, one layer's face, are freed after it).
   static constexpr double BudgetBytes = 512.0 * 1024.0 * 1024.0;
+  /// A layer texel's bytes: RGBA32F (rgb transmittance, a depth).
+  static constexpr double TexelBytes = 16.0;
 
   /**
    * The layers' rule for a map of `width` x `height` texels (`cube`: 3 x 2 faces): how many
