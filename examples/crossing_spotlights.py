@@ -36,9 +36,9 @@ def main():
     scenes.add_fill_light(renderer, 0.06)
 
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05)
-    shafts.SetPhaseFunctionToHenyeyGreenstein()
-    shafts.SetAnisotropy(0.25)
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
+    shafts.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
+    shafts.GetMedium().SetAnisotropy(0.25)
     shafts.SetExposure(35.0)
     shafts.SetQualityToFinal()
     shafts.ShadowSurfacesOn()
@@ -46,9 +46,9 @@ def main():
 
     show_or_save(window, args.output, args.interactive)
     if not args.interactive:
-        times = ", ".join(f"{shafts.GetLastLightTime(i):.1f}"
-                          for i in range(shafts.GetLastNumberOfUsedLights()))
-        print(f"wrote {args.output}: {shafts.GetLastNumberOfUsedLights()} lights, "
+        times = ", ".join(f"{shafts.GetLastFrame().GetLightTime(i):.1f}"
+                          for i in range(shafts.GetLastFrame().GetNumberOfUsedLights()))
+        print(f"wrote {args.output}: {shafts.GetLastFrame().GetNumberOfUsedLights()} lights, "
               f"GPU ms per light {times}")
 
 

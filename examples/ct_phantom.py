@@ -123,12 +123,12 @@ def main():
     camera.SetViewAngle(40.0)
 
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.25, 0.24, 0.22)
-    shafts.SetAbsorptionCoefficient(0.1)
-    shafts.SetMediumDensityArrayName("attenuation")  # (first: the image has no scalars)
-    shafts.SetMediumDensity(scan)
-    shafts.SetMediumDensityScale(6.0)
-    shafts.SetMediumBackgroundDensity(0.05)  # the haze the shafts show in
+    shafts.GetMedium().SetScatteringCoefficient(0.25, 0.24, 0.22)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.1)
+    shafts.GetMedium().SetDensityArrayName("attenuation")  # (first: the image has no scalars)
+    shafts.GetMedium().SetDensityField(scan)
+    shafts.GetMedium().SetDensityScale(6.0)
+    shafts.GetMedium().SetBackgroundDensity(0.05)  # the haze the shafts show in
     shafts.SetMethod(vtkLightShaftPass.RAY_MARCH)
     shafts.SetNumberOfSteps(192)
     shafts.SetExposure(45.0)
@@ -136,9 +136,9 @@ def main():
 
     show_or_save(window, args.output, args.interactive)
     if not args.interactive:
-        print(f"wrote {args.output}: RAY_MARCH {shafts.GetLastNumberOfSteps()} steps through "
+        print(f"wrote {args.output}: RAY_MARCH {shafts.GetLastFrame().GetNumberOfSteps()} steps through "
               f"a {SAMPLES}^3 phantom (light leg: a "
-              f"{shafts.GetLastLightFieldShadowBytes(0) / 2 ** 20:.1f} MiB table)")
+              f"{shafts.GetLastFrame().GetLightFieldShadowBytes(0) / 2 ** 20:.1f} MiB table)")
 
 
 if __name__ == "__main__":

@@ -4,7 +4,7 @@
     /usr/bin/python3 examples/dusty_room.py --frames 48 --output-dir dusty_frames
     # writes dusty_frames/frame_0000.png ... and dusty_frames/dusty_room.ogv (Ogg Theora)
 
-Each frame sets vtkLightShaftPass.SetTime(t): the noise is a pure function of t, so frame k is
+Each frame sets vtkLightShaftPass.GetMedium().SetTime(t): the noise is a pure function of t, so frame k is
 the same image on every run. Without a display, run it under `xvfb-run -a`.
 """
 
@@ -50,16 +50,16 @@ def main():
     scenes.add_fill_light(renderer, 0.12)
 
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.06, 0.057, 0.052)
-    shafts.SetAbsorptionCoefficient(0.004)
-    shafts.SetPhaseFunctionToHenyeyGreenstein()
-    shafts.SetAnisotropy(0.3)
+    shafts.GetMedium().SetScatteringCoefficient(0.06, 0.057, 0.052)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.004)
+    shafts.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
+    shafts.GetMedium().SetAnisotropy(0.3)
     shafts.SetExposure(40.0)
     shafts.SetNumberOfSlices(160)
     shafts.SetShadowMapSize(2048)
     shafts.ShadowSurfacesOn()
-    shafts.SetNoiseAmplitude(0.9)  # dust: density varies, mean brightness does not
-    shafts.SetNoiseScale(3.0)
+    shafts.GetMedium().SetNoiseAmplitude(0.9)  # dust: density varies, mean brightness does not
+    shafts.GetMedium().SetNoiseScale(3.0)
     renderer.SetPass(shafts)
 
     movie = None
@@ -75,7 +75,7 @@ def main():
         movie.SetQuality(2)
         movie.Start()
     for frame in tqdm(range(args.frames), desc="frames", unit="frame"):
-        shafts.SetTime(frame / args.fps)
+        shafts.GetMedium().SetTime(frame / args.fps)
         window.Render()
         write_png(window, os.path.join(args.output_dir, f"frame_{frame:04d}.png"))
         if movie:

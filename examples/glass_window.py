@@ -66,10 +66,10 @@ def main():
     add_glass(renderer, args.opacity)
 
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05)
-    shafts.SetAbsorptionCoefficient(0.004)
-    shafts.SetPhaseFunctionToHenyeyGreenstein()
-    shafts.SetAnisotropy(0.3)
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.004)
+    shafts.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
+    shafts.GetMedium().SetAnisotropy(0.3)
     shafts.SetExposure(40.0)
     shafts.SetNumberOfSlices(192)
     shafts.SetShadowMapSize(2048)
@@ -79,8 +79,8 @@ def main():
     show_or_save(window, args.output, args.interactive)
     if args.interactive:
         return
-    print(f"wrote {args.output} ({shafts.GetLastLightTranslucentLayers(0)} translucent layer(s), "
-          f"{shafts.GetLastShaderVariant()})")
+    print(f"wrote {args.output} ({shafts.GetLastFrame().GetLightTranslucentLayers(0)} translucent layer(s), "
+          f"{shafts.GetLastFrame().GetShaderVariant()})")
 
 
 if __name__ == "__main__":

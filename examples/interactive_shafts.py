@@ -53,7 +53,7 @@ class Demo:
         self.info = scenes.sphere_and_floor(self.renderer)
         scenes.add_fill_light(self.renderer)
         self.shafts = vtkLightShaftPass()
-        self.shafts.SetScatteringCoefficient(0.05, 0.045, 0.04)
+        self.shafts.GetMedium().SetScatteringCoefficient(0.05, 0.045, 0.04)
         self.shafts.SetExposure(40.0)
         self.renderer.SetPass(self.shafts)
         self.last_frame_ms = 0.0
@@ -91,8 +91,8 @@ class Demo:
         getattr(self.shafts, "Set" + name)(getattr(self.shafts, "Get" + name)() + delta)
 
     def scale_sigma(self, factor):
-        self.shafts.SetScatteringCoefficient(
-            *[factor * c for c in self.shafts.GetScatteringCoefficient()])
+        self.shafts.GetMedium().SetScatteringCoefficient(
+            *[factor * c for c in self.shafts.GetMedium().GetScatteringCoefficient()])
 
     def scale_count(self, factor):
         name = {vtkLightShaftPass.RAY_MARCH: "NumberOfSteps",
@@ -104,7 +104,7 @@ class Demo:
         getattr(self.shafts, "Set" + name)(max(1, int(round(current * factor))))
 
     def toggle_noise(self):
-        self.shafts.SetNoiseAmplitude(0.0 if self.shafts.GetNoiseAmplitude() > 0.0 else 0.8)
+        self.shafts.GetMedium().SetNoiseAmplitude(0.0 if self.shafts.GetMedium().GetNoiseAmplitude() > 0.0 else 0.8)
 
     # --- frames and reports ----------------------------------------------------------------
     def render(self):
@@ -116,18 +116,18 @@ class Demo:
     def report(self, key):
         p = self.shafts
         method = vtkLightShaftPass.GetMethodName(p.GetMethod())
-        used = vtkLightShaftPass.GetMethodName(p.GetLastMethod())
+        used = vtkLightShaftPass.GetMethodName(p.GetLastFrame().GetMethod())
         print(f"[{key}] method={method} (used {used}) light={self.info.light.GetPosition()} "
-              f"exposure={p.GetExposure():.4g} sigma_s={p.GetScatteringCoefficient()[0]:.4g} "
+              f"exposure={p.GetExposure():.4g} sigma_s={p.GetMedium().GetScatteringCoefficient()[0]:.4g} "
               f"slices={p.GetNumberOfSlices()} steps={p.GetNumberOfSteps()} "
               f"samples={p.GetRadialSamples()} cells={p.GetLightVolumeResolution()} "
               f"decay={p.GetDecay():.3g} "
               f"weight={p.GetWeight():.3g} density={p.GetDensity():.3g} "
-              f"noise={p.GetNoiseAmplitude():.3g} time={p.GetTime():.4g}")
-        print(f"    last frame: {self.last_frame_ms:.1f} ms, slabs {p.GetLastNumberOfSlicesDrawn()}, "
-              f"shadow map {'yes' if p.GetLastShadowMapRendered() else 'no'}, "
-              f"post passes {p.GetLastNumberOfPostPasses()}, "
-              f"shader '{p.GetLastShaderVariant()}', GL errors {p.GetLastGLErrorCount()}",
+              f"noise={p.GetMedium().GetNoiseAmplitude():.3g} time={p.GetMedium().GetTime():.4g}")
+        print(f"    last frame: {self.last_frame_ms:.1f} ms, slabs {p.GetLastFrame().GetNumberOfSlicesDrawn()}, "
+              f"shadow map {'yes' if p.GetLastFrame().GetShadowMapRendered() else 'no'}, "
+              f"post passes {p.GetLastFrame().GetNumberOfPostPasses()}, "
+              f"shader '{p.GetLastFrame().GetShaderVariant()}', GL errors {p.GetLastFrame().GetGLErrorCount()}",
               flush=True)
 
     def on_key(self, interactor, _event):

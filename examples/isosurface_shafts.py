@@ -42,8 +42,8 @@ def main():
     renderer.AddViewProp(title)
 
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.04)
-    shafts.SetAbsorptionCoefficient(0.004)
+    shafts.GetMedium().SetScatteringCoefficient(0.04)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.004)
     shafts.SetExposure(60.0)
     shafts.SetNumberOfSlices(256)
     shafts.SetShadowMapSize(2048)

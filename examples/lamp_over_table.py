@@ -37,8 +37,8 @@ def main():
     scenes.add_fill_light(renderer, 0.08)
 
     shafts = vtkLightShaftPass()  # automatic choice: the lamp
-    shafts.SetScatteringCoefficient(0.06, 0.055, 0.05)
-    shafts.SetAbsorptionCoefficient(0.01)
+    shafts.GetMedium().SetScatteringCoefficient(0.06, 0.055, 0.05)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.01)
     shafts.SetExposure(30.0)
     shafts.SetQualityToFinal()
     shafts.ShadowSurfacesOn()  # the table's and the shade's shadows on the surfaces
@@ -46,8 +46,8 @@ def main():
 
     show_or_save(window, args.output, args.interactive)
     if not args.interactive:
-        print(f"wrote {args.output}: {shafts.GetLastNumberOfSlicesDrawn()} slices, "
-              f"light kind {shafts.GetLastLightKind(0)} (0 spot, 1 point, 2 directional)")
+        print(f"wrote {args.output}: {shafts.GetLastFrame().GetNumberOfSlicesDrawn()} slices, "
+              f"light kind {shafts.GetLastFrame().GetLightKind(0)} (0 spot, 1 point, 2 directional)")
 
 
 if __name__ == "__main__":

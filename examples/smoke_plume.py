@@ -101,11 +101,11 @@ def main():
     camera.SetViewAngle(38.0)
 
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.3, 0.28, 0.26)
-    shafts.SetAbsorptionCoefficient(0.05)
-    shafts.SetMediumDensity(plume())
-    shafts.SetMediumDensityScale(3.0)
-    shafts.SetMediumBackgroundDensity(0.08)  # the haze around the plume
+    shafts.GetMedium().SetScatteringCoefficient(0.3, 0.28, 0.26)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.05)
+    shafts.GetMedium().SetDensityField(plume())
+    shafts.GetMedium().SetDensityScale(3.0)
+    shafts.GetMedium().SetBackgroundDensity(0.08)  # the haze around the plume
     shafts.SetMethod(vtkLightShaftPass.RAY_MARCH)
     shafts.SetNumberOfSteps(128)
     shafts.SetExposure(25.0)
@@ -113,7 +113,7 @@ def main():
 
     show_or_save(window, args.output, args.interactive)
     if not args.interactive:
-        print(f"wrote {args.output}: RAY_MARCH {shafts.GetLastNumberOfSteps()} steps through "
+        print(f"wrote {args.output}: RAY_MARCH {shafts.GetLastFrame().GetNumberOfSteps()} steps through "
               f"a {SAMPLES}^3 density field")
 
 

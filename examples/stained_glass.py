@@ -73,10 +73,10 @@ def main():
     scenes.add_fill_light(renderer, 0.1)
 
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05)
-    shafts.SetAbsorptionCoefficient(0.004)
-    shafts.SetPhaseFunctionToHenyeyGreenstein()
-    shafts.SetAnisotropy(0.3)
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.004)
+    shafts.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
+    shafts.GetMedium().SetAnisotropy(0.3)
     shafts.SetExposure(40.0)
     shafts.SetNumberOfSlices(192)
     shafts.SetShadowMapSize(2048)
@@ -87,7 +87,7 @@ def main():
     show_or_save(window, args.output, args.interactive)
     if args.interactive:
         return
-    print(f"wrote {args.output} ({shafts.GetLastShaderVariant()})")
+    print(f"wrote {args.output} ({shafts.GetLastFrame().GetShaderVariant()})")
 
 
 if __name__ == "__main__":

@@ -38,9 +38,9 @@ def main():
 
     shafts = vtkLightShaftPass()
     shafts.SetLight(info.light)  # the sun
-    shafts.SetScatteringCoefficient(0.05, 0.047, 0.043)  # per world unit
-    shafts.SetPhaseFunctionToHenyeyGreenstein()
-    shafts.SetAnisotropy(0.4)
+    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.047, 0.043)  # per world unit
+    shafts.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
+    shafts.GetMedium().SetAnisotropy(0.4)
     shafts.SetExposure(40.0)
     shafts.SetQualityToFinal()
     shafts.ShadowSurfacesOn()  # the floor shows the window's pattern too
@@ -48,8 +48,8 @@ def main():
 
     show_or_save(window, args.output, args.interactive)
     if not args.interactive:
-        print(f"wrote {args.output}: {shafts.GetLastNumberOfSlicesDrawn()} slices, "
-              f"light kind {shafts.GetLastLightKind(0)} (0 spot, 1 point, 2 directional)")
+        print(f"wrote {args.output}: {shafts.GetLastFrame().GetNumberOfSlicesDrawn()} slices, "
+              f"light kind {shafts.GetLastFrame().GetLightKind(0)} (0 spot, 1 point, 2 directional)")
 
 
 if __name__ == "__main__":

@@ -36,10 +36,10 @@ def main():
     scenes.add_fill_light(renderer, 0.12)
 
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05, 0.047, 0.043)  # per world unit
-    shafts.SetAbsorptionCoefficient(0.005)
-    shafts.SetPhaseFunctionToHenyeyGreenstein()
-    shafts.SetAnisotropy(0.3)
+    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.047, 0.043)  # per world unit
+    shafts.GetMedium().SetAbsorptionCoefficient(0.005)
+    shafts.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
+    shafts.GetMedium().SetAnisotropy(0.3)
     shafts.SetExposure(45.0)
     shafts.SetNumberOfSlices(args.slices)
     shafts.SetShadowMapSize(2048)
@@ -49,8 +49,8 @@ def main():
     show_or_save(window, args.output, args.interactive)
     if args.interactive:
         return
-    print(f"wrote {args.output}: {shafts.GetLastNumberOfSlicesDrawn()} slices, "
-          f"shadow map {'rendered' if shafts.GetLastShadowMapRendered() else 'skipped'}")
+    print(f"wrote {args.output}: {shafts.GetLastFrame().GetNumberOfSlicesDrawn()} slices, "
+          f"shadow map {'rendered' if shafts.GetLastFrame().GetShadowMapRendered() else 'skipped'}")
 
 
 if __name__ == "__main__":

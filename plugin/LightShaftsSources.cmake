@@ -34,17 +34,23 @@ set(lightshafts_private_classes
   vtkLightShaftSurfaceLight
   vtkLightShaftTranslucentLayers
   vtkLightShaftTranslucentPeel)
-# vtkLightShaftPass's read-outs and its choice of sampling are compiled with it (the public
+# vtkLightShaftPass's read-backs and its choice of sampling are compiled with it (the public
 # class's second and third source files).
-set(lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassMedium.cxx"
-  "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassReadouts.cxx"
+set(lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassReadouts.cxx"
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassSampling.cxx")
 set(lightshafts_private_headers
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftFrame.h"
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftErrorModelTable.h"
+  "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftMediumInternals.h"
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftOpenGL.h"
-  "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassInternals.h")
+  "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassInternals.h"
+  "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftSetters.h")
 foreach (class IN LISTS lightshafts_private_classes)
   list(APPEND lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/${class}.cxx")
   list(APPEND lightshafts_private_headers "${CMAKE_CURRENT_LIST_DIR}/${class}.h")
 endforeach ()
+# The public classes the pass's sources need besides it: what the medium is and what the last
+# frame did (wrapped and installed by the VTK module; compiled into the ParaView plugin's too).
+set(lightshafts_pass_public_classes
+  vtkLightShaftFrameReport
+  vtkLightShaftMedium)

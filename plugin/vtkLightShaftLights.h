@@ -25,7 +25,7 @@ class vtkRenderer;
 class vtkWindow;
 
 /**
- * What a frame did for one of its lights; published as the pass's GetLastLight* read-outs.
+ * What a frame did for one of its lights; published as vtkLightShaftFrameReport's GetLight* read-outs.
  */
 struct vtkLightShaftLightStatistics
 {

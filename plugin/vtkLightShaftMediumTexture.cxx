@@ -1,6 +1,7 @@
 #include "vtkLightShaftMediumTexture.h"
 
 #include "vtkImageData.h"
+#include "vtkLightShaftMediumInternals.h"
 #include "vtkLightShaftOpenGL.h"
 #include "vtkLightShaftResources.h"
 #include "vtkObject.h"
@@ -12,9 +13,10 @@ vtkLightShaftMediumTexture::~vtkLightShaftMediumTexture() = default;
 
 vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* window,
   vtkObject* owner,
-  vtkImageData* image,
-  const std::string& arrayName)
+  vtkLightShaftMedium* medium)
 {
+  vtkImageData* image = medium->UpdateDensityField(owner);
+  const std::string arrayName = medium->GetDensityArrayName();
   if (!image)
   {
     this->ReleaseGraphicsResources(window); // (no field: its texture is not kept)
@@ -33,17 +35,10 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
   }
   vtkLightShaftDensityField field;
   std::string why;
-  if (image == this->AdoptedImage && image->GetMTime() == this->AdoptedTime &&
-      arrayName == this->AdoptedName)
-  {
-    field = std::move(this->AdoptedField); // (read by the pass's setter: not read twice)
-  }
-  else
+  if (!medium->Impl->Take(image, arrayName, field)) // (read by the setter: not read twice)
   {
     why = field.Read(image, arrayName.c_str());
   }
-  this->AdoptedImage = nullptr;
-  this->AdoptedField = vtkLightShaftDensityField();
   GLint maximum = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maximum);
   const int* samples = field.GetSamples();
@@ -52,12 +47,12 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
     if (image != this->Resampled) // (said once per image, not at each of its updates)
     {
       vtkWarningWithObjectMacro(owner,
-        "MediumDensity: the image has " << samples[0] << " x " << samples[1] << " x " << samples[2]
-                                        << " samples, more along an axis than this "
-                                        << "GL's 3D textures hold (" << maximum
-                                        << "): it is resampled to " << maximum
-                                        << " along that axis (vtkLightShaftReference integrates "
-                                        << "it as it is).");
+        "DensityField: the image has " << samples[0] << " x " << samples[1] << " x " << samples[2]
+                                       << " samples, more along an axis than this "
+                                       << "GL's 3D textures hold (" << maximum
+                                       << "): it is resampled to " << maximum
+                                       << " along that axis (vtkLightShaftReference integrates "
+                                       << "it as it is).");
       this->Resampled = image;
     }
     field = field.Resampled(maximum);
@@ -68,7 +63,7 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
     // Changed into something unusable since it was set (or a pipeline made it): keep the
     // last usable field.
     vtkErrorWithObjectMacro(
-      owner, "MediumDensity: the image " << why << "; the last usable density field is kept.");
+      owner, "DensityField: the image " << why << "; the last usable density field is kept.");
     this->Refused = image;
     this->RefusedTime = image->GetMTime();
     this->RefusedName = arrayName;
@@ -83,16 +78,6 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
   this->UploadTime = image->GetMTime();
   ++this->Version;
   return this->Texture;
-}
-
-void vtkLightShaftMediumTexture::Adopt(vtkImageData* image,
-  const std::string& arrayName,
-  vtkLightShaftDensityField&& field)
-{
-  this->AdoptedField = std::move(field);
-  this->AdoptedImage = image;
-  this->AdoptedTime = image ? image->GetMTime() : 0;
-  this->AdoptedName = arrayName;
 }
 
 glm::dmat4 vtkLightShaftMediumTexture::TextureFromWorld() const

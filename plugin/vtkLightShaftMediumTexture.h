@@ -16,6 +16,7 @@
 #include <string> // For the array name and the last error
 
 class vtkImageData;
+class vtkLightShaftMedium;
 class vtkObject;
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
@@ -23,8 +24,8 @@ class vtkWindow;
 
 /**
  * @class   vtkLightShaftMediumTexture
- * @brief   SetMediumDensity's field on the GPU: float32 samples in a 3D texture, filtered
- *          linearly and clamped to its edge (vtkLightShaftDensityField's trilinear rule).
+ * @brief   vtkLightShaftMedium's density field on the GPU: float32 samples in a 3D texture,
+ * filtered linearly and clamped to its edge (vtkLightShaftDensityField's trilinear rule).
  *
  * The image is read again when its MTime (or its data's) or the array name changes. An image
  * that became unusable since it was set is reported once (error from the owner) and the last
@@ -37,19 +38,13 @@ public:
   ~vtkLightShaftMediumTexture();
 
   /**
-   * The texture of `image`'s density (nullptr when `image` is nullptr, or no usable field was
-   * ever read from it).
+   * The texture of the medium's density field for this render (nullptr when it has none, or no
+   * usable field was ever read from its image). The field the medium's setter read is taken
+   * instead of reading the image again.
    */
   vtkTextureObject* Ready(vtkOpenGLRenderWindow* window,
     vtkObject* owner,
-    vtkImageData* image,
-    const std::string& arrayName);
-
-  /**
-   * The field the pass's setter read from `image` (as it is now) with `arrayName`: the next
-   * Ready for them uses it instead of reading the image again.
-   */
-  void Adopt(vtkImageData* image, const std::string& arrayName, vtkLightShaftDensityField&& field);
+    vtkLightShaftMedium* medium);
 
   /// The field the texture holds.
   const vtkLightShaftDensityField& GetField() const { return this->Field; }
@@ -79,11 +74,6 @@ private:
   std::string ArrayName;
   vtkMTimeType UploadTime = 0;
   vtkMTimeType Version = 0;
-  /// The field adopted from the setter, and the image, time and name it was read for.
-  vtkLightShaftDensityField AdoptedField;
-  vtkImageData* AdoptedImage = nullptr;
-  vtkMTimeType AdoptedTime = 0;
-  std::string AdoptedName;
   vtkImageData* Resampled = nullptr; ///< the image last said to be resampled (only compared)
   /// The image last refused, as it was then (only compared: refused once, not read again).
   vtkImageData* Refused = nullptr;

@@ -111,7 +111,7 @@ protected:
   static std::string SharedBy(const vtkLightShaftFrame& frame);
 
   /// SamplesWithinBudget for the frame's NumberOfSteps, recorded in the frame's statistics
-  /// (the fewest of its lights: GetLastNumberOfSteps).
+  /// (the fewest of its lights: the frame report's GetNumberOfSteps).
   int StepsWithinBudget(vtkLightShaftFrame& frame, long long rays = -1);
 
   /// " accumulate=float32" or " accumulate=float16": the description of a float accumulation.

@@ -5,13 +5,16 @@
 #include "vtkLightShaftDensityField.h"
 #include "vtkLightShaftErrorModel.h"
 #include "vtkLightShaftFrame.h"
+#include "vtkLightShaftFrameReport.h"
 #include "vtkLightShaftGeometry.h"
 #include "vtkLightShaftInScatter.h"
 #include "vtkLightShaftLightTextures.h"
 #include "vtkLightShaftLights.h"
+#include "vtkLightShaftMedium.h"
 #include "vtkLightShaftModel.h"
 #include "vtkLightShaftResources.h"
 #include "vtkLightShaftSceneRenderer.h"
+#include "vtkLightShaftSetters.h"
 #include "vtkLightShaftShadowMap.h"
 #include "vtkLightShaftSurfaceLight.h"
 
@@ -49,9 +52,9 @@
 
 namespace
 {
-constexpr double MaximumCoefficient = 1.0e6;
 constexpr double MaximumExposure = 1.0e6;
-constexpr double MaximumAnisotropy = 0.99;
+using vtkLightShaftSetters::RefuseNonFinite;
+using vtkLightShaftSetters::SetClamped;
 }
 
 vtkStandardNewMacro(vtkLightShaftPass);
@@ -60,6 +63,7 @@ vtkStandardNewMacro(vtkLightShaftPass);
 vtkLightShaftPass::vtkLightShaftPass()
   : Impl(new Internals)
 {
+  this->Impl->Medium = vtkSmartPointer<vtkLightShaftMedium>::New();
 }
 
 //------------------------------------------------------------------------------
@@ -139,7 +143,7 @@ void vtkLightShaftPass::Internals::ReleaseOwnResources(vtkWindow* w)
   this->Lights.ReleaseGraphicsResources(w);
   this->Scene.ReleaseGraphicsResources(w);
   this->Textures.ReleaseGraphicsResources(w);
-  this->Medium.ReleaseGraphicsResources(w);
+  this->DensityTexture.ReleaseGraphicsResources(w);
   this->InScatter.ReleaseGraphicsResources(w);
   this->SurfaceLight.ReleaseGraphicsResources(w);
   this->Composite.ReleaseGraphicsResources(w);
@@ -151,141 +155,34 @@ void vtkLightShaftPass::Internals::ReleaseOwnResources(vtkWindow* w)
 
 //------------------------------------------------------------------------------
 // Parameters.
-namespace
+void vtkLightShaftPass::SetMedium(vtkLightShaftMedium* medium)
 {
-// Setters refuse NaN and infinities: report the parameter and keep the previous value.
-bool RefuseNonFinite(vtkObject* self, const char* parameter, std::initializer_list<double> values)
-{
-  if (std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); }))
-  {
-    return false;
-  }
-  vtkErrorWithObjectMacro(
-    self, << parameter << ": non-finite value refused; the previous value is kept.");
-  return true;
-}
-
-// Clamp `values` into [low, high] and store them in `target`; Modified() when they changed.
-void SetClamped(vtkObject* self,
-  const char* parameter,
-  double* target,
-  std::initializer_list<double> values,
-  double low,
-  double high)
-{
-  if (RefuseNonFinite(self, parameter, values))
+  if (medium && medium == this->Impl->Medium)
   {
     return;
   }
-  bool changed = false;
-  size_t i = 0;
-  for (double value : values)
-  {
-    const double clamped = vtkMath::ClampValue(value, low, high);
-    changed = changed || target[i] != clamped;
-    target[i++] = clamped;
-  }
-  if (changed)
-  {
-    self->Modified();
-  }
-}
-} // namespace
-
-void vtkLightShaftPass::SetScatteringCoefficient(double r, double g, double b)
-{
-  SetClamped(this,
-    "ScatteringCoefficient",
-    this->ScatteringCoefficient,
-    { r, g, b },
-    0.0,
-    MaximumCoefficient);
+  this->Impl->Medium = medium ? medium : vtkSmartPointer<vtkLightShaftMedium>::New().Get();
+  this->Modified();
 }
 
-void vtkLightShaftPass::SetScatteringCoefficient(const double rgb[3])
+vtkLightShaftMedium* vtkLightShaftPass::GetMedium()
 {
-  this->SetScatteringCoefficient(rgb[0], rgb[1], rgb[2]);
+  return this->Impl->Medium;
 }
 
-void vtkLightShaftPass::SetScatteringCoefficient(double grey)
+vtkMTimeType vtkLightShaftPass::GetMTime()
 {
-  this->SetScatteringCoefficient(grey, grey, grey);
+  return std::max(this->Superclass::GetMTime(), this->Impl->Medium->GetMTime());
 }
 
-void vtkLightShaftPass::SetAbsorptionCoefficient(double r, double g, double b)
+vtkLightShaftFrameReport* vtkLightShaftPass::GetLastFrame()
 {
-  SetClamped(this,
-    "AbsorptionCoefficient",
-    this->AbsorptionCoefficient,
-    { r, g, b },
-    0.0,
-    MaximumCoefficient);
-}
-
-void vtkLightShaftPass::SetAbsorptionCoefficient(const double rgb[3])
-{
-  this->SetAbsorptionCoefficient(rgb[0], rgb[1], rgb[2]);
-}
-
-void vtkLightShaftPass::SetAbsorptionCoefficient(double grey)
-{
-  this->SetAbsorptionCoefficient(grey, grey, grey);
-}
-
-void vtkLightShaftPass::SetMediumDensityScale(double scale)
-{
-  SetClamped(
-    this, "MediumDensityScale", &this->MediumDensityScale, { scale }, 0.0, MaximumCoefficient);
-}
-
-void vtkLightShaftPass::SetMediumBackgroundDensity(double density)
-{
-  SetClamped(this,
-    "MediumBackgroundDensity",
-    &this->MediumBackgroundDensity,
-    { density },
-    0.0,
-    MaximumCoefficient);
-}
-
-void vtkLightShaftPass::SetAnisotropy(double g)
-{
-  SetClamped(this, "Anisotropy", &this->Anisotropy, { g }, -MaximumAnisotropy, MaximumAnisotropy);
+  return this->Impl->LastFrame;
 }
 
 void vtkLightShaftPass::SetExposure(double exposure)
 {
   SetClamped(this, "Exposure", &this->Exposure, { exposure }, 0.0, MaximumExposure);
-}
-
-void vtkLightShaftPass::SetNoiseAmplitude(double amplitude)
-{
-  SetClamped(this, "NoiseAmplitude", &this->NoiseAmplitude, { amplitude }, 0.0, 1.0);
-}
-
-void vtkLightShaftPass::SetNoiseScale(double scale)
-{
-  SetClamped(this, "NoiseScale", &this->NoiseScale, { scale }, 0.01, 1000.0);
-}
-
-void vtkLightShaftPass::SetNoiseVelocity1(double u, double v)
-{
-  SetClamped(this, "NoiseVelocity1", this->NoiseVelocity1, { u, v }, -1e3, 1e3);
-}
-
-void vtkLightShaftPass::SetNoiseVelocity2(double u, double v)
-{
-  SetClamped(this, "NoiseVelocity2", this->NoiseVelocity2, { u, v }, -1e3, 1e3);
-}
-
-void vtkLightShaftPass::SetTime(double time)
-{
-  SetClamped(this,
-    "Time",
-    &this->Time,
-    { time },
-    -std::numeric_limits<double>::max(),
-    std::numeric_limits<double>::max());
 }
 
 void vtkLightShaftPass::SetRadialGuardBand(double extent)
@@ -470,20 +367,6 @@ vtkTexture* vtkLightShaftPass::GetCookie()
   return this->Impl->Textures.GetCookie();
 }
 
-void vtkLightShaftPass::SetNoiseTexture(vtkTexture* noise)
-{
-  if (this->Impl->Textures.GetNoiseImage() != noise)
-  {
-    this->Impl->Textures.SetNoiseImage(noise);
-    this->Modified();
-  }
-}
-
-vtkTexture* vtkLightShaftPass::GetNoiseTexture()
-{
-  return this->Impl->Textures.GetNoiseImage();
-}
-
 vtkTextureObject* vtkLightShaftPass::GetShadowMapTexture()
 {
   vtkLightShaftLightState* state = this->Impl->Lights.GetEventState();
@@ -521,32 +404,6 @@ bool vtkLightShaftPass::GetShadowCasterBounds(double bounds[6])
   return this->UseShadowCasterBounds;
 }
 
-const char* vtkLightShaftPass::GetLastShaderVariant()
-{
-  // Each light's variant, joined by "; " (the last computed one's while no light computed any).
-  std::string& variants = this->Impl->Variants;
-  variants.clear();
-  for (const vtkLightShaftLightStatistics& light : this->Impl->LastLights)
-  {
-    if (!light.ShaderVariant.empty())
-    {
-      variants += (variants.empty() ? "" : "; ") + light.ShaderVariant;
-    }
-  }
-  const vtkLightShaftMethod* method = this->Impl->InScatter.GetShaderMethod();
-  if (variants.empty() && method)
-  {
-    variants = method->GetShaderVariant();
-  }
-  return variants.c_str();
-}
-
-const char* vtkLightShaftPass::GetLastSliceShaderSource()
-{
-  const vtkLightShaftMethod* method = this->Impl->InScatter.GetShaderMethod();
-  return method ? method->GetShaderSource().c_str() : "";
-}
-
 //------------------------------------------------------------------------------
 void vtkLightShaftPass::Render(const vtkRenderState* s)
 {
@@ -555,15 +412,15 @@ void vtkLightShaftPass::Render(const vtkRenderState* s)
   {
   }
   this->RenderFrame(s);
-  this->LastGLErrorCount = 0;
+  int count = 0;
   std::string names;
-  for (GLenum error = glGetError(); error != GL_NO_ERROR && this->LastGLErrorCount < 64;
-       error = glGetError())
+  for (GLenum error = glGetError(); error != GL_NO_ERROR && count < 64; error = glGetError())
   {
-    ++this->LastGLErrorCount;
+    ++count;
     names += std::string(names.empty() ? "" : ", ") + vtkOpenGLStrError(error);
   }
-  if (this->LastGLErrorCount > 0)
+  this->Impl->LastFrame->SetGLErrorCount(count);
+  if (count > 0)
   {
     vtkErrorMacro("OpenGL errors during the frame: " << names);
   }
@@ -580,9 +437,15 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   impl.FinalInScatter = nullptr;
   vtkLightShaftFrame frame;
   frame.Number = ++impl.FrameCounter;
+  // The frame's read-outs, with the shader variants it compiled.
+  auto publish = [this, &impl](const vtkLightShaftFrame& done)
+  {
+    this->NumberOfRenderedProps = done.Statistics.RenderedProps;
+    impl.LastFrame->Publish(done, impl.ShaderVariants(done).c_str(), impl.ShaderSource());
+  };
   if (!impl.BeginFrame(*this, s, frame))
   {
-    Internals::Publish(*this, frame);
+    publish(frame);
     return;
   }
   if (vtkLightShaftSceneRenderer::NeedsPlainScene(s))
@@ -590,7 +453,7 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
     frame.Statistics.RenderedProps = impl.Scene.RenderPlain(this, this->DelegatePass, s);
     frame.Statistics.SceneRenders = 1;
     frame.Statistics.PlainScene = true;
-    Internals::Publish(*this, frame);
+    publish(frame);
     return;
   }
   impl.Track(frame.Window);
@@ -611,8 +474,8 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
     impl.RenderShafts(frame, delegate, lights, this->ShadowSurfaces);
   }
   impl.Scene.FinishFrame(frame);
-  Internals::Publish(*this, frame);
-  if (this->LastRefinementEstimates > 0 && !this->LastRefinementConverged)
+  publish(frame);
+  if (frame.Statistics.RefinementEstimates > 0 && !frame.Statistics.RefinementConverged)
   {
     this->InvokeEvent(RefinementNeededEvent);
   }
@@ -642,14 +505,17 @@ bool vtkLightShaftPass::Internals::BeginFrame(vtkLightShaftPass& self,
     frame.Renderer->GetTiledSizeAndOrigin(
       &frame.Size[0], &frame.Size[1], &frame.Origin[0], &frame.Origin[1]);
   }
-  frame.Parameters = Snapshot(self);
+  frame.Parameters = Snapshot(self, *this->Medium);
   const int factor = frame.Parameters.DownsampleFactor;
   frame.Reduced[0] = (frame.Size[0] + factor - 1) / factor;
   frame.Reduced[1] = (frame.Size[1] + factor - 1) / factor;
-  frame.Medium = vtkLightShaftModel::DescribeMedium(
-    self.ScatteringCoefficient, self.AbsorptionCoefficient, self.PhaseFunction, self.Anisotropy);
-  frame.DensityScale = self.MediumDensityScale;
-  frame.DensityBackground = self.MediumBackgroundDensity;
+  vtkLightShaftMedium* medium = this->Medium;
+  frame.Medium = vtkLightShaftModel::DescribeMedium(medium->GetScatteringCoefficient(),
+    medium->GetAbsorptionCoefficient(),
+    medium->GetPhaseFunction(),
+    medium->GetAnisotropy());
+  frame.DensityScale = medium->GetDensityScale();
+  frame.DensityBackground = medium->GetBackgroundDensity();
 
   // The scene camera, exactly as the mappers see it.
   auto* camera = vtkOpenGLCamera::SafeDownCast(frame.Renderer->GetActiveCamera());
@@ -664,7 +530,8 @@ bool vtkLightShaftPass::Internals::BeginFrame(vtkLightShaftPass& self,
 }
 
 //------------------------------------------------------------------------------
-vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass& self)
+vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass& self,
+  vtkLightShaftMedium& medium)
 {
   vtkLightShaftParameters p;
   p.Method = self.Method;
@@ -679,10 +546,10 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
   p.BlurRadius = self.BlurRadius;
   p.DownsampleFactor = self.DownsampleFactor;
   p.AccumulationPrecision = self.AccumulationPrecision;
-  p.NoiseAmplitude = self.NoiseAmplitude;
-  p.NoiseScale = self.NoiseScale;
+  p.NoiseAmplitude = medium.GetNoiseAmplitude();
+  p.NoiseScale = medium.GetNoiseScale();
   vtkLightShaftModel::NoiseShifts(
-    self.NoiseVelocity1, self.NoiseVelocity2, self.Time, p.NoiseShift);
+    medium.GetNoiseVelocity1(), medium.GetNoiseVelocity2(), medium.GetTime(), p.NoiseShift);
   p.NumberOfSteps = self.NumberOfSteps;
   p.InterleaveSize = self.InterleaveSize;
   p.RadialSamples = self.RadialSamples;
@@ -690,7 +557,7 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
   p.EpipolarSamples = self.EpipolarSamples;
   p.EpipolarStep = self.EpipolarStep;
   p.LightVolumeResolution = self.LightVolumeResolution;
-  p.MediumShadowResolution = self.MediumShadowResolution;
+  p.MediumShadowResolution = medium.GetFieldShadowResolution();
   p.TranslucentLayers = self.TranslucentShadows ? self.TranslucentShadowLayers : 0;
   p.Decay = self.Decay;
   p.Density = self.Density;
@@ -892,36 +759,15 @@ void vtkLightShaftPass::Internals::RenderLight(vtkLightShaftFrame& frame,
 void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  auto print = [&os, indent](const char* name, const double* v, int n)
-  {
-    os << indent << name << ": (";
-    for (int i = 0; i < n; ++i)
-    {
-      os << (i ? ", " : "") << v[i];
-    }
-    os << ")\n";
-  };
   os << indent << "Lights: " << this->GetNumberOfLights() << " given\n";
-  print("ScatteringCoefficient", this->ScatteringCoefficient, 3);
-  print("AbsorptionCoefficient", this->AbsorptionCoefficient, 3);
-  os << indent << "MediumDensity: " << this->Impl->MediumDensity.Get() << " (connection "
-     << this->Impl->MediumProducer.Get() << ", array \"" << this->Impl->MediumDensityArrayName
-     << "\", scale " << this->MediumDensityScale << ", background " << this->MediumBackgroundDensity
-     << ")\n";
-  os << indent << "PhaseFunction: " << this->PhaseFunction << "\n";
-  os << indent << "Anisotropy: " << this->Anisotropy << "\n";
+  os << indent << "Medium: " << this->Impl->Medium.Get() << "\n";
+  this->Impl->Medium->PrintSelf(os, indent.GetNextIndent());
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "AttenuateScene: " << this->AttenuateScene << "\n";
   os << indent << "ShadowSurfaces: " << this->ShadowSurfaces << "\n";
   os << indent << "NumberOfSlices: " << this->NumberOfSlices << "\n";
   os << indent << "ShadowMapSize: " << this->ShadowMapSize << "\n";
   os << indent << "Cookie: " << this->Impl->Textures.GetCookie() << "\n";
-  os << indent << "NoiseAmplitude: " << this->NoiseAmplitude << "\n";
-  os << indent << "NoiseScale: " << this->NoiseScale << "\n";
-  print("NoiseVelocity1", this->NoiseVelocity1, 2);
-  print("NoiseVelocity2", this->NoiseVelocity2, 2);
-  os << indent << "Time: " << this->Time << "\n";
-  os << indent << "NoiseTexture: " << this->Impl->Textures.GetNoiseImage() << "\n";
   os << indent << "AutomaticSliceCount: " << this->AutomaticSliceCount << "\n";
   os << indent << "MaximumNumberOfSlices: " << this->MaximumNumberOfSlices << "\n";
   os << indent << "Jitter: " << this->Jitter << "\n";
@@ -934,7 +780,6 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EpipolarSamples: " << this->EpipolarSamples << "\n";
   os << indent << "EpipolarStep: " << this->EpipolarStep << "\n";
   os << indent << "LightVolumeResolution: " << this->LightVolumeResolution << "\n";
-  os << indent << "MediumShadowResolution: " << this->MediumShadowResolution << "\n";
   os << indent << "TranslucentShadows: " << this->TranslucentShadows << "\n";
   os << indent << "TranslucentShadowLayers: " << this->TranslucentShadowLayers << "\n";
   os << indent << "Decay: " << this->Decay << "\n";
@@ -947,13 +792,9 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RefinementFrames: " << this->RefinementFrames << "\n";
   os << indent << "TimeBudget: " << this->TimeBudget << "\n";
   os << indent << "UseAllocatedRenderTime: " << this->UseAllocatedRenderTime << "\n";
-  os << indent << "LastRefinementEstimates: " << this->LastRefinementEstimates << "\n";
-  os << indent << "LastPredictedError: " << this->LastPredictedError << "\n";
-  os << indent << "LastMethod: " << GetMethodName(this->LastMethod) << "\n";
   os << indent << "BlurRadius: " << this->BlurRadius << "\n";
   os << indent << "DownsampleFactor: " << this->DownsampleFactor << "\n";
   os << indent << "AccumulationPrecision: " << this->AccumulationPrecision << "\n";
-  os << indent << "LastNumberOfSlicesDrawn: " << this->LastNumberOfSlicesDrawn << "\n";
-  os << indent << "LastShadowMapRendered: " << this->LastShadowMapRendered << "\n";
-  os << indent << "LastShaderVariant: " << this->GetLastShaderVariant() << "\n";
+  os << indent << "LastFrame:\n";
+  this->Impl->LastFrame->PrintSelf(os, indent.GetNextIndent());
 }

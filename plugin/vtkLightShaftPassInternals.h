@@ -1,8 +1,9 @@
 /**
  * @file   vtkLightShaftPassInternals.h
  * @brief  What vtkLightShaftPass holds besides its parameters (private, not installed), shared
- *         by its two source files: vtkLightShaftPass.cxx (parameters and the frame's recipe) and
- *         vtkLightShaftPassReadouts.cxx (what the last frame did).
+ *         by its source files: vtkLightShaftPass.cxx (parameters and the frame's recipe),
+ *         vtkLightShaftPassSampling.cxx (the frame's sampling) and vtkLightShaftPassReadouts.cxx
+ *         (what the last frame left to read back).
  */
 #ifndef vtkLightShaftPassInternals_h
 #define vtkLightShaftPassInternals_h
@@ -13,18 +14,18 @@
 #include "vtkLightShaftCostModel.h"     // For the frame budget's cost model
 #include "vtkLightShaftErrorModel.h"    // For the error model's features
 #include "vtkLightShaftFrame.h"         // For the frame
+#include "vtkLightShaftFrameReport.h"   // For the last frame's read-outs
 #include "vtkLightShaftInScatter.h"     // For the in-scatter
 #include "vtkLightShaftLightTextures.h" // For the cookie and noise
 #include "vtkLightShaftLights.h"        // For the lights
+#include "vtkLightShaftMedium.h"        // For the medium
 #include "vtkLightShaftMediumTexture.h" // For the medium's density field
 #include "vtkLightShaftRefinement.h"    // For the progressive refinement
 #include "vtkLightShaftSceneCheck.h"    // For what of the scene cannot be used
 #include "vtkLightShaftSceneRenderer.h" // For the scene
 #include "vtkLightShaftSurfaceLight.h"  // For the surface light
 
-#include "vtkAlgorithm.h"               // For the medium's pipeline
 #include "vtkCallbackCommand.h"         // For the window's deletion
-#include "vtkImageData.h"               // For the medium's density
 #include "vtkNew.h"                     // For vtkNew
 #include "vtkOpenGLFramebufferObject.h" // For the read-back framebuffer
 #include "vtkOpenGLRenderWindow.h"      // For the window
@@ -47,21 +48,16 @@ public:
   unsigned long WindowDeletedTag = 0;
   bool WarnedPointCookie = false;
   bool WarnedFieldTarget = false;
-  vtkSmartPointer<vtkImageData> MediumDensity; ///< SetMediumDensity's image (checked when set)
-  std::string MediumDensityArrayName;
-  /// SetMediumDensityConnection's producer and port, and its last output that was an image.
-  vtkSmartPointer<vtkAlgorithm> MediumProducer;
-  int MediumPort = 0;
-  vtkSmartPointer<vtkImageData> MediumOutput;
-  std::string MediumOutputError;
   int FrameCounter = 0;
+  vtkSmartPointer<vtkLightShaftMedium> Medium; ///< never nullptr (SetMedium)
+  vtkNew<vtkLightShaftFrameReport> LastFrame;
 
   // The components, in the order a frame uses them.
   vtkLightShaftSceneCheck Check;
   vtkLightShaftLights Lights;
   vtkLightShaftSceneRenderer Scene;
   vtkLightShaftLightTextures Textures;
-  vtkLightShaftMediumTexture Medium;
+  vtkLightShaftMediumTexture DensityTexture;
   vtkLightShaftInScatter InScatter;
   vtkLightShaftSurfaceLight SurfaceLight;
   vtkLightShaftComposite Composite;
@@ -71,20 +67,18 @@ public:
   double BudgetOfChoice = 0.0;                 ///< the budget BudgetChoice was made for
   bool HasBudgetChoice = false;
 
-  // The last frame's L_in (full resolution) when InScatterValid, and what it did per light.
+  // The last frame's L_in (full resolution) when InScatterValid.
   vtkTextureObject* FinalInScatter = nullptr;
   bool InScatterValid = false;
-  std::vector<vtkLightShaftLightStatistics> LastLights;
   /// What the last frame that computed the shafts did per light (a converged frame's too).
   std::vector<vtkLightShaftLightStatistics> ComputedLights;
-  std::string Variants; ///< GetLastShaderVariant's string
   vtkSmartPointer<vtkOpenGLFramebufferObject> ReadFramebuffer;
 
   void Track(vtkOpenGLRenderWindow* window);
   void Untrack();
   void ReleaseOwnResources(vtkWindow* w);
 
-  static vtkLightShaftParameters Snapshot(vtkLightShaftPass& self);
+  static vtkLightShaftParameters Snapshot(vtkLightShaftPass& self, vtkLightShaftMedium& medium);
   bool BeginFrame(vtkLightShaftPass& self, const vtkRenderState* s, vtkLightShaftFrame& frame);
   void RenderShafts(vtkLightShaftFrame& frame,
     vtkRenderPass* delegate,
@@ -92,7 +86,6 @@ public:
     bool shadowSurfaces);
   /// Cookie and noise readied, the sampling chosen, refinement begun (and its shadow-map
   /// shift applied to `lightFrames`); returns the cookie texture (vtkLightShaftPassSampling.cxx).
-  vtkImageData* MediumImage(vtkObject* owner);
   void ReadyFieldShadow(vtkLightShaftFrame& frame, vtkLightShaftFieldShadow& shadow);
   vtkTextureObject* ChooseSampling(vtkLightShaftFrame& frame,
     const std::vector<vtkLight*>& lights,
@@ -121,8 +114,10 @@ public:
     vtkLightShaftGeometry::LightFrame&& lightFrame,
     vtkTextureObject* cookie,
     bool shadowSurfaces);
-  static void Publish(vtkLightShaftPass& self, const vtkLightShaftFrame& frame);
-  const vtkLightShaftLightStatistics* LastLight(int index) const;
+  /// The frame's shader variants, each light's joined by "; " (the last readied program's
+  /// when no light computed any), and that program's fragment source.
+  std::string ShaderVariants(const vtkLightShaftFrame& frame) const;
+  const char* ShaderSource() const;
 };
 
 #endif

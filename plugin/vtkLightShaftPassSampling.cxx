@@ -96,19 +96,23 @@ vtkTextureObject* vtkLightShaftPass::Internals::ChooseSampling(vtkLightShaftFram
   std::vector<vtkLightShaftGeometry::LightFrame>& lightFrames)
 {
   vtkTextureObject* cookie = this->Textures.ReadyCookie(frame.Window, frame.Owner);
+  if (this->Textures.GetNoiseImage() != this->Medium->GetNoiseTexture())
+  {
+    this->Textures.SetNoiseImage(this->Medium->GetNoiseTexture()); // (the medium's, maybe new)
+  }
   if (frame.Parameters.NoiseAmplitude > 0.0 && frame.Medium.Scatters())
   {
     frame.Noise = this->Textures.ReadyNoise(frame.Window, frame.Owner);
   }
-  frame.Density = this->Medium.Ready(
-    frame.Window, frame.Owner, this->MediumImage(frame.Owner), this->MediumDensityArrayName);
-  frame.DensityField = frame.Density ? &this->Medium : nullptr;
+  frame.Density = this->DensityTexture.Ready(frame.Window, frame.Owner, this->Medium);
+  frame.DensityField = frame.Density ? &this->DensityTexture : nullptr;
   // What decides the picture, signed only when refinement or a budget asks whether it changed:
   // features that are off cost nothing (a prop's redraw MTime updates its pipeline).
   const bool signs = frame.Parameters.ProgressiveRefinement || FrameBudget(frame) > 0.0;
   vtkLightShaftRefinement::Signature signature =
-    signs ? vtkLightShaftRefinement::Sign(
-              frame, lights, std::max(this->Textures.GetImagesTime(), this->Medium.GetUploadTime()))
+    signs ? vtkLightShaftRefinement::Sign(frame,
+              lights,
+              std::max(this->Textures.GetImagesTime(), this->DensityTexture.GetUploadTime()))
           : vtkLightShaftRefinement::Signature();
   this->ApplyErrorModel(frame,
     lightFrames,
@@ -255,8 +259,8 @@ void vtkLightShaftPass::Internals::ReadyFieldShadow(vtkLightShaftFrame& frame,
     return;
   }
   frame.FieldShadow = shadow.Ready(frame.Window,
-    this->Medium.GetField(),
-    this->Medium.GetVersion(),
+    this->DensityTexture.GetField(),
+    this->DensityTexture.GetVersion(),
     frame.Light.Model,
     frame.Parameters.MediumShadowResolution);
   frame.FieldShadowLayout = &shadow;

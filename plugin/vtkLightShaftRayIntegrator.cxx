@@ -2,6 +2,7 @@
 
 #include "vtkLight.h"
 #include "vtkLightShaftDensityField.h"
+#include "vtkLightShaftMedium.h"
 #include "vtkLightShaftModel.h"
 #include "vtkLightShaftNoise.h"
 #include "vtkLightShaftPass.h"
@@ -260,13 +261,13 @@ double Model::PhaseValue(double cosTheta) const
 {
   switch (this->Phase)
   {
-    case vtkLightShaftPass::HENYEY_GREENSTEIN:
+    case vtkLightShaftMedium::HENYEY_GREENSTEIN:
     {
       const double g = this->Anisotropy;
       const double denominator = 1.0 + g * g - 2.0 * g * cosTheta;
       return (1.0 - g * g) / (4.0 * Pi * denominator * std::sqrt(denominator));
     }
-    case vtkLightShaftPass::RAYLEIGH:
+    case vtkLightShaftMedium::RAYLEIGH:
       return 3.0 / (16.0 * Pi) * (1.0 + cosTheta * cosTheta);
     default:
       return 1.0 / (4.0 * Pi);
@@ -308,7 +309,7 @@ bool Model::ClosedFormsHold() const
     return true;
   }
   return this->Attenuation[0] == 0.0 && this->Attenuation[1] == 0.0 && this->Attenuation[2] > 0.0 &&
-         this->Exponent == 0.0 && this->Phase == vtkLightShaftPass::ISOTROPIC;
+         this->Exponent == 0.0 && this->Phase == vtkLightShaftMedium::ISOTROPIC;
 }
 
 RGB Model::Integrand(const Vec& origin, const Vec& dir, double t) const
@@ -376,11 +377,12 @@ Model MakeModel(vtkLight* light,
   std::shared_ptr<const vtkLightShaftDensityField> field)
 {
   const vtkLightShaftModel::Light described = vtkLightShaftModel::DescribeLight(light);
+  vtkLightShaftMedium* given = pass->GetMedium();
   const vtkLightShaftModel::Medium medium =
-    vtkLightShaftModel::DescribeMedium(pass->GetScatteringCoefficient(),
-      pass->GetAbsorptionCoefficient(),
-      pass->GetPhaseFunction(),
-      pass->GetAnisotropy());
+    vtkLightShaftModel::DescribeMedium(given->GetScatteringCoefficient(),
+      given->GetAbsorptionCoefficient(),
+      given->GetPhaseFunction(),
+      given->GetAnisotropy());
   Model model;
   model.Kind = described.Kind;
   model.Light = ToVec(described.Position);
@@ -399,8 +401,8 @@ Model MakeModel(vtkLight* light,
   if (field && !field->Empty())
   {
     model.Field = std::move(field);
-    model.DensityScale = pass->GetMediumDensityScale();
-    model.BackgroundDensity = pass->GetMediumBackgroundDensity();
+    model.DensityScale = given->GetDensityScale();
+    model.BackgroundDensity = given->GetBackgroundDensity();
   }
   model.Right = ToVec(described.Right);
   model.Up = ToVec(described.Up);
@@ -414,11 +416,11 @@ Model MakeModel(vtkLight* light,
   {
     model.Cookie.clear(); // the pass ignores a cookie without an image too
   }
-  if (pass->GetNoiseAmplitude() > 0.0)
+  if (given->GetNoiseAmplitude() > 0.0)
   {
     std::vector<float> rgb;
-    if (pass->GetNoiseTexture() &&
-        vtkLightShaftImageToRGB(pass->GetNoiseTexture(), rgb, model.NoiseWidth, model.NoiseHeight))
+    if (given->GetNoiseTexture() &&
+        vtkLightShaftImageToRGB(given->GetNoiseTexture(), rgb, model.NoiseWidth, model.NoiseHeight))
     {
       model.Noise.resize(static_cast<size_t>(model.NoiseWidth) * model.NoiseHeight);
       for (size_t i = 0; i < model.Noise.size(); ++i)
@@ -432,10 +434,10 @@ Model MakeModel(vtkLight* light,
       model.NoiseWidth = model.NoiseHeight = 256; // the pass's generated noise
       model.Noise = vtkLightShaftTileableNoise(256, 5, 2004u);
     }
-    model.NoiseAmplitude = pass->GetNoiseAmplitude();
-    model.NoiseScale = pass->GetNoiseScale();
+    model.NoiseAmplitude = given->GetNoiseAmplitude();
+    model.NoiseScale = given->GetNoiseScale();
     vtkLightShaftModel::NoiseShifts(
-      pass->GetNoiseVelocity1(), pass->GetNoiseVelocity2(), pass->GetTime(), model.NoiseShift);
+      given->GetNoiseVelocity1(), given->GetNoiseVelocity2(), given->GetTime(), model.NoiseShift);
   }
   return model;
 }

@@ -8,6 +8,8 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightShaftDensityField.h"
+#include "vtkLightShaftFrameReport.h"
+#include "vtkLightShaftMedium.h"
 #include "vtkLightShaftModel.h"
 #include "vtkLightShaftPass.h"
 #include "vtkLightShaftRayIntegrator.h"
@@ -229,9 +231,10 @@ std::string UseShadowMap(vtkLightShaftPass* pass,
     return problem.str();
   }
   int index = -1;
-  for (int i = 0; i < pass->GetLastNumberOfUsedLights(); ++i)
+  vtkLightShaftFrameReport* last = pass->GetLastFrame();
+  for (int i = 0; i < last->GetNumberOfUsedLights(); ++i)
   {
-    if (pass->GetLastUsedLight(i) == lights[0])
+    if (last->GetUsedLight(i) == lights[0])
     {
       index = i;
     }
@@ -283,13 +286,13 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
     given.push_back(pass->GetLight(i));
   }
   std::shared_ptr<vtkLightShaftDensityField> field;
-  if (vtkImageData* density = pass->GetMediumDensity())
+  if (vtkImageData* density = pass->GetMedium()->GetDensityField())
   {
     field = std::make_shared<vtkLightShaftDensityField>();
-    const std::string why = field->Read(density, pass->GetMediumDensityArrayName());
+    const std::string why = field->Read(density, pass->GetMedium()->GetDensityArrayName());
     if (!why.empty())
     {
-      vtkErrorMacro("MediumDensity: the image " << why << ".");
+      vtkErrorMacro("DensityField: the image " << why << ".");
       return 0;
     }
   }

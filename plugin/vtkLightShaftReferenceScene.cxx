@@ -5,6 +5,7 @@
 #include "vtkGenericCell.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
+#include "vtkLightShaftFrameReport.h"
 #include "vtkLightShaftPass.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
@@ -141,9 +142,9 @@ bool vtkLightShaftReferenceScene::UseShadowMap(vtkLightShaftPass* pass,
   this->ShadowSize = this->ShadowDepths->GetDimensions()[0];
   this->ShadowTexels =
     vtkFloatArray::SafeDownCast(this->ShadowDepths->GetPointData()->GetScalars())->GetPointer(0);
-  this->LightNear = pass->GetLastLightDepthRange()[0];
-  this->LightFar = pass->GetLastLightDepthRange()[1];
-  this->ShadowBias = pass->GetLastShadowBias();
+  this->LightNear = pass->GetLastFrame()->GetLightDepthRange()[0];
+  this->LightFar = pass->GetLastFrame()->GetLightDepthRange()[1];
+  this->ShadowBias = pass->GetLastFrame()->GetShadowBias();
   return true;
 }
 

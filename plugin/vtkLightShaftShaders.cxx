@@ -3,6 +3,7 @@
 #include "vtkLightShaftFieldShadow.h"
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftGeometry.h"
+#include "vtkLightShaftMedium.h"
 #include "vtkLightShaftMediumTexture.h"
 #include "vtkLightShaftPass.h"
 
@@ -89,11 +90,11 @@ Variant IntegrandVariant(const char* methodName,
   variant.Description = std::string("method=") + methodName + " ";
   switch (frame.Medium.Phase)
   {
-    case vtkLightShaftPass::HENYEY_GREENSTEIN:
+    case vtkLightShaftMedium::HENYEY_GREENSTEIN:
       variant.Defines.emplace_back("LIGHTSHAFT_PHASE_HG");
       variant.Description += "phase=henyey-greenstein";
       break;
-    case vtkLightShaftPass::RAYLEIGH:
+    case vtkLightShaftMedium::RAYLEIGH:
       variant.Defines.emplace_back("LIGHTSHAFT_PHASE_RAYLEIGH");
       variant.Description += "phase=rayleigh";
       break;
@@ -184,7 +185,7 @@ void SetIntegrandUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& f
   {
     program->SetUniformf("lookupFraction", static_cast<float>(frame.LookupFraction));
   }
-  if (frame.Medium.Phase == vtkLightShaftPass::HENYEY_GREENSTEIN)
+  if (frame.Medium.Phase == vtkLightShaftMedium::HENYEY_GREENSTEIN)
   {
     program->SetUniformf("anisotropy", static_cast<float>(frame.Medium.Anisotropy));
   }

@@ -41,7 +41,7 @@ std::string WithFeatures(const char* source, const std::vector<std::string>& def
 
 /**
  * A feature variant: the #defines a shader is compiled with, and their description as
- * GetLastShaderVariant reports it ("method=slices phase=isotropic shadow cookie ...").
+ * vtkLightShaftFrameReport::GetShaderVariant reports it ("method=slices phase=isotropic shadow cookie ...").
  */
 struct Variant
 {

@@ -74,7 +74,7 @@ int vtkLightShaftSlicesMethod::LatticeWithinBudget(vtkLightShaftFrame& frame, in
                            << " lattice cells in a frame, more than the "
                            << vtkLightShaftGeometry::LatticeCellBudget << " allowed"
                            << SharedBy(frame) << ": using a lattice of " << affordable
-                           << " (GetLastLatticeResolution).");
+                           << " (vtkLightShaftFrameReport::GetLatticeResolution).");
   }
   return affordable;
 }

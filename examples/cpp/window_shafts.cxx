@@ -90,10 +90,10 @@ int main(int argc, char* argv[])
   renderer->ResetCameraClippingRange();
 
   vtkNew<vtkLightShaftPass> shafts;
-  shafts->SetScatteringCoefficient(0.05, 0.047, 0.043); // per world unit
-  shafts->SetAbsorptionCoefficient(0.005);
-  shafts->SetPhaseFunctionToHenyeyGreenstein();
-  shafts->SetAnisotropy(0.3);
+  shafts->GetMedium()->SetScatteringCoefficient(0.05, 0.047, 0.043); // per world unit
+  shafts->GetMedium()->SetAbsorptionCoefficient(0.005);
+  shafts->GetMedium()->SetPhaseFunctionToHenyeyGreenstein();
+  shafts->GetMedium()->SetAnisotropy(0.3);
   shafts->SetExposure(45.0);
   shafts->SetNumberOfSlices(192);
   shafts->SetShadowMapSize(2048);
@@ -108,7 +108,7 @@ int main(int argc, char* argv[])
   writer->SetFileName(output);
   writer->SetInputConnection(grab->GetOutputPort());
   writer->Write();
-  std::cout << "wrote " << output << " (" << shafts->GetLastNumberOfSlicesDrawn() << " slices)"
+  std::cout << "wrote " << output << " (" << shafts->GetLastFrame()->GetNumberOfSlicesDrawn() << " slices)"
             << std::endl;
-  return shafts->GetLastGLErrorCount() == 0 ? 0 : 1;
+  return shafts->GetLastFrame()->GetGLErrorCount() == 0 ? 0 : 1;
 }

@@ -1,7 +1,9 @@
 """LightShafts: volumetric light shafts for VTK scenes.
 
     from lightshafts import vtkLightShaftPass
-    renderer.SetPass(vtkLightShaftPass())
+    shafts = vtkLightShaftPass()
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
+    renderer.SetPass(shafts)
 """
 
 # The wrapped classes derive from VTK's OpenGL render passes: load those modules first so the
@@ -11,10 +13,12 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 import vtkmodules.vtkRenderingCore  # noqa: F401
 
 from .vtkLightShafts import (  # noqa: F401
-    vtkLightShaftFetchFloor, vtkLightShaftPass, vtkLightShaftReference)
+    vtkLightShaftFetchFloor, vtkLightShaftFrameReport, vtkLightShaftMedium, vtkLightShaftPass,
+    vtkLightShaftReference)
 
-__all__ = ["vtkLightShaftPass", "vtkLightShaftReference", "vtkLightShaftFetchFloor",
-           "add_light_shafts", "configure", "write_png", "show_or_save", "render_converged",
+__all__ = ["vtkLightShaftPass", "vtkLightShaftMedium", "vtkLightShaftFrameReport",
+           "vtkLightShaftReference", "vtkLightShaftFetchFloor", "add_light_shafts", "configure",
+           "parameter_owner", "write_png", "show_or_save", "render_converged",
            "refine_while_still"]
 
 # Every method by the name the pass gives it ("slices", "ray-march", ..., "light-volume").
@@ -34,9 +38,11 @@ def add_light_shafts(renderer, light=None, quality=None, method=None, **params):
     light: the spotlight (a vtkLight; added to the renderer when it is not there yet), or None
     for the renderer's first spotlight. quality: "draft", "interactive" or "final" (applied
     first). method: "slices", "ray-march", "radial-blur", "analytic", "automatic", "epipolar",
-    "light-volume" (or the vtkLightShaftPass constant). Every other keyword is a parameter: Name=value calls
-    SetName(value), a tuple or list is passed as separate arguments (ScatteringCoefficient=(r, g,
-    b)), a bool switches NameOn()/NameOff(). A pass the renderer already had becomes the
+    "light-volume" (or the vtkLightShaftPass constant). Every other keyword is a parameter of the
+    pass or of its medium (vtkLightShaftMedium: ScatteringCoefficient, PhaseFunction, NoiseAmplitude,
+    DensityField, ...): Name=value calls SetName(value) on whichever has it, a tuple or list is
+    passed as separate arguments (ScatteringCoefficient=(r, g, b)), a bool switches
+    NameOn()/NameOff(). A pass the renderer already had becomes the
     delegate, so the scene renders as before, with shafts. (PyVista plotters:
     lightshafts.pyvista.enable_light_shafts, which keeps PyVista's own passes working.)
     """
@@ -64,11 +70,10 @@ def configure(shafts, renderer, light=None, quality=None, method=None, **params)
             method = _METHODS[method.lower()]
         shafts.SetMethod(int(method))
     for name, value in params.items():
-        setter = getattr(shafts, "Set" + name, None)
-        if setter is None:
-            raise TypeError(f"vtkLightShaftPass has no parameter {name!r} (no Set{name})")
-        if isinstance(value, bool) and hasattr(shafts, name + "On"):
-            getattr(shafts, name + ("On" if value else "Off"))()
+        owner = parameter_owner(shafts, name)
+        setter = getattr(owner, "Set" + name)
+        if isinstance(value, bool) and hasattr(owner, name + "On"):
+            getattr(owner, name + ("On" if value else "Off"))()
         elif isinstance(value, (tuple, list)):
             setter(*value)
         else:
@@ -81,10 +86,21 @@ def configure(shafts, renderer, light=None, quality=None, method=None, **params)
     return shafts
 
 
+def parameter_owner(shafts, name):
+    """The object that holds parameter `name` of `shafts` (a vtkLightShaftPass): the pass itself
+    (how the shafts are computed) or its medium (vtkLightShaftMedium: what they scatter in).
+    TypeError when neither has a Set`name`."""
+    for owner in (shafts, shafts.GetMedium()):
+        if hasattr(owner, "Set" + name):
+            return owner
+    raise TypeError(f"neither vtkLightShaftPass nor vtkLightShaftMedium has a parameter {name!r}"
+                    f" (no Set{name})")
+
+
 def render_converged(window, shafts, max_frames=None):
     """Render `window` until the still picture of `shafts` (a vtkLightShaftPass) is converged:
     switches its ProgressiveRefinement on (and leaves it on) and renders until
-    GetLastRefinementConverged(), at most `max_frames` frames (default: its RefinementFrames).
+    GetLastFrame().GetRefinementConverged(), at most `max_frames` frames (default: its RefinementFrames).
     Returns the number of frames rendered. For offscreen batch renders:
 
         frames = lightshafts.render_converged(window, shafts)
@@ -97,7 +113,7 @@ def render_converged(window, shafts, max_frames=None):
         window.Render()
         frames += 1
         # Converged, or nothing to refine (no shafts were computed).
-        if shafts.GetLastRefinementConverged() or shafts.GetLastRefinementEstimates() == 0:
+        if shafts.GetLastFrame().GetRefinementConverged() or shafts.GetLastFrame().GetRefinementEstimates() == 0:
             break
     return frames
 

@@ -39,7 +39,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
 import render_helpers as rh  # noqa: E402
-from lightshafts import scenes, vtkLightShaftFetchFloor, vtkLightShaftPass  # noqa: E402
+from lightshafts import parameter_owner, scenes, vtkLightShaftFetchFloor, vtkLightShaftPass  # noqa: E402
 
 SCENES = {
     "sphere-and-floor": (scenes.sphere_and_floor, (0.05, 0.04, 0.03), (0.02, 0.01, 0.03)),
@@ -103,8 +103,8 @@ SETTINGS = [
 
 
 def configure(shafts, sigma_s, sigma_a, params):
-    shafts.SetScatteringCoefficient(*sigma_s)
-    shafts.SetAbsorptionCoefficient(*sigma_a)
+    shafts.GetMedium().SetScatteringCoefficient(*sigma_s)
+    shafts.GetMedium().SetAbsorptionCoefficient(*sigma_a)
     # Plain slabs unless the setting says otherwise (the presets set everything themselves).
     shafts.SetNumberOfSlices(128)
     shafts.SetShadowMapSize(1024)
@@ -116,7 +116,7 @@ def configure(shafts, sigma_s, sigma_a, params):
         elif key == "Quality":
             getattr(shafts, f"SetQualityTo{value}")()
         else:
-            getattr(shafts, "Set" + key)(value)
+            getattr(parameter_owner(shafts, key), "Set" + key)(value)
 
 
 def reference_image(renderer, shafts):
@@ -207,9 +207,9 @@ def main():
             configure(shafts, sigma_s, sigma_a, params)
             renderer.SetPass(shafts)
             ratio = rh.median_frame_time(window, args.frames) / plain
-            assert shafts.GetLastGLErrorCount() == 0
+            assert shafts.GetLastFrame().GetGLErrorCount() == 0
             row = dict(scene=name, family=family, setting=label, time_ratio=ratio,
-                       plain_ms=1000 * plain, slabs=shafts.GetLastNumberOfSlicesDrawn(),
+                       plain_ms=1000 * plain, slabs=shafts.GetLastFrame().GetNumberOfSlicesDrawn(),
                        rmse="", relative_rmse="", psnr_db="", ssim="", fetches_per_pixel="",
                        over_fetch_floor="")
             if family in ("slices", "presets"):

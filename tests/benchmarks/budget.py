@@ -28,7 +28,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
 import render_helpers as rh  # noqa: E402
-from lightshafts import vtkLightShaftPass  # noqa: E402
+from lightshafts import parameter_owner, vtkLightShaftPass  # noqa: E402
 from refinement import timed_render  # noqa: E402  (tests/benchmarks/refinement.py)
 
 STILL = {
@@ -51,7 +51,7 @@ def run(args):
         getattr(shafts, "SetQualityTo" + args.still)()
     else:
         for key, value in still.items():
-            getattr(shafts, "Set" + key)(value)
+            getattr(parameter_owner(shafts, key), "Set" + key)(value)
     shafts.SetRefinementFrames(args.estimates)
     shafts.ProgressiveRefinementOn()
     renderer.SetPass(shafts)
@@ -64,20 +64,20 @@ def run(args):
         for frame in range(args.frames):
             camera.Azimuth(0.5)
             seconds = timed_render(window)
-            name = vtkLightShaftPass.GetErrorModelSettingName(shafts.GetLastErrorModelSetting())
+            name = vtkLightShaftPass.GetErrorModelSettingName(shafts.GetLastFrame().GetErrorModelSetting())
             error = error_now(renderer, shafts) if frame % args.every == args.every - 1 else None
-            moving.append((frame, seconds, shafts.GetLastPredictedFrameTime(), name,
-                           shafts.GetLastDownsampleFactor(), error))
+            moving.append((frame, seconds, shafts.GetLastFrame().GetPredictedFrameTime(), name,
+                           shafts.GetLastFrame().GetDownsampleFactor(), error))
     finally:
         window.SetDesiredUpdateRate(0.0001)
     refining = []
     elapsed = 0.0
     for k in range(1, args.estimates + 1):
         elapsed += timed_render(window)
-        if k & (k - 1) == 0 or shafts.GetLastRefinementConverged():
-            refining.append((shafts.GetLastRefinementEstimates(), elapsed,
+        if k & (k - 1) == 0 or shafts.GetLastFrame().GetRefinementConverged():
+            refining.append((shafts.GetLastFrame().GetRefinementEstimates(), elapsed,
                              error_now(renderer, shafts)))
-        if shafts.GetLastRefinementConverged():
+        if shafts.GetLastFrame().GetRefinementConverged():
             break
     renderer.SetPass(None)
     return plain, moving, refining

@@ -57,7 +57,7 @@ def main():
             rs.configure(shafts, scene, light, params)
             renderer.SetPass(shafts)
             frame = rh.median_frame_time(window, args.frames)
-            in_scatter = shafts.GetLastLightTime(0) if shafts.GetLastNumberOfUsedLights() else -1.0
+            in_scatter = shafts.GetLastFrame().GetLightTime(0) if shafts.GetLastFrame().GetNumberOfUsedLights() else -1.0
             print(f"  {label:32s} frame {1000 * frame:8.2f} ms  ratio {frame / plain:7.2f}  "
                   f"in-scatter (GPU) {in_scatter:7.2f} ms", flush=True)
             renderer.SetPass(None)

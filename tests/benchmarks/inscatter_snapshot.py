@@ -38,7 +38,7 @@ def images(size):
             benchmark.configure(shafts, sigma_s, sigma_a, params)
             renderer.SetPass(shafts)
             window.Render()
-            assert shafts.GetLastGLErrorCount() == 0
+            assert shafts.GetLastFrame().GetGLErrorCount() == 0
             result[f"{name} / {label}"] = rh.in_scatter(shafts).astype(np.float32)
             renderer.SetPass(None)
     return result

@@ -34,7 +34,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 import lightshaft_reference as ref  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from benchmark import reference_image  # noqa: E402  (tests/benchmarks/benchmark.py)
-from lightshafts import scenes, vtkLightShaftPass  # noqa: E402
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass  # noqa: E402
 
 SIGMA_S, SIGMA_A = (0.05, 0.04, 0.03), (0.01, 0.01, 0.01)
 
@@ -88,8 +88,8 @@ SETTINGS = [
 
 
 def configure(shafts, lights, params):
-    shafts.SetScatteringCoefficient(*SIGMA_S)
-    shafts.SetAbsorptionCoefficient(*SIGMA_A)
+    shafts.GetMedium().SetScatteringCoefficient(*SIGMA_S)
+    shafts.GetMedium().SetAbsorptionCoefficient(*SIGMA_A)
     shafts.SetExposure(20.0)
     for light in lights:
         shafts.AddLight(light)
@@ -97,7 +97,7 @@ def configure(shafts, lights, params):
         if name == "Quality":
             getattr(shafts, "SetQualityTo" + value)()
         else:
-            getattr(shafts, "Set" + name)(value)
+            getattr(parameter_owner(shafts, name), "Set" + name)(value)
 
 
 def measure(window, shafts, frames):
@@ -110,8 +110,8 @@ def measure(window, shafts, frames):
         window.Render()
         window.WaitForCompletion()
         times.append(time.perf_counter() - start)
-        gpu.append([shafts.GetLastLightTime(i)
-                    for i in range(shafts.GetLastNumberOfUsedLights())])
+        gpu.append([shafts.GetLastFrame().GetLightTime(i)
+                    for i in range(shafts.GetLastFrame().GetNumberOfUsedLights())])
     per_light = [float(np.median([g[i] for g in gpu])) for i in range(len(gpu[0]))]
     return float(np.median(times)), per_light
 
@@ -140,8 +140,8 @@ def main():
             configure(shafts, lights, params)
             renderer.SetPass(shafts)
             frame, per_light = measure(window, shafts, args.frames)
-            assert shafts.GetLastGLErrorCount() == 0
-            assert shafts.GetLastNumberOfUsedLights() == len(lights)
+            assert shafts.GetLastFrame().GetGLErrorCount() == 0
+            assert shafts.GetLastFrame().GetNumberOfUsedLights() == len(lights)
             if reference is None:
                 reference = reference_image(renderer, shafts)
             error, _ = ref.relative_rms_error(rh.in_scatter(shafts), reference)

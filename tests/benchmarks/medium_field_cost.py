@@ -53,7 +53,7 @@ def wavelet_field(samples, bounds):
 def median_shaft_frame(window, shafts, frames):
     times = []
     for frame in range(frames + 1):
-        shafts.SetTime(0.1 * frame + 0.01 * len(times))
+        shafts.GetMedium().SetTime(0.1 * frame + 0.01 * len(times))
         start = time.perf_counter()
         window.Render()
         window.WaitForCompletion()
@@ -88,17 +88,17 @@ def main():
           f"| 1.00 | | | | |")
     for samples in args.samples:
         field = wavelet_field(samples, bounds)
-        shafts.SetMediumDensity(field)
+        shafts.GetMedium().SetDensityField(field)
         for resolution in args.resolutions:
-            shafts.SetMediumShadowResolution(resolution)
+            shafts.GetMedium().SetFieldShadowResolution(resolution)
             start = time.perf_counter()
             window.Render()
             window.WaitForCompletion()
             first = time.perf_counter() - start
-            build = sum(shafts.GetLastLightFieldShadowBuildTime(i)
-                        for i in range(shafts.GetLastNumberOfUsedLights()))
-            table = sum(shafts.GetLastLightFieldShadowBytes(i)
-                        for i in range(shafts.GetLastNumberOfUsedLights()))
+            build = sum(shafts.GetLastFrame().GetLightFieldShadowBuildTime(i)
+                        for i in range(shafts.GetLastFrame().GetNumberOfUsedLights()))
+            table = sum(shafts.GetLastFrame().GetLightFieldShadowBytes(i)
+                        for i in range(shafts.GetLastFrame().GetNumberOfUsedLights()))
             frame = median_shaft_frame(window, shafts, args.frames)
             ratio = (frame - plain) / (homogeneous - plain)
             memory = samples ** 3 * 4 / 2 ** 20
@@ -108,7 +108,7 @@ def main():
             print(f"| wavelet {samples}³ | {leg} | {1e3 * frame:.0f} ms "
                   f"| {1e3 * (frame - plain):.0f} ms | {ratio:.2f} | {1e3 * (first - frame):.0f} ms "
                   f"| {build_text} | {table_text} | {memory:.0f} MiB |", flush=True)
-        shafts.SetMediumDensity(None)
+        shafts.GetMedium().SetDensityField(None)
 
 
 if __name__ == "__main__":

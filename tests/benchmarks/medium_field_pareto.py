@@ -29,14 +29,14 @@ import benchmark  # noqa: E402
 import lightshaft_reference as ref  # noqa: E402
 import numpy as np  # noqa: E402
 import render_helpers as rh  # noqa: E402
-from lightshafts import scenes, vtkLightShaftPass as P  # noqa: E402
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass as P  # noqa: E402
 from test_medium_field import plume_image  # noqa: E402
 
 SETTINGS = (
     [("RAY_MARCH", f"{n} steps", dict(Method=P.RAY_MARCH, NumberOfSteps=n, InterleaveSize=1))
      for n in (16, 32, 64, 128, 256)] +
     [("RAY_MARCH, light leg marched", f"{n} steps",
-      dict(Method=P.RAY_MARCH, NumberOfSteps=n, InterleaveSize=1, MediumShadowResolution=0))
+      dict(Method=P.RAY_MARCH, NumberOfSteps=n, InterleaveSize=1, FieldShadowResolution=0))
      for n in (32, 64, 128)] +
     [("SLICES", f"{n} slices", dict(Method=P.SLICES, NumberOfSlices=n))
      for n in (32, 64, 128, 256)] +
@@ -46,14 +46,14 @@ SETTINGS = (
 
 
 def configure(shafts, params):
-    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
-    shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
+    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.02, 0.01, 0.03)
     shafts.SetBlurRadius(0)
     shafts.SetAutomaticSliceCount(False)
     shafts.JitterOff()
     shafts.SetShadowMapSize(2048)
     for key, value in params.items():
-        getattr(shafts, "Set" + key)(value)
+        getattr(parameter_owner(shafts, key), "Set" + key)(value)
 
 
 def main():
@@ -79,10 +79,10 @@ def main():
         shafts.AddLight(info.light)
         shafts.AddLight(point)
         configure(shafts, params)
-        shafts.SetMediumDensity(field)
+        shafts.GetMedium().SetDensityField(field)
         renderer.SetPass(shafts)
         ratio = rh.median_frame_time(window, args.frames) / plain
-        assert shafts.GetLastGLErrorCount() == 0
+        assert shafts.GetLastFrame().GetGLErrorCount() == 0
         if reference is None:
             reference = rh.scene_reference(renderer, shafts)
         error, _ = ref.relative_rms_error(rh.in_scatter(shafts), reference)

@@ -22,7 +22,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
 import render_helpers as rh  # noqa: E402
-from lightshafts import scenes, vtkLightShaftPass  # noqa: E402
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass  # noqa: E402
 
 
 BASE = dict(NumberOfSlices=128, ShadowMapSize=1024, Jitter=False, BlurRadius=0)
@@ -63,13 +63,13 @@ def main():
     reference = None
     for name, params in SETTINGS:
         shafts = vtkLightShaftPass()
-        shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
-        shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
+        shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
+        shafts.GetMedium().SetAbsorptionCoefficient(0.02, 0.01, 0.03)
         for key, value in {**BASE, **params}.items():
             if key == "Cookie":
                 shafts.SetCookie(rh.uniform_cookie())
             else:
-                getattr(shafts, "Set" + key)(value)
+                getattr(parameter_owner(shafts, key), "Set" + key)(value)
         renderer.SetPass(shafts)
         ratio = rh.median_frame_time(window, args.frames) / plain
         if reference is None:
@@ -77,8 +77,8 @@ def main():
         image = rh.in_scatter(shafts)
         error, _ = ref.relative_rms_error(image, reference)
         energy = ref.energy_error(image, reference)
-        rows.append((name, ratio, error, energy, shafts.GetLastNumberOfSlicesDrawn(),
-                     shafts.GetLastShaderVariant()))
+        rows.append((name, ratio, error, energy, shafts.GetLastFrame().GetNumberOfSlicesDrawn(),
+                     shafts.GetLastFrame().GetShaderVariant()))
         print(f"{name:40s} {ratio:7.2f} {100 * error:8.3f}% {100 * energy:8.4f}%", flush=True)
         renderer.SetPass(None)
 

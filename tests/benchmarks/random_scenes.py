@@ -63,7 +63,7 @@ sys.path.insert(0, HERE)
 import lightshaft_reference as ref  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from benchmark import reference_image  # noqa: E402  (tests/benchmarks/benchmark.py)
-from lightshafts import vtkLightShaftPass  # noqa: E402
+from lightshafts import parameter_owner, vtkLightShaftPass  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow  # noqa: E402
 from vtkmodules.vtkCommonMath import vtkMatrix4x4  # noqa: E402
 from vtkmodules.vtkFiltersSources import (  # noqa: E402
@@ -530,30 +530,30 @@ def error_model_columns(shafts, scene):
     """What the pass's error model saw in the last frame (its features of the first lit light)
     and predicted (-1: no prediction), as CSV columns (tests/benchmarks/fit_error_model.py)."""
     falling = scene.light_kind != "directional" and any(a != 0 for a in scene.attenuation[1:])
-    return dict(depth_range_in_beam_widths=shafts.GetLastDepthRangeInBeamWidths(),
-                beam_width_in_pixels=shafts.GetLastBeamWidthInPixels(),
-                model_optical_depth=shafts.GetLastOpticalDepth(),
-                shadow_texel_in_pixels=shafts.GetLastShadowTexelInPixels(),
-                model_light_in_view=int(shafts.GetLastLightInView()),
+    return dict(depth_range_in_beam_widths=shafts.GetLastFrame().GetDepthRangeInBeamWidths(),
+                beam_width_in_pixels=shafts.GetLastFrame().GetBeamWidthInPixels(),
+                model_optical_depth=shafts.GetLastFrame().GetOpticalDepth(),
+                shadow_texel_in_pixels=shafts.GetLastFrame().GetShadowTexelInPixels(),
+                model_light_in_view=int(shafts.GetLastFrame().GetLightInView()),
                 falling_attenuation=int(falling), kind=scene.light_kind,
-                predicted_error=shafts.GetLastPredictedError(),
-                model_setting=shafts.GetErrorModelSettingName(shafts.GetLastErrorModelSetting()))
+                predicted_error=shafts.GetLastFrame().GetPredictedError(),
+                model_setting=shafts.GetErrorModelSettingName(shafts.GetLastFrame().GetErrorModelSetting()))
 
 
 def configure(shafts, scene, light, params):
-    shafts.SetScatteringCoefficient(*scene.sigma_s)
-    shafts.SetAbsorptionCoefficient(*scene.sigma_a)
-    shafts.SetPhaseFunction({"isotropic": vtkLightShaftPass.ISOTROPIC,
-                             "hg": vtkLightShaftPass.HENYEY_GREENSTEIN,
-                             "rayleigh": vtkLightShaftPass.RAYLEIGH}[scene.phase])
-    shafts.SetAnisotropy(scene.anisotropy)
+    shafts.GetMedium().SetScatteringCoefficient(*scene.sigma_s)
+    shafts.GetMedium().SetAbsorptionCoefficient(*scene.sigma_a)
+    shafts.GetMedium().SetPhaseFunction({"isotropic": vtkLightShaftMedium.ISOTROPIC,
+                             "hg": vtkLightShaftMedium.HENYEY_GREENSTEIN,
+                             "rayleigh": vtkLightShaftMedium.RAYLEIGH}[scene.phase])
+    shafts.GetMedium().SetAnisotropy(scene.anisotropy)
     if scene.light_kind == "directional":
         shafts.SetLight(light)  # directional lights scatter only when given
     for key, value in params.items():
         if key == "Quality":
             getattr(shafts, f"SetQualityTo{value}")()
         else:
-            getattr(shafts, "Set" + key)(value)
+            getattr(parameter_owner(shafts, key), "Set" + key)(value)
 
 
 class WarningLog:
@@ -633,9 +633,9 @@ def run_scene(scene, settings, frames, log, keep_pictures):
                    camera=scene.camera_kind, parallel=int(scene.parallel),
                    optical_depth=scene.optical_depth, phase=scene.phase,
                    light_in_view=int(in_view),
-                   slice_near=shafts.GetLastSliceDepthRange()[0],
-                   slice_far=shafts.GetLastSliceDepthRange()[1],
-                   gl_errors=shafts.GetLastGLErrorCount(), expected_warnings=len(expected),
+                   slice_near=shafts.GetLastFrame().GetSliceDepthRange()[0],
+                   slice_far=shafts.GetLastFrame().GetSliceDepthRange()[1],
+                   gl_errors=shafts.GetLastFrame().GetGLErrorCount(), expected_warnings=len(expected),
                    unexpected_warnings=" | ".join(" ".join(m.split()) for m in unexpected),
                    seconds=time.perf_counter() - start,
                    **error_model_columns(shafts, scene),

@@ -28,7 +28,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
 import render_helpers as rh  # noqa: E402
-from lightshafts import scenes, vtkLightShaftPass  # noqa: E402
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass  # noqa: E402
 
 SETTINGS = {
     "RAY_MARCH 4 steps, 1024² map": dict(Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=4,
@@ -58,11 +58,11 @@ def measure(name, params, width, height, estimates, frames):
     renderer, window = make_scene(width, height)
     plain = rh.median_frame_time(window, frames, warm_up=30, warm_up_seconds=2.0)
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05)
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
     shafts.SetExposure(40.0)
     shafts.SetBlurRadius(0)
     for key, value in params.items():
-        getattr(shafts, "Set" + key)(value)
+        getattr(parameter_owner(shafts, key), "Set" + key)(value)
     shafts.SetRefinementFrames(estimates)
     shafts.ProgressiveRefinementOn()
     renderer.SetPass(shafts)
@@ -75,16 +75,16 @@ def measure(name, params, width, height, estimates, frames):
     for k in range(1, estimates + 1):
         seconds = timed_render(window)
         elapsed += seconds
-        assert shafts.GetLastRefinementEstimates() == k
+        assert shafts.GetLastFrame().GetRefinementEstimates() == k
         if k & (k - 1) == 0 or k == estimates:
             image = rh.in_scatter(shafts)
             if reference is None:
                 reference = rh.scene_reference(renderer, shafts)
             error, _ = ref.relative_rms_error(image, reference)
             rows.append((k, seconds, elapsed, error))
-    assert shafts.GetLastRefinementConverged()
+    assert shafts.GetLastFrame().GetRefinementConverged()
     reused = statistics.median(timed_render(window) for _ in range(frames))
-    assert shafts.GetLastInScatterReused()
+    assert shafts.GetLastFrame().GetInScatterReused()
     renderer.SetPass(None)
     return dict(name=name, plain=plain, rows=rows, reused=reused)
 

@@ -23,7 +23,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import render_helpers as rh  # noqa: E402
-from lightshafts import vtkLightShaftPass as P  # noqa: E402
+from lightshafts import parameter_owner, vtkLightShaftPass as P  # noqa: E402
 
 SETTINGS = {  # the ladder's E16, E32, V256 and M128 (plugin/vtkLightShaftErrorModelTable.h)
     "E16 l128 s256 k8 m512": dict(Method=P.EPIPOLAR, NumberOfSteps=16, ShadowMapSize=512,
@@ -53,7 +53,7 @@ def main():
         for factor in (1, 2, 4):
             shafts.SetDownsampleFactor(factor)
             for key, value in params.items():
-                getattr(shafts, "Set" + key)(value)
+                getattr(parameter_owner(shafts, key), "Set" + key)(value)
             times = []
             for i in range(args.frames + 2):
                 camera.Azimuth(0.5 if i % 2 else -0.5)

@@ -63,7 +63,7 @@ def measure(width, height, panes, frames, rebuilt):
     passes = {}
     for translucent in (True, False):
         shafts = vtkLightShaftPass()
-        shafts.SetScatteringCoefficient(0.05)
+        shafts.GetMedium().SetScatteringCoefficient(0.05)
         shafts.SetQualityToFinal()
         shafts.SetTranslucentShadowLayers(max(panes, 1))
         shafts.SetTranslucentShadows(translucent)
@@ -84,10 +84,10 @@ def measure(width, height, panes, frames, rebuilt):
             window.WaitForCompletion()
             if frame:
                 times[translucent].append(time.perf_counter() - start)
-            assert shafts.GetLastGLErrorCount() == 0
+            assert shafts.GetLastFrame().GetGLErrorCount() == 0
             if translucent:
-                layers = shafts.GetLastLightTranslucentLayers(0)
-                bytes_ = shafts.GetLastLightTranslucentBytes(0)
+                layers = shafts.GetLastFrame().GetLightTranslucentLayers(0)
+                bytes_ = shafts.GetLastFrame().GetLightTranslucentBytes(0)
     return statistics.median(times[True]), statistics.median(times[False]), layers, bytes_
 
 

@@ -93,7 +93,7 @@ def run_corner(params, width, height, frames):
     """In the child process: render the corner and print its figures as JSON."""
     import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
     from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow
-    from lightshafts import scenes, vtkLightShaftPass
+    from lightshafts import parameter_owner, scenes, vtkLightShaftPass
     window = vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.SetMultiSamples(params.pop("multisamples", 0))
@@ -113,9 +113,9 @@ def run_corner(params, width, height, frames):
         shafts.SetCookie(rh.uniform_cookie(256, 200))
     for name, value in params.items():
         if value is None:
-            getattr(shafts, "Set" + name)()
+            getattr(parameter_owner(shafts, name), "Set" + name)()
         else:
-            getattr(shafts, "Set" + name)(value)
+            getattr(parameter_owner(shafts, name), "Set" + name)(value)
     renderer.SetPass(shafts)
     times = []
     for _ in range(frames + 1):
@@ -126,10 +126,10 @@ def run_corner(params, width, height, frames):
     print(json.dumps({
         "first_s": times[0], "median_s": statistics.median(times[1:]),
         "peak_mib": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
-        "baseline_mib": baseline, "lattice": shafts.GetLastLatticeResolution(),
-        "slabs": shafts.GetLastNumberOfSlicesDrawn(), "batches": shafts.GetLastNumberOfSlabBatches(),
-        "steps": shafts.GetLastNumberOfSteps(),
-        "gl_errors": shafts.GetLastGLErrorCount()}))
+        "baseline_mib": baseline, "lattice": shafts.GetLastFrame().GetLatticeResolution(),
+        "slabs": shafts.GetLastFrame().GetNumberOfSlicesDrawn(), "batches": shafts.GetLastFrame().GetNumberOfSlabBatches(),
+        "steps": shafts.GetLastFrame().GetNumberOfSteps(),
+        "gl_errors": shafts.GetLastFrame().GetGLErrorCount()}))
 
 
 def main():

@@ -102,8 +102,8 @@ int main(int argc, char* argv[])
   lightshafts_test::AddSphereAndFloor(renderer);
 
   vtkNew<vtkLightShaftPass> shafts;
-  shafts->SetScatteringCoefficient(0.05, 0.04, 0.03);
-  shafts->SetAbsorptionCoefficient(0.02, 0.01, 0.03);
+  shafts->GetMedium()->SetScatteringCoefficient(0.05, 0.04, 0.03);
+  shafts->GetMedium()->SetAbsorptionCoefficient(0.02, 0.01, 0.03);
   shafts->SetNumberOfSlices(512);
   shafts->SetShadowMapSize(2048);
   shafts->JitterOff();
@@ -111,11 +111,11 @@ int main(int argc, char* argv[])
   renderer->SetPass(shafts);
   window->Render(); // VTK resets the clipping range here; the reference reads it afterwards
 
-  if (shafts->GetLastGLErrorCount() != 0)
+  if (shafts->GetLastFrame()->GetGLErrorCount() != 0)
   {
     return Fail("OpenGL errors during the frame");
   }
-  if (shafts->GetLastNumberOfSlicesDrawn() != 512 || !shafts->GetLastShadowMapRendered())
+  if (shafts->GetLastFrame()->GetNumberOfSlicesDrawn() != 512 || !shafts->GetLastFrame()->GetShadowMapRendered())
   {
     return Fail("expected 512 slabs and a shadow map");
   }

@@ -66,8 +66,8 @@ struct View
     this->Window->SetSize(width, height);
     this->Window->AddRenderer(this->Renderer);
     lightshafts_test::AddSphereAndFloor(this->Renderer);
-    this->Shafts->SetScatteringCoefficient(0.05, 0.045, 0.04);
-    this->Shafts->SetAbsorptionCoefficient(0.01);
+    this->Shafts->GetMedium()->SetScatteringCoefficient(0.05, 0.045, 0.04);
+    this->Shafts->GetMedium()->SetAbsorptionCoefficient(0.01);
     this->SetSampling(32, 1024);
     this->Shafts->JitterOff();
     this->Shafts->SetBlurRadius(0);
@@ -89,8 +89,8 @@ struct View
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << what << ": " << width << "x" << height << " in " << seconds << " s" << std::endl;
-    Check(this->Shafts->GetLastGLErrorCount() == 0, what + ": OpenGL errors");
-    const int* viewport = this->Shafts->GetLastViewportSize();
+    Check(this->Shafts->GetLastFrame()->GetGLErrorCount() == 0, what + ": OpenGL errors");
+    const int* viewport = this->Shafts->GetLastFrame()->GetViewportSize();
     Check(viewport[0] == width && viewport[1] == height,
       what + ": viewport " + std::to_string(viewport[0]) + "x" + std::to_string(viewport[1]));
     lightshafts_test::Image image = lightshafts_test::InScatter(this->Shafts);

@@ -92,8 +92,8 @@ int main(int argc, char* argv[])
   lightshafts_test::AddSphereAndFloor(renderer);
 
   vtkNew<vtkLightShaftPass> shafts;
-  shafts->SetScatteringCoefficient(0.05, 0.045, 0.04);
-  shafts->SetAbsorptionCoefficient(0.01);
+  shafts->GetMedium()->SetScatteringCoefficient(0.05, 0.045, 0.04);
+  shafts->GetMedium()->SetAbsorptionCoefficient(0.01);
   shafts->SetExposure(40.0);
   shafts->SetNumberOfSlices(256);
   shafts->SetShadowMapSize(1024);
@@ -102,11 +102,11 @@ int main(int argc, char* argv[])
   renderer->SetPass(shafts);
   window->Render();
 
-  if (shafts->GetLastGLErrorCount() != 0)
+  if (shafts->GetLastFrame()->GetGLErrorCount() != 0)
   {
     return Fail("OpenGL errors during the frame");
   }
-  if (shafts->GetLastNumberOfSlicesDrawn() != 256 || !shafts->GetLastShadowMapRendered())
+  if (shafts->GetLastFrame()->GetNumberOfSlicesDrawn() != 256 || !shafts->GetLastFrame()->GetShadowMapRendered())
   {
     return Fail("expected 256 slabs and a shadow map");
   }
@@ -216,7 +216,7 @@ int main(int argc, char* argv[])
     shafts->SetMethod(method);
     window->Render();
     vtkNew<vtkImageData> methodRadiance;
-    if (shafts->GetLastGLErrorCount() != 0 || !shafts->GetInScatteredRadiance(methodRadiance) ||
+    if (shafts->GetLastFrame()->GetGLErrorCount() != 0 || !shafts->GetInScatteredRadiance(methodRadiance) ||
         methodRadiance->GetPointData()->GetScalars()->GetRange(0)[1] <= 0.0)
     {
       return Fail(std::string("method ") + vtkLightShaftPass::GetMethodName(method) +
@@ -231,12 +231,12 @@ int main(int argc, char* argv[])
   selector->SetFieldAssociation(vtkDataObject::FIELD_ASSOCIATION_CELLS);
   vtkSmartPointer<vtkSelection> selection;
   selection.TakeReference(selector->Select());
-  if (!selection || selection->GetNumberOfNodes() != 2 || !shafts->GetLastPlainScene())
+  if (!selection || selection->GetNumberOfNodes() != 2 || !shafts->GetLastFrame()->GetPlainScene())
   {
     return Fail("hardware selection through the pass did not find the sphere and the floor");
   }
   window->Render();
-  if (shafts->GetLastPlainScene() || shafts->GetLastMethod() < 0)
+  if (shafts->GetLastFrame()->GetPlainScene() || shafts->GetLastFrame()->GetMethod() < 0)
   {
     return Fail("no shafts in the frame after the selection");
   }

@@ -7,6 +7,7 @@ from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow, vtkWindowT
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 import lightshaft_reference as ref
+from lightshafts import parameter_owner
 
 
 _shared_window = None
@@ -42,14 +43,14 @@ def plain_slab_pass(sigma_s=(0.05, 0.04, 0.03), sigma_a=(0.01, 0.01, 0.01), slic
     Set<name>(value) for each keyword."""
     from lightshafts import vtkLightShaftPass
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(*sigma_s)
-    shafts.SetAbsorptionCoefficient(*sigma_a)
+    shafts.GetMedium().SetScatteringCoefficient(*sigma_s)
+    shafts.GetMedium().SetAbsorptionCoefficient(*sigma_a)
     shafts.SetNumberOfSlices(slices)
     shafts.SetShadowMapSize(shadow_map)
     shafts.JitterOff()
     shafts.SetBlurRadius(0)
     for name, value in params.items():
-        getattr(shafts, "Set" + name)(value)
+        getattr(parameter_owner(shafts, name), "Set" + name)(value)
     return shafts
 
 
@@ -159,9 +160,9 @@ def reference_lights(lights, cookie=None):
 
 
 def reference_medium(shaft_pass):
-    return ref.Medium(shaft_pass.GetScatteringCoefficient(),
-                      shaft_pass.GetAbsorptionCoefficient(), shaft_pass.GetPhaseFunction(),
-                      shaft_pass.GetAnisotropy())
+    return ref.Medium(shaft_pass.GetMedium().GetScatteringCoefficient(),
+                      shaft_pass.GetMedium().GetAbsorptionCoefficient(), shaft_pass.GetMedium().GetPhaseFunction(),
+                      shaft_pass.GetMedium().GetAnisotropy())
 
 
 def reference_for(renderer, window, info, shaft_pass, panels=4, cookie=None, with_props=True,
@@ -287,7 +288,7 @@ def window_scene(width, height):
     scenes.window_room(renderer)
     plain = median_frame_time(window, 5, warm_up=30, warm_up_seconds=2.0)
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05)
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
     shafts.SetExposure(40.0)
     return renderer, window, plain, shafts
 

@@ -51,7 +51,7 @@ def errors(renderer, window, info, shafts):
 
 def test_isotropic_with_absorption_matches_reference():
     renderer, window, info, shafts = render_scene()
-    assert shafts.GetLastShadowMapRendered()
+    assert shafts.GetLastFrame().GetShadowMapRendered()
     relative_rms, energy, measured, reference = errors(renderer, window, info, shafts)
     assert relative_rms < RELATIVE_RMS_BOUND
     assert energy < ENERGY_BOUND
@@ -75,7 +75,7 @@ def test_error_shrinks_as_slices_increase():
 @pytest.mark.parametrize("g", [0.6, -0.5])
 def test_henyey_greenstein_matches_reference(g):
     renderer, window, info, shafts = render_scene(Anisotropy=g)
-    shafts.SetPhaseFunctionToHenyeyGreenstein()
+    shafts.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
     window.Render()
     relative_rms, energy, _, _ = errors(renderer, window, info, shafts)
     assert relative_rms < RELATIVE_RMS_BOUND
@@ -89,7 +89,7 @@ def test_rayleigh_inverse_square_light_in_view():
         info.light.SetAttenuationValues(0.0, 0.0, 1.0)
         renderer.GetActiveCamera().SetPosition(0.0, 8.0, 12.0)
         renderer.GetActiveCamera().SetFocalPoint(0.0, 4.0, 0.0)
-        shafts.SetPhaseFunctionToRayleigh()
+        shafts.GetMedium().SetPhaseFunctionToRayleigh()
 
     scene = render_scene(prepare=prepare, NumberOfSlices=256)
     relative_rms, energy, _, _ = errors(*scene)
@@ -112,8 +112,8 @@ def test_eye_inside_the_cone():
     def prepare(renderer, info, shafts):
         renderer.GetActiveCamera().SetPosition(0.3, 3.0, 1.5)
         renderer.GetActiveCamera().SetFocalPoint(0.0, 1.5, 0.0)
-        shafts.SetPhaseFunctionToHenyeyGreenstein()
-        shafts.SetAnisotropy(0.5)
+        shafts.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
+        shafts.GetMedium().SetAnisotropy(0.5)
 
     relative_rms, energy, _, _ = errors(*render_scene(prepare=prepare))
     assert relative_rms < RELATIVE_RMS_BOUND
@@ -133,12 +133,12 @@ def test_forward_scattering_is_brightest_looking_into_the_light():
     camera.SetViewUp(0.0, 0.0, 1.0)
     renderer.ResetCameraClippingRange()
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05)
-    shafts.SetPhaseFunctionToHenyeyGreenstein()
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
+    shafts.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
     renderer.SetPass(shafts)
     means = {}
     for g in (0.7, -0.7):
-        shafts.SetAnisotropy(g)
+        shafts.GetMedium().SetAnisotropy(g)
         window.Render()
         means[g] = rh.in_scatter(shafts).mean()
     assert means[0.7] > 5.0 * means[-0.7]
@@ -156,10 +156,10 @@ def test_linearity_in_light_intensity_and_colour():
 
 def test_no_scattering_gives_no_in_scatter():
     renderer, window, info, shafts = render_scene(160, 120, NumberOfSlices=64)
-    shafts.SetScatteringCoefficient(0.0)
+    shafts.GetMedium().SetScatteringCoefficient(0.0)
     window.Render()
     assert np.all(rh.in_scatter(shafts) == 0.0)
-    assert shafts.GetLastNumberOfSlicesDrawn() == 0  # nothing to scatter: no slabs drawn
+    assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() == 0  # nothing to scatter: no slabs drawn
 
 
 def test_default_quality_meets_its_bound():
@@ -167,8 +167,8 @@ def test_default_quality_meets_its_bound():
     renderer, window = rh.make_window(320, 240)
     info = scenes.sphere_and_floor(renderer)
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
-    shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
+    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.02, 0.01, 0.03)
     renderer.SetPass(shafts)
     window.Render()
     relative_rms, energy, _, _ = errors(renderer, window, info, shafts)

@@ -24,14 +24,14 @@ def test_one_line_renders_the_same_as_the_pass_set_up_by_hand():
     # The Final preset (256 ray-march steps, no interleaving, 2048^2 map), applied before the
     # keywords: they override its steps.
     assert (shafts.GetInterleaveSize(), shafts.GetShadowMapSize()) == (1, 2048)
-    assert shafts.GetScatteringCoefficient() == (0.05, 0.04, 0.03)
+    assert shafts.GetMedium().GetScatteringCoefficient() == (0.05, 0.04, 0.03)
     assert (shafts.GetExposure(), shafts.GetNumberOfSteps(), shafts.GetJitter()) == (30, 64, 0)
     window.Render()
     one_line = rh.in_scatter(shafts)
     by_hand = vtkLightShaftPass()
     by_hand.SetQualityToFinal()
     by_hand.SetMethodToRayMarch()
-    by_hand.SetScatteringCoefficient(0.05, 0.04, 0.03)
+    by_hand.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
     by_hand.SetExposure(30.0)
     by_hand.SetNumberOfSteps(64)
     by_hand.JitterOff()
@@ -56,7 +56,7 @@ def test_a_new_light_is_added_and_an_existing_pass_becomes_the_delegate():
     assert renderer.GetLights().GetNumberOfItems() == 1
     assert shafts.GetDelegatePass() is steps
     window.Render()
-    assert shafts.GetLastUsedLight() is spot
+    assert shafts.GetLastFrame().GetUsedLight() is spot
     assert rh.in_scatter(shafts).max() > 0.0
     add_light_shafts(renderer, light=spot)  # the light is not added twice
     assert renderer.GetLights().GetNumberOfItems() == 1

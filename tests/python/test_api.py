@@ -5,7 +5,7 @@ import math
 import pytest
 
 import lightshafts
-from lightshafts import vtkLightShaftPass
+from lightshafts import parameter_owner, vtkLightShaftPass
 from vtkmodules.vtkRenderingCore import vtkLight
 from vtkmodules.vtkRenderingOpenGL2 import vtkImageProcessingPass, vtkRenderStepsPass
 
@@ -19,10 +19,10 @@ def test_import_and_type():
 
 def test_defaults():
     p = vtkLightShaftPass()
-    assert p.GetScatteringCoefficient() == (0.1, 0.1, 0.1)
-    assert p.GetAbsorptionCoefficient() == (0.0, 0.0, 0.0)
-    assert p.GetPhaseFunction() == vtkLightShaftPass.ISOTROPIC
-    assert p.GetAnisotropy() == 0.0
+    assert p.GetMedium().GetScatteringCoefficient() == (0.1, 0.1, 0.1)
+    assert p.GetMedium().GetAbsorptionCoefficient() == (0.0, 0.0, 0.0)
+    assert p.GetMedium().GetPhaseFunction() == vtkLightShaftMedium.ISOTROPIC
+    assert p.GetMedium().GetAnisotropy() == 0.0
     assert p.GetExposure() == 1.0
     assert p.GetAttenuateScene() is True or p.GetAttenuateScene() == 1
     assert not p.GetShadowSurfaces()
@@ -31,12 +31,12 @@ def test_defaults():
     assert p.GetLight() is None
     assert p.GetDelegatePass() is None
     assert p.GetCookie() is None
-    assert p.GetNoiseTexture() is None
-    assert p.GetNoiseAmplitude() == 0.0
-    assert p.GetNoiseScale() == 3.0
-    assert p.GetNoiseVelocity1() == (0.04, 0.01)
-    assert p.GetNoiseVelocity2() == (-0.015, 0.03)
-    assert p.GetTime() == 0.0
+    assert p.GetMedium().GetNoiseTexture() is None
+    assert p.GetMedium().GetNoiseAmplitude() == 0.0
+    assert p.GetMedium().GetNoiseScale() == 3.0
+    assert p.GetMedium().GetNoiseVelocity1() == (0.04, 0.01)
+    assert p.GetMedium().GetNoiseVelocity2() == (-0.015, 0.03)
+    assert p.GetMedium().GetTime() == 0.0
     assert not p.GetAutomaticSliceCount()
     assert p.GetMaximumNumberOfSlices() == 512
     assert p.GetJitter()
@@ -44,7 +44,7 @@ def test_defaults():
     assert p.GetDownsampleFactor() == 1
     assert p.GetAccumulationPrecision() == vtkLightShaftPass.ACCUMULATE_FLOAT32
     assert p.GetTargetError() == 0.0
-    assert p.GetLastPredictedError() == -1.0 and p.GetLastErrorModelSetting() == -1
+    assert p.GetLastFrame().GetPredictedError() == -1.0 and p.GetLastFrame().GetErrorModelSetting() == -1
 
 
 @pytest.mark.parametrize("name,value", [
@@ -52,7 +52,7 @@ def test_defaults():
     ("ShadowMapSize", 2048),
     ("Exposure", 3.5),
     ("Anisotropy", -0.4),
-    ("PhaseFunction", vtkLightShaftPass.RAYLEIGH),
+    ("PhaseFunction", vtkLightShaftMedium.RAYLEIGH),
     ("NoiseAmplitude", 0.6),
     ("NoiseScale", 7.5),
     ("Time", -12.25),
@@ -66,29 +66,29 @@ def test_defaults():
 ])
 def test_scalar_round_trip(name, value):
     p = vtkLightShaftPass()
-    getattr(p, "Set" + name)(value)
-    assert getattr(p, "Get" + name)() == value
+    getattr(parameter_owner(p, name), "Set" + name)(value)
+    assert getattr(parameter_owner(p, name), "Get" + name)() == value
 
 
 @pytest.mark.parametrize("name", ["ScatteringCoefficient", "AbsorptionCoefficient"])
 def test_vector_round_trip(name):
     p = vtkLightShaftPass()
-    getattr(p, "Set" + name)(0.25, 0.5, 0.75)
-    assert getattr(p, "Get" + name)() == (0.25, 0.5, 0.75)
-    getattr(p, "Set" + name)((1.0, 2.0, 3.0))
-    assert getattr(p, "Get" + name)() == (1.0, 2.0, 3.0)
-    getattr(p, "Set" + name)(0.125)
-    assert getattr(p, "Get" + name)() == (0.125, 0.125, 0.125)
+    getattr(parameter_owner(p, name), "Set" + name)(0.25, 0.5, 0.75)
+    assert getattr(parameter_owner(p, name), "Get" + name)() == (0.25, 0.5, 0.75)
+    getattr(parameter_owner(p, name), "Set" + name)((1.0, 2.0, 3.0))
+    assert getattr(parameter_owner(p, name), "Get" + name)() == (1.0, 2.0, 3.0)
+    getattr(parameter_owner(p, name), "Set" + name)(0.125)
+    assert getattr(parameter_owner(p, name), "Get" + name)() == (0.125, 0.125, 0.125)
 
 
 def test_named_phase_setters():
     p = vtkLightShaftPass()
-    p.SetPhaseFunctionToHenyeyGreenstein()
-    assert p.GetPhaseFunction() == vtkLightShaftPass.HENYEY_GREENSTEIN == 1
-    p.SetPhaseFunctionToRayleigh()
-    assert p.GetPhaseFunction() == vtkLightShaftPass.RAYLEIGH == 2
-    p.SetPhaseFunctionToIsotropic()
-    assert p.GetPhaseFunction() == vtkLightShaftPass.ISOTROPIC == 0
+    p.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
+    assert p.GetMedium().GetPhaseFunction() == vtkLightShaftMedium.HENYEY_GREENSTEIN == 1
+    p.GetMedium().SetPhaseFunctionToRayleigh()
+    assert p.GetMedium().GetPhaseFunction() == vtkLightShaftMedium.RAYLEIGH == 2
+    p.GetMedium().SetPhaseFunctionToIsotropic()
+    assert p.GetMedium().GetPhaseFunction() == vtkLightShaftMedium.ISOTROPIC == 0
 
 
 def test_boolean_macros():
@@ -121,17 +121,17 @@ def test_boolean_macros():
 ])
 def test_scalar_clamping(name, low, high, expect_low, expect_high):
     p = vtkLightShaftPass()
-    getattr(p, "Set" + name)(low)
-    assert getattr(p, "Get" + name)() == expect_low
-    getattr(p, "Set" + name)(high)
-    assert getattr(p, "Get" + name)() == expect_high
+    getattr(parameter_owner(p, name), "Set" + name)(low)
+    assert getattr(parameter_owner(p, name), "Get" + name)() == expect_low
+    getattr(parameter_owner(p, name), "Set" + name)(high)
+    assert getattr(parameter_owner(p, name), "Get" + name)() == expect_high
 
 
 @pytest.mark.parametrize("name", ["ScatteringCoefficient", "AbsorptionCoefficient"])
 def test_vector_clamping(name):
     p = vtkLightShaftPass()
-    getattr(p, "Set" + name)(-1.0, 0.5, 1e9)
-    assert getattr(p, "Get" + name)() == (0.0, 0.5, 1e6)
+    getattr(parameter_owner(p, name), "Set" + name)(-1.0, 0.5, 1e9)
+    assert getattr(parameter_owner(p, name), "Get" + name)() == (0.0, 0.5, 1e6)
 
 
 @pytest.mark.parametrize("name,args", [
@@ -155,10 +155,10 @@ def test_vector_clamping(name):
 def test_non_finite_refused(messages, name, args):
     p = vtkLightShaftPass()
     log = messages(p)
-    before = getattr(p, "Get" + name)()
+    before = getattr(parameter_owner(p, name), "Get" + name)()
     mtime = p.GetMTime()
-    getattr(p, "Set" + name)(*args)
-    assert getattr(p, "Get" + name)() == before
+    getattr(parameter_owner(p, name), "Set" + name)(*args)
+    assert getattr(parameter_owner(p, name), "Get" + name)() == before
     assert p.GetMTime() == mtime
     assert len(log.errors) == 1
     assert name in log.errors[0]
@@ -205,19 +205,19 @@ def test_downsample_factor_rounds_down_to_a_power_of_two():
 def test_noise_velocities_and_textures_round_trip():
     from vtkmodules.vtkRenderingCore import vtkTexture
     p = vtkLightShaftPass()
-    p.SetNoiseVelocity1(0.5, -0.25)
-    p.SetNoiseVelocity2(-2.0, 3.0)
-    assert p.GetNoiseVelocity1() == (0.5, -0.25)
-    assert p.GetNoiseVelocity2() == (-2.0, 3.0)
-    p.SetNoiseVelocity1(1e9, -1e9)
-    assert p.GetNoiseVelocity1() == (1e3, -1e3)
+    p.GetMedium().SetNoiseVelocity1(0.5, -0.25)
+    p.GetMedium().SetNoiseVelocity2(-2.0, 3.0)
+    assert p.GetMedium().GetNoiseVelocity1() == (0.5, -0.25)
+    assert p.GetMedium().GetNoiseVelocity2() == (-2.0, 3.0)
+    p.GetMedium().SetNoiseVelocity1(1e9, -1e9)
+    assert p.GetMedium().GetNoiseVelocity1() == (1e3, -1e3)
     cookie, noise = vtkTexture(), vtkTexture()
     p.SetCookie(cookie)
-    p.SetNoiseTexture(noise)
-    assert p.GetCookie() is cookie and p.GetNoiseTexture() is noise
+    p.GetMedium().SetNoiseTexture(noise)
+    assert p.GetCookie() is cookie and p.GetMedium().GetNoiseTexture() is noise
     p.SetCookie(None)
-    p.SetNoiseTexture(None)
-    assert p.GetCookie() is None and p.GetNoiseTexture() is None
+    p.GetMedium().SetNoiseTexture(None)
+    assert p.GetCookie() is None and p.GetMedium().GetNoiseTexture() is None
 
 
 def test_named_precision_setters_and_booleans():

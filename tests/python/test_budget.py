@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import vtkmodules.vtkInteractionStyle  # noqa: F401  (the interactor's default style)
-from lightshafts import scenes, vtkLightShaftPass
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkInteractionStyle import vtkInteractorStyleTrackballCamera
 from vtkmodules.vtkRenderingUI import vtkGenericRenderWindowInteractor
@@ -26,15 +26,15 @@ def budget_scene(**params):
     renderer, window = rh.make_window(WIDTH, HEIGHT)
     info = scenes.sphere_and_floor(renderer, sphere_resolution=32)
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05)
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
     for name, value in params.items():
-        getattr(shafts, "Set" + name)(value)
+        getattr(parameter_owner(shafts, name), "Set" + name)(value)
     renderer.SetPass(shafts)
     return renderer, window, info, shafts
 
 
 def setting_name(shafts):
-    return vtkLightShaftPass.GetErrorModelSettingName(shafts.GetLastErrorModelSetting())
+    return vtkLightShaftPass.GetErrorModelSettingName(shafts.GetLastFrame().GetErrorModelSetting())
 
 
 def test_defaults_and_no_budget_without_an_interaction():
@@ -43,10 +43,10 @@ def test_defaults_and_no_budget_without_an_interaction():
     renderer, window, info, shafts = budget_scene()
     window.Render()  # VTK allocates 10000 s to a renderer at rest: no budget
     assert renderer.GetAllocatedRenderTime() >= 10.0
-    assert shafts.GetLastTimeBudget() == 0.0
-    assert shafts.GetLastPredictedFrameTime() == -1.0 and shafts.GetLastFrameTime() == -1.0
-    assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES  # the parameters set
-    assert shafts.GetLastDownsampleFactor() == 1
+    assert shafts.GetLastFrame().GetTimeBudget() == 0.0
+    assert shafts.GetLastFrame().GetPredictedFrameTime() == -1.0 and shafts.GetLastFrame().GetFrameTime() == -1.0
+    assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.SLICES  # the parameters set
+    assert shafts.GetLastFrame().GetDownsampleFactor() == 1
 
 
 def test_which_budget_applies():
@@ -54,20 +54,20 @@ def test_which_budget_applies():
     try:
         window.SetDesiredUpdateRate(15.0)  # what an interactor sets while the user drags
         window.Render()
-        assert shafts.GetLastTimeBudget() == pytest.approx(1.0 / 15.0)
+        assert shafts.GetLastFrame().GetTimeBudget() == pytest.approx(1.0 / 15.0)
         shafts.SetTimeBudget(0.02)
         window.Render()
-        assert shafts.GetLastTimeBudget() == pytest.approx(0.02)  # the smaller
+        assert shafts.GetLastFrame().GetTimeBudget() == pytest.approx(0.02)  # the smaller
         shafts.SetTimeBudget(0.5)
         window.Render()
-        assert shafts.GetLastTimeBudget() == pytest.approx(1.0 / 15.0)
+        assert shafts.GetLastFrame().GetTimeBudget() == pytest.approx(1.0 / 15.0)
         shafts.UseAllocatedRenderTimeOff()
         window.Render()
-        assert shafts.GetLastTimeBudget() == pytest.approx(0.5)
+        assert shafts.GetLastFrame().GetTimeBudget() == pytest.approx(0.5)
         shafts.SetTimeBudget(0.0)
         window.Render()
-        assert shafts.GetLastTimeBudget() == 0.0
-        assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES
+        assert shafts.GetLastFrame().GetTimeBudget() == 0.0
+        assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.SLICES
     finally:
         window.SetDesiredUpdateRate(0.0001)
 
@@ -75,11 +75,11 @@ def test_which_budget_applies():
 def test_a_budget_nothing_fits_gets_the_cheapest_at_quarter_resolution():
     renderer, window, info, shafts = budget_scene(TimeBudget=1e-9)
     window.Render()
-    assert shafts.GetLastTimeBudget() == pytest.approx(1e-9)
-    assert shafts.GetLastDownsampleFactor() == 4
-    assert shafts.GetLastPredictedFrameTime() > 1e-9
-    assert shafts.GetLastFrameTime() > 0.0  # measured
-    assert shafts.GetLastPredictedError() == -1.0  # the model knows full resolution only
+    assert shafts.GetLastFrame().GetTimeBudget() == pytest.approx(1e-9)
+    assert shafts.GetLastFrame().GetDownsampleFactor() == 4
+    assert shafts.GetLastFrame().GetPredictedFrameTime() > 1e-9
+    assert shafts.GetLastFrame().GetFrameTime() > 0.0  # measured
+    assert shafts.GetLastFrame().GetPredictedError() == -1.0  # the model knows full resolution only
     assert np.all(np.isfinite(rh.in_scatter(shafts)))
 
 
@@ -89,22 +89,22 @@ def test_an_ample_budget_gets_the_most_accurate_setting_at_full_resolution():
     for preset in ("Draft", "Interactive", "Final"):
         getattr(shafts, "SetQualityTo" + preset)()
         window.Render()
-        predicted[preset] = shafts.GetLastPredictedError()
+        predicted[preset] = shafts.GetLastFrame().GetPredictedError()
     shafts.SetTimeBudget(3600.0)
     window.Render()
-    assert shafts.GetLastDownsampleFactor() == 1
-    assert shafts.GetLastPredictedFrameTime() <= 3600.0
-    assert 0.0 < shafts.GetLastPredictedError() <= min(predicted.values())
+    assert shafts.GetLastFrame().GetDownsampleFactor() == 1
+    assert shafts.GetLastFrame().GetPredictedFrameTime() <= 3600.0
+    assert 0.0 < shafts.GetLastFrame().GetPredictedError() <= min(predicted.values())
 
 
 def test_a_target_error_under_a_budget_takes_the_cheapest_setting_that_meets_it():
     renderer, window, info, shafts = budget_scene(TimeBudget=3600.0)
     window.Render()
-    most_accurate = shafts.GetLastPredictedError()
+    most_accurate = shafts.GetLastFrame().GetPredictedError()
     shafts.SetTargetError(0.05)
     window.Render()
-    assert most_accurate <= shafts.GetLastPredictedError() <= 0.05
-    assert shafts.GetLastDownsampleFactor() == 1
+    assert most_accurate <= shafts.GetLastFrame().GetPredictedError() <= 0.05
+    assert shafts.GetLastFrame().GetDownsampleFactor() == 1
 
 
 def test_a_still_view_keeps_its_choice_and_refines():
@@ -113,12 +113,12 @@ def test_a_still_view_keeps_its_choice_and_refines():
     shafts.ProgressiveRefinementOn()
     renderer.GetActiveCamera().Azimuth(1.0)
     window.Render()
-    chosen = (setting_name(shafts), shafts.GetLastDownsampleFactor())
+    chosen = (setting_name(shafts), shafts.GetLastFrame().GetDownsampleFactor())
     for estimates in range(2, 5):
         window.Render()  # nothing changed: the same choice, one more estimate
-        assert (setting_name(shafts), shafts.GetLastDownsampleFactor()) == chosen
-        assert shafts.GetLastRefinementEstimates() == estimates
-    assert shafts.GetLastRefinementConverged()
+        assert (setting_name(shafts), shafts.GetLastFrame().GetDownsampleFactor()) == chosen
+        assert shafts.GetLastFrame().GetRefinementEstimates() == estimates
+    assert shafts.GetLastFrame().GetRefinementConverged()
 
 
 def test_the_predictions_follow_the_budget_along_an_interactive_camera_path():
@@ -135,10 +135,10 @@ def test_the_predictions_follow_the_budget_along_an_interactive_camera_path():
     budgets, predicted, measured, names = [], [], [], []
 
     def record(*_):
-        budgets.append(shafts.GetLastTimeBudget())
-        predicted.append(shafts.GetLastPredictedFrameTime())
-        measured.append(shafts.GetLastFrameTime())
-        names.append((setting_name(shafts), shafts.GetLastDownsampleFactor()))
+        budgets.append(shafts.GetLastFrame().GetTimeBudget())
+        predicted.append(shafts.GetLastFrame().GetPredictedFrameTime())
+        measured.append(shafts.GetLastFrame().GetFrameTime())
+        names.append((setting_name(shafts), shafts.GetLastFrame().GetDownsampleFactor()))
 
     window.AddObserver(vtkCommand.EndEvent, record)
     try:
@@ -165,21 +165,21 @@ def test_the_predictions_follow_the_budget_along_an_interactive_camera_path():
 def test_a_new_budget_for_a_still_view_chooses_again():
     renderer, window, info, shafts = budget_scene(TimeBudget=3600.0)
     window.Render()
-    ample = (setting_name(shafts), shafts.GetLastDownsampleFactor())
+    ample = (setting_name(shafts), shafts.GetLastFrame().GetDownsampleFactor())
     assert ample[1] == 1
     shafts.SetTimeBudget(1e-9)  # the same view, a budget nothing fits
     window.Render()
-    assert shafts.GetLastDownsampleFactor() == 4
-    assert (setting_name(shafts), shafts.GetLastDownsampleFactor()) != ample
+    assert shafts.GetLastFrame().GetDownsampleFactor() == 4
+    assert (setting_name(shafts), shafts.GetLastFrame().GetDownsampleFactor()) != ample
     try:
         shafts.SetTimeBudget(0.0)
         window.SetDesiredUpdateRate(5.0)  # an interactor's rate: a budget of 0.2 s
         window.Render()
-        first = shafts.GetLastTimeBudget()
+        first = shafts.GetLastFrame().GetTimeBudget()
         window.SetDesiredUpdateRate(1e6)  # the view still, a new rate: a new choice
         window.Render()
-        assert shafts.GetLastTimeBudget() == pytest.approx(1e-6)
-        assert first != shafts.GetLastTimeBudget()
-        assert shafts.GetLastDownsampleFactor() == 4
+        assert shafts.GetLastFrame().GetTimeBudget() == pytest.approx(1e-6)
+        assert first != shafts.GetLastFrame().GetTimeBudget()
+        assert shafts.GetLastFrame().GetDownsampleFactor() == 4
     finally:
         window.SetDesiredUpdateRate(0.0001)

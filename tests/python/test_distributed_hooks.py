@@ -47,7 +47,7 @@ def test_the_shadow_map_event_lets_an_observer_rewrite_the_map():
     window.Render()
     assert seen == [(512, 512)]  # once per frame, during the frame
     assert shafts.GetShadowMapTexture() is None  # only valid inside the event
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     occluded = rh.in_scatter(shafts)
     # Only the part of the beam nearer the light than the light camera's near plane (the
     # nearest caster) stays lit.
@@ -61,7 +61,7 @@ def test_shadow_caster_bounds_make_every_process_take_the_same_path():
     shafts = rh.plain_slab_pass(slices=64, Method=vtkLightShaftPass.AUTOMATIC)
     renderer.SetPass(shafts)
     window.Render()
-    global_range = shafts.GetLastLightDepthRange()
+    global_range = shafts.GetLastFrame().GetLightDepthRange()
     bounds = [0.0] * 6
     assert not shafts.GetShadowCasterBounds(bounds)
 
@@ -69,21 +69,21 @@ def test_shadow_caster_bounds_make_every_process_take_the_same_path():
     world_bounds = renderer.ComputeVisiblePropBounds()
     renderer.RemoveAllViewProps()
     window.Render()
-    assert shafts.GetLastMethod() == vtkLightShaftPass.ANALYTIC
-    assert not shafts.GetLastShadowMapRendered()
+    assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.ANALYTIC
+    assert not shafts.GetLastFrame().GetShadowMapRendered()
     # With the global casters' bounds it renders a (cleared) map with the common light camera.
     shafts.SetShadowCasterBounds(world_bounds)
     assert shafts.GetShadowCasterBounds(bounds) and bounds == list(world_bounds)
     window.Render()
-    assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES
-    assert shafts.GetLastShadowMapRendered()
-    assert shafts.GetLastNumberOfShadowCasters() == 0
-    near, far = shafts.GetLastLightDepthRange()
+    assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.SLICES
+    assert shafts.GetLastFrame().GetShadowMapRendered()
+    assert shafts.GetLastFrame().GetNumberOfShadowCasters() == 0
+    near, far = shafts.GetLastFrame().GetLightDepthRange()
     assert far >= global_range[1] * 0.999 and near <= global_range[0] * 1.001
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     shafts.UnsetShadowCasterBounds()
     window.Render()
-    assert shafts.GetLastMethod() == vtkLightShaftPass.ANALYTIC
+    assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.ANALYTIC
 
 
 def test_non_finite_shadow_caster_bounds_are_refused(messages):

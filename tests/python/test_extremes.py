@@ -76,7 +76,7 @@ def render(width=160, height=120, prepare=None, **params):
         renderer.ResetCameraClippingRange()
     renderer.SetPass(shafts)
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     image = rh.in_scatter(shafts)
     assert np.all(np.isfinite(image)), "non-finite in-scatter"
     assert np.all(image >= 0.0)
@@ -185,7 +185,7 @@ def test_one_slice_and_the_maximum(method, slices):
     args = render(NumberOfSlices=slices)
     renderer, window, info, shafts, image, _ = args
     # RAY_MARCH and EPIPOLAR: one slab over the lit range, `slices` steps per pixel or sample.
-    assert shafts.GetLastNumberOfSlicesDrawn() == (slices if method == "slices" else 1)
+    assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() == (slices if method == "slices" else 1)
     error = error_against_reference(*args[:5])
     # One slab: the whole lit depth range in one product-rule segment per pixel (a documented
     # degradation: about 30% RMS, the energy within 10%); 4096: converged.
@@ -213,14 +213,14 @@ def test_far_to_near_ratio_of_a_million():
     far = camera.GetClippingRange()[1] * 2.0
     camera.SetClippingRange(far * 1e-6, far)
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05)
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
     shafts.SetNumberOfSlices(256)
     use_method(shafts)
     renderer.SetPass(shafts)
     window.Render()
     near_used, far_used = camera.GetClippingRange()
     assert far_used / near_used > 0.99e6
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     image = rh.in_scatter(shafts)
     assert np.all(np.isfinite(image))
     # 24-bit-like depth at near = 1e-6 far resolves the floor and sphere only coarsely; the
@@ -233,13 +233,13 @@ def test_tiny_and_huge_windows(size):
     renderer, window = rh.make_window(*size)
     scenes.sphere_and_floor(renderer, sphere_resolution=64)
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05)
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
     shafts.SetNumberOfSlices(32)
     use_method(shafts)
     renderer.SetPass(shafts)
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
-    assert tuple(shafts.GetLastViewportSize()) == size
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
+    assert tuple(shafts.GetLastFrame().GetViewportSize()) == size
     image = rh.in_scatter(shafts)
     assert image.shape == (size[1], size[0], 3)
     assert np.all(np.isfinite(image))
@@ -259,7 +259,7 @@ def test_occluder_touching_the_light():
         actor.SetMapper(mapper)
         renderer.AddActor(actor)
     renderer, window, info, shafts, image, _ = render(prepare=prepare)
-    assert shafts.GetLastShadowMapRendered() == (
+    assert shafts.GetLastFrame().GetShadowMapRendered() == (
         _method in ("slices", "ray-march", "epipolar", "light-volume"))
     assert image.max() > 0.0
 
@@ -288,7 +288,7 @@ def test_degenerate_scene():
     use_method(shafts)
     renderer.SetPass(shafts)
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     assert np.all(np.isfinite(rh.in_scatter(shafts)))
 
 
@@ -339,7 +339,7 @@ def test_point_light_extremes(method, case):
         params["ShadowMapSize"] = 16384  # faces limited to a third of the largest texture
     args = render(prepare=prepare, **params)
     renderer, window, info, shafts, image, _ = args
-    assert shafts.GetLastLightKind(0) == vtkLightShaftPass.POINT_LIGHT
+    assert shafts.GetLastFrame().GetLightKind(0) == vtkLightShaftPass.POINT_LIGHT
     if case == "inside the sphere" and method != "analytic":
         # Only the inside of the sphere is lit; the camera sees its outside: nothing, but for the
         # shell the shadow bias lets through where rays graze the sphere (a few texels thick).
@@ -370,7 +370,7 @@ def test_directional_light_extremes(method, case):
         prepare = directional_light((0.5, 6.0, 0.0), (0.5, 6.0 - 1e-4, 0.0))
     args = render(prepare=prepare)
     shafts = args[3]
-    assert shafts.GetLastLightKind(0) == vtkLightShaftPass.DIRECTIONAL_LIGHT
+    assert shafts.GetLastFrame().GetLightKind(0) == vtkLightShaftPass.DIRECTIONAL_LIGHT
     assert error_against_reference(*args[:5]) < bound(0.03)
 
 
@@ -388,6 +388,6 @@ def test_eight_lights_at_once(method):
         info.light.SwitchOff()
     args = render(prepare=prepare, ShadowMapSize=1024)
     renderer, window, info, shafts, image, _ = args
-    assert shafts.GetLastNumberOfUsedLights() == 8
-    lights = [shafts.GetLastUsedLight(i) for i in range(8)]
+    assert shafts.GetLastFrame().GetNumberOfUsedLights() == 8
+    lights = [shafts.GetLastFrame().GetUsedLight(i) for i in range(8)]
     assert error_against_reference(*args[:5], lights=lights) < bound(0.03)

@@ -44,7 +44,7 @@ def shaft_scene(width=240, height=180, **params):
 
 
 def features(shafts):
-    return set(shafts.GetLastShaderVariant().split())
+    return set(shafts.GetLastFrame().GetShaderVariant().split())
 
 
 # --- cookie ---------------------------------------------------------------------------------
@@ -54,7 +54,7 @@ def test_half_black_cookie_removes_half_the_shafts_and_floor_light():
     shafts.SetCookie(image_texture(half_black()))
     window.Render()
     assert "cookie" in features(shafts)
-    assert shafts.GetLastNumberOfSceneRenders() == 2
+    assert shafts.GetLastFrame().GetNumberOfSceneRenders() == 2
     measured = rh.in_scatter(shafts)
     plain = rh.reference_for(renderer, window, info, shafts)
     cookie = lambda u, v: np.where(u < 0.5, 1.0, 0.0)[..., None]  # noqa: E731
@@ -108,8 +108,8 @@ def test_cookie_off_is_identical_to_no_cookie():
     shafts.SetCookie(None)
     window.Render()
     assert "cookie" not in features(shafts)
-    assert "#define LIGHTSHAFT_COOKIE" not in shafts.GetLastSliceShaderSource()
-    assert shafts.GetLastNumberOfSceneRenders() == 1
+    assert "#define LIGHTSHAFT_COOKIE" not in shafts.GetLastFrame().GetSliceShaderSource()
+    assert shafts.GetLastFrame().GetNumberOfSceneRenders() == 1
     np.testing.assert_array_equal(rh.in_scatter(shafts), before)
     np.testing.assert_array_equal(rh.screenshot(window), before_pixels)
 
@@ -130,26 +130,26 @@ def test_cookie_without_image_warns_once_and_is_ignored(messages):
 def test_noise_amplitude_zero_is_identical_to_no_noise():
     renderer, window, info, shafts = shaft_scene(160, 120, NumberOfSlices=64)
     before = rh.in_scatter(shafts)
-    shafts.SetNoiseAmplitude(0.0)
-    shafts.SetTime(3.0)
+    shafts.GetMedium().SetNoiseAmplitude(0.0)
+    shafts.GetMedium().SetTime(3.0)
     window.Render()
     assert "noise" not in features(shafts)
-    assert "#define LIGHTSHAFT_NOISE" not in shafts.GetLastSliceShaderSource()
+    assert "#define LIGHTSHAFT_NOISE" not in shafts.GetLastFrame().GetSliceShaderSource()
     np.testing.assert_array_equal(rh.in_scatter(shafts), before)
 
 
 def test_noise_is_a_pure_function_of_time_and_keeps_the_mean():
     renderer, window, info, shafts = shaft_scene(200, 150, NumberOfSlices=128)
     homogeneous = rh.in_scatter(shafts)
-    shafts.SetNoiseAmplitude(1.0)
-    shafts.SetTime(2.5)
+    shafts.GetMedium().SetNoiseAmplitude(1.0)
+    shafts.GetMedium().SetTime(2.5)
     window.Render()
     assert "noise" in features(shafts)
     first = rh.in_scatter(shafts)
-    shafts.SetTime(7.0)
+    shafts.GetMedium().SetTime(7.0)
     window.Render()
     other = rh.in_scatter(shafts)
-    shafts.SetTime(2.5)
+    shafts.GetMedium().SetTime(2.5)
     window.Render()
     again = rh.in_scatter(shafts)
     np.testing.assert_array_equal(again, first)
@@ -274,42 +274,42 @@ def test_jitter_is_deterministic_and_trades_banding_for_noise():
 def test_automatic_slice_count_follows_the_lit_depth_range():
     renderer, window, info, shafts = shaft_scene(160, 120, AutomaticSliceCount=True,
                                                  MaximumNumberOfSlices=400)
-    near, far = shafts.GetLastSliceDepthRange()
+    near, far = shafts.GetLastFrame().GetSliceDepthRange()
     clip_far = renderer.GetActiveCamera().GetClippingRange()[1]
     expected = int(np.ceil((far - near) / (clip_far / 400)))
-    assert abs(shafts.GetLastNumberOfSlicesDrawn() - expected) <= 1
+    assert abs(shafts.GetLastFrame().GetNumberOfSlicesDrawn() - expected) <= 1
     # A narrower cone spans less depth: fewer slabs.
     info.light.SetConeAngle(8.0)
     window.Render()
-    assert shafts.GetLastNumberOfSlicesDrawn() < expected
+    assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() < expected
     shafts.SetMaximumNumberOfSlices(20)
     window.Render()
-    assert shafts.GetLastNumberOfSlicesDrawn() <= 20
+    assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() <= 20
 
 
 # --- model only what the scene requires -----------------------------------------------------
 
 def test_features_that_are_off_are_not_compiled():
     renderer, window, info, shafts = shaft_scene(120, 90, NumberOfSlices=16)
-    source = shafts.GetLastSliceShaderSource()
+    source = shafts.GetLastFrame().GetSliceShaderSource()
     for feature in ("COOKIE", "NOISE", "JITTER", "ACCUMULATE_8BIT", "PHASE_HG"):
         assert f"#define LIGHTSHAFT_{feature}" not in source
     assert "#define LIGHTSHAFT_SHADOW" in source
     shafts.SetCookie(image_texture(half_black(8)))
-    shafts.SetNoiseAmplitude(0.5)
+    shafts.GetMedium().SetNoiseAmplitude(0.5)
     shafts.JitterOn()
     shafts.SetAccumulationPrecisionTo8Bit()
-    shafts.SetPhaseFunctionToHenyeyGreenstein()
+    shafts.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
     window.Render()
-    source = shafts.GetLastSliceShaderSource()
+    source = shafts.GetLastFrame().GetSliceShaderSource()
     for feature in ("COOKIE", "NOISE", "JITTER", "ACCUMULATE_8BIT", "PHASE_HG", "SHADOW"):
         assert f"#define LIGHTSHAFT_{feature}" in source
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
 
 
 def test_no_shadow_map_when_nothing_can_cast_into_the_light():
     renderer, window, info, shafts = shaft_scene(160, 120, NumberOfSlices=128)
-    assert shafts.GetLastNumberOfShadowCasters() == 2  # sphere and floor
+    assert shafts.GetLastFrame().GetNumberOfShadowCasters() == 2  # sphere and floor
     # A box far outside the cone is no caster.
     cube = vtkCubeSource()
     cube.SetCenter(9.0, 1.0, -4.0)
@@ -319,14 +319,14 @@ def test_no_shadow_map_when_nothing_can_cast_into_the_light():
     box.SetMapper(mapper)
     renderer.AddActor(box)
     window.Render()
-    assert shafts.GetLastNumberOfShadowCasters() == 2
+    assert shafts.GetLastFrame().GetNumberOfShadowCasters() == 2
     # Without the sphere and the floor nothing is in the light: no shadow map, no shadow code,
     # and the shafts are the unshadowed reference.
     for actor in info.actors:
         renderer.RemoveActor(actor)
     window.Render()
-    assert shafts.GetLastNumberOfShadowCasters() == 0
-    assert not shafts.GetLastShadowMapRendered()
+    assert shafts.GetLastFrame().GetNumberOfShadowCasters() == 0
+    assert not shafts.GetLastFrame().GetShadowMapRendered()
     assert "shadow" not in features(shafts)
     reference = rh.reference_for(renderer, window, info, shafts, with_props=False)
     error, _ = ref.relative_rms_error(rh.in_scatter(shafts), reference)

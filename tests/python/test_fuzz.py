@@ -25,7 +25,7 @@ import time
 import numpy as np
 import pytest
 
-from lightshafts import scenes, vtkLightShaftPass
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass
 from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkImageData
 from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkPlaneSource, vtkSphereSource
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkHardwareSelector, vtkLight,
@@ -61,8 +61,8 @@ SCALARS = [
     ("Exposure", False, True), ("Anisotropy", False, False), ("NoiseAmplitude", False, False),
     ("NoiseScale", False, True), ("Time", False, False), ("Decay", False, False),
     ("Density", False, False), ("Weight", False, False), ("RadialGuardBand", False, False),
-    ("MediumDensityScale", False, True), ("MediumBackgroundDensity", False, True),
-    ("MediumShadowResolution", True, False), ("TranslucentShadowLayers", True, False),
+    ("DensityScale", False, True), ("BackgroundDensity", False, True),
+    ("FieldShadowResolution", True, False), ("TranslucentShadowLayers", True, False),
 ]
 VECTORS = [("ScatteringCoefficient", 3), ("AbsorptionCoefficient", 3),
            ("NoiseVelocity1", 2), ("NoiseVelocity2", 2)]
@@ -71,7 +71,7 @@ BOOLEANS = ["AttenuateScene", "ShadowSurfaces", "AutomaticSliceCount", "Jitter",
 # Setters that refuse non-finite values (with an error naming the parameter).
 REFUSING = {"Exposure", "Anisotropy", "NoiseAmplitude", "NoiseScale", "Time", "Decay",
             "Density", "Weight", "RadialGuardBand", "ScatteringCoefficient",
-            "MediumDensityScale", "MediumBackgroundDensity",
+            "DensityScale", "BackgroundDensity",
             "AbsorptionCoefficient", "NoiseVelocity1", "NoiseVelocity2", "TimeBudget"}
 # The pass's documented warnings (README "Behaviour with any scene").
 DOCUMENTED_WARNINGS = ["No spot or point light in the renderer", "given to the pass are switched off",
@@ -94,14 +94,14 @@ def probe_ranges():
     shafts = vtkLightShaftPass()
     ranges = {}
     for name, integer, _ in SCALARS:
-        setter, getter = getattr(shafts, "Set" + name), getattr(shafts, "Get" + name)
+        setter, getter = getattr(parameter_owner(shafts, name), "Set" + name), getattr(parameter_owner(shafts, name), "Get" + name)
         probe = INT_PROBE if integer else FLOAT_PROBE
         setter(-probe)
         low = getter()
         setter(probe)
         ranges[name] = (low, getter())
     for name, n in VECTORS:
-        setter, getter = getattr(shafts, "Set" + name), getattr(shafts, "Get" + name)
+        setter, getter = getattr(parameter_owner(shafts, name), "Set" + name), getattr(parameter_owner(shafts, name), "Get" + name)
         setter(*([-FLOAT_PROBE] * n))
         low = getter()[0]
         setter(*([FLOAT_PROBE] * n))
@@ -225,7 +225,7 @@ class Fuzzer:
         value = self.junk(integer) if self.rng.random() < 0.15 else self.value(name, integer, log)
         if not integer and not math.isfinite(value):
             self.refused.add(name)
-        getattr(self.shafts, "Set" + name)(value)
+        getattr(parameter_owner(self.shafts, name), "Set" + name)(value)
         return f"Set{name}({value!r})"
 
     def set_vector(self):
@@ -240,13 +240,13 @@ class Fuzzer:
             values = [self.rng.uniform(low, high) for _ in range(n)]
         if not all(math.isfinite(v) for v in values):
             self.refused.add(name)
-        getattr(self.shafts, "Set" + name)(*values)
+        getattr(parameter_owner(self.shafts, name), "Set" + name)(*values)
         return f"Set{name}{tuple(values)!r}"
 
     def set_boolean(self):
         name = self.rng.choice(BOOLEANS)
         value = self.rng.random() < 0.5
-        getattr(self.shafts, "Set" + name)(value)
+        getattr(parameter_owner(self.shafts, name), "Set" + name)(value)
         return f"Set{name}({value})"
 
     def preset(self):
@@ -259,25 +259,25 @@ class Fuzzer:
         kind = self.rng.choice(["image", "empty", "none"])
         texture = {"image": lambda: image_texture(self.rng, self.rng.choice([1, 3])),
                    "empty": vtkTexture, "none": lambda: None}[kind]()
-        getattr(self.shafts, "Set" + which)(texture)
+        getattr(parameter_owner(self.shafts, which), "Set" + which)(texture)
         return f"Set{which}({kind})"
 
     def medium(self):
         if self.rng.random() < 0.3:
-            self.shafts.SetMediumDensity(None)
-            return "SetMediumDensity(None)"
+            self.shafts.GetMedium().SetDensityField(None)
+            return "SetDensityField(None)"
         image, expected = density_image(self.rng)
         if expected is None and self.rng.random() < 0.3:
             # The pipeline's way (its bad outputs' errors come with the frames: tested in
             # test_medium_field).
             producer = vtkTrivialProducer()
             producer.SetOutput(image)
-            self.shafts.SetMediumDensityConnection(producer.GetOutputPort())
-            return f"SetMediumDensityConnection({image.GetDimensions()})"
+            self.shafts.GetMedium().SetDensityFieldConnection(producer.GetOutputPort())
+            return f"SetDensityFieldConnection({image.GetDimensions()})"
         if expected:
             self.expected_errors.append(expected)
-        self.shafts.SetMediumDensity(image)
-        return f"SetMediumDensity({image.GetDimensions()}, {expected or 'usable'})"
+        self.shafts.GetMedium().SetDensityField(image)
+        return f"SetDensityField({image.GetDimensions()}, {expected or 'usable'})"
 
     def translucent(self):
         # Translucent casters: a pane across the spot's beam, a sphere shell around the scene's
@@ -462,8 +462,8 @@ class Fuzzer:
                                lambda v: actor.SetPosition(*v), actor.GetPosition()),
             "cookie": (lambda: self.shafts.SetCookie(nan_image(nan)), self.shafts.SetCookie,
                        self.shafts.GetCookie()),
-            "noise": (lambda: self.shafts.SetNoiseTexture(nan_image(nan)),
-                      self.shafts.SetNoiseTexture, self.shafts.GetNoiseTexture()),
+            "noise": (lambda: self.shafts.GetMedium().SetNoiseTexture(nan_image(nan)),
+                      self.shafts.GetMedium().SetNoiseTexture, self.shafts.GetMedium().GetNoiseTexture()),
         }
         name = rng.choice(sorted(choices))
         apply, restore, value = choices[name]
@@ -512,7 +512,7 @@ class Fuzzer:
         self.window.Render()
         elapsed, cpu = time.perf_counter() - start, time.process_time() - cpu_start
         self.frame_times.append((elapsed, self.steps[-1]))
-        if self.shafts.GetLastMethod() >= 0:
+        if self.shafts.GetLastFrame().GetMethod() >= 0:
             self.shafted += 1
         return self.check(cpu)
 
@@ -520,8 +520,8 @@ class Fuzzer:
         problems = []
         if cpu > FRAME_CPU_LIMIT:
             problems.append(f"frame took {cpu:.1f} s of CPU time (limit {FRAME_CPU_LIMIT} s)")
-        if self.shafts.GetLastGLErrorCount():
-            problems.append(f"{self.shafts.GetLastGLErrorCount()} GL errors")
+        if self.shafts.GetLastFrame().GetGLErrorCount():
+            problems.append(f"{self.shafts.GetLastFrame().GetGLErrorCount()} GL errors")
         for error in self.errors:
             if not any(name in error and "non-finite" in error for name in self.refused) and \
                     not any(words in error for words in self.expected_errors):
@@ -537,12 +537,12 @@ class Fuzzer:
                 problems.append(f"warning: {warning.strip()}")
         problems += [f"VTK {kind}: {text.strip()}" for kind, text in VTK_OUTPUT.unexpected()]
         VTK_OUTPUT.messages.clear()
-        estimates = self.shafts.GetLastRefinementEstimates()
+        estimates = self.shafts.GetLastFrame().GetRefinementEstimates()
         if estimates > self.shafts.GetRefinementFrames() or (
                 estimates and not self.shafts.GetProgressiveRefinement()):
             problems.append(f"{estimates} refinement estimates")
-        w, h = self.shafts.GetLastViewportSize()
-        if w > 0 and h > 0 and not self.shafts.GetLastPlainScene():
+        w, h = self.shafts.GetLastFrame().GetViewportSize()
+        if w > 0 and h > 0 and not self.shafts.GetLastFrame().GetPlainScene():
             image = rh.in_scatter(self.shafts)
             if not np.all(np.isfinite(image)):
                 problems.append("non-finite in-scatter")

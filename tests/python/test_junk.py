@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 
-from lightshafts import scenes, vtkLightShaftPass
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass
 from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkImageData
@@ -26,14 +26,14 @@ def junk_scene():
     renderer, window = rh.make_window(WIDTH, HEIGHT)
     info = scenes.sphere_and_floor(renderer, sphere_resolution=24)
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.3)
+    shafts.GetMedium().SetScatteringCoefficient(0.3)
     renderer.SetPass(shafts)
     return renderer, window, info, shafts, Messages(shafts)
 
 
 def render(window, shafts):
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     image = rh.in_scatter(shafts)
     assert np.all(np.isfinite(image))
     return image
@@ -72,7 +72,7 @@ def test_a_light_with_junk_is_left_out_with_one_warning(junk):
     for _ in range(3):
         image = render(window, shafts)
         assert image.max() == 0.0  # the only light, left out
-        assert shafts.GetLastNumberOfUsedLights() == 0
+        assert shafts.GetLastFrame().GetNumberOfUsedLights() == 0
     assert len(log.warnings) == 1, log.warnings
     assert "is left out of the shafts" in log.warnings[0] and value in log.warnings[0]
     assert "): Light 0x" in log.warnings[0]  # the object, by its address
@@ -98,14 +98,14 @@ def test_the_other_lights_keep_their_shafts():
     renderer, window, info, shafts, log = junk_scene()
     point = scenes.add_point_light(renderer, (-1.5, 3.2, 1.0), intensity=0.8)
     alone = vtkLightShaftPass()
-    alone.SetScatteringCoefficient(0.3)
+    alone.GetMedium().SetScatteringCoefficient(0.3)
     alone.SetLight(point)
     renderer.SetPass(alone)
     expected = render(window, alone)
     renderer.SetPass(shafts)
     info.light.SetDiffuseColor(math.nan, 1.0, 1.0)
     image = render(window, shafts)
-    assert shafts.GetLastNumberOfUsedLights() == 1 and shafts.GetLastUsedLight(0) is point
+    assert shafts.GetLastFrame().GetNumberOfUsedLights() == 1 and shafts.GetLastFrame().GetUsedLight(0) is point
     assert np.allclose(image, expected, rtol=1e-5, atol=1e-9)
     assert len(log.warnings) == 1
 
@@ -128,8 +128,8 @@ def test_a_camera_with_junk_renders_the_scene_without_shafts(junk):
     apply(renderer.GetActiveCamera())
     for _ in range(3):
         window.Render()
-        assert shafts.GetLastGLErrorCount() == 0
-        assert shafts.GetLastMethod() == -1
+        assert shafts.GetLastFrame().GetGLErrorCount() == 0
+        assert shafts.GetLastFrame().GetMethod() == -1
     assert len(log.warnings) == 1, log.warnings
     assert "The camera cannot be used for the shafts" in log.warnings[0]
     assert value in log.warnings[0]
@@ -155,18 +155,18 @@ def test_a_prop_with_a_nan_transform_casts_no_shadow_and_the_others_do():
     renderer, window, info, shafts, log = junk_scene()
     box = rh.add_box(renderer, (0.6, 0.6, 0.6), centre=(-1.5, 0.3, 1.0))
     render(window, shafts)
-    casters = shafts.GetLastNumberOfShadowCasters()
+    casters = shafts.GetLastFrame().GetNumberOfShadowCasters()
     box.SetPosition(math.nan, 0.0, 0.0)
     for _ in range(2):
         render(window, shafts)
-        assert shafts.GetLastNumberOfShadowCasters() == casters - 1
-        assert shafts.GetLastShadowMapRendered() or shafts.GetLastNumberOfShadowCasters() > 0
+        assert shafts.GetLastFrame().GetNumberOfShadowCasters() == casters - 1
+        assert shafts.GetLastFrame().GetShadowMapRendered() or shafts.GetLastFrame().GetNumberOfShadowCasters() > 0
     assert len(log.warnings) == 1, log.warnings
     assert "casts no shadow in the shafts" in log.warnings[0]
     assert "transform matrix holds nan" in log.warnings[0]
     box.SetPosition(0.0, 0.0, 0.0)
     render(window, shafts)
-    assert shafts.GetLastNumberOfShadowCasters() == casters and len(log.warnings) == 1
+    assert shafts.GetLastFrame().GetNumberOfShadowCasters() == casters and len(log.warnings) == 1
 
 
 def test_a_prop_with_nan_points_gives_a_finite_picture():
@@ -183,7 +183,7 @@ def test_a_prop_with_nan_points_gives_a_finite_picture():
     copy.SetPoints(bad)
     box.GetMapper().SetInputData(copy)
     render(window, shafts)  # VTK's bounds skip NaN: the box still casts with its other faces
-    assert shafts.GetLastNumberOfShadowCasters() >= 1
+    assert shafts.GetLastFrame().GetNumberOfShadowCasters() >= 1
     assert not log.warnings
 
 
@@ -200,8 +200,8 @@ def image_texture(values):
                                         ("NoiseTexture", "using the generated noise")])
 def test_images_with_non_finite_texels_are_left_out(which, said):
     renderer, window, info, shafts, log = junk_scene()
-    shafts.SetNoiseAmplitude(0.5)
-    getattr(shafts, "Set" + which)(image_texture([1.0, 0.5, math.inf, 1.0]))
+    shafts.GetMedium().SetNoiseAmplitude(0.5)
+    getattr(parameter_owner(shafts, which), "Set" + which)(image_texture([1.0, 0.5, math.inf, 1.0]))
     for _ in range(2):
         render(window, shafts)
     assert len(log.warnings) == 1, log.warnings

@@ -9,7 +9,7 @@ Scenes: scenes.sphere_and_floor with its spotlight turned into a point or a dire
 import numpy as np
 import pytest
 
-from lightshafts import scenes, vtkLightShaftPass
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass
 
@@ -43,7 +43,7 @@ def kind_scene(kind, width=200, height=150, **params):
     shafts.SetLight(info.light)
     renderer.SetPass(shafts)
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     return renderer, window, info, shafts
 
 
@@ -58,10 +58,10 @@ def test_automatic_choice_takes_spot_and_point_lights_not_directional_ones():
     shafts = vtkLightShaftPass()
     renderer.SetPass(shafts)
     window.Render()
-    assert shafts.GetLastNumberOfUsedLights() == 2
-    assert shafts.GetLastUsedLight(0) is info.light and shafts.GetLastUsedLight(1) is point
-    assert [shafts.GetLastLightKind(i) for i in range(2)] == [SPOT, POINT]
-    assert shafts.GetLastUsedLight(2) is None and shafts.GetLastLightKind(2) == -1
+    assert shafts.GetLastFrame().GetNumberOfUsedLights() == 2
+    assert shafts.GetLastFrame().GetUsedLight(0) is info.light and shafts.GetLastFrame().GetUsedLight(1) is point
+    assert [shafts.GetLastFrame().GetLightKind(i) for i in range(2)] == [SPOT, POINT]
+    assert shafts.GetLastFrame().GetUsedLight(2) is None and shafts.GetLastFrame().GetLightKind(2) == -1
     # Given lights: any kind, in the order given; duplicates ignored.
     shafts.SetLight(sun)
     shafts.AddLight(point)
@@ -69,18 +69,18 @@ def test_automatic_choice_takes_spot_and_point_lights_not_directional_ones():
     assert shafts.GetNumberOfLights() == 2 and shafts.GetLight() is sun
     assert shafts.GetLight(1) is point and shafts.GetLight(2) is None
     window.Render()
-    assert [shafts.GetLastLightKind(i) for i in range(2)] == [DIRECTIONAL, POINT]
+    assert [shafts.GetLastFrame().GetLightKind(i) for i in range(2)] == [DIRECTIONAL, POINT]
     shafts.RemoveLight(sun)
     window.Render()
-    assert shafts.GetLastNumberOfUsedLights() == 1 and shafts.GetLastUsedLight() is point
+    assert shafts.GetLastFrame().GetNumberOfUsedLights() == 1 and shafts.GetLastFrame().GetUsedLight() is point
     shafts.RemoveAllLights()
     assert shafts.GetNumberOfLights() == 0 and shafts.GetLight() is None
     window.Render()
-    assert shafts.GetLastNumberOfUsedLights() == 2
+    assert shafts.GetLastFrame().GetNumberOfUsedLights() == 2
     shafts.SetLight(sun)
     shafts.SetLight(None)
     window.Render()
-    assert shafts.GetLastNumberOfUsedLights() == 2
+    assert shafts.GetLastFrame().GetNumberOfUsedLights() == 2
 
 
 def test_modified_time_follows_the_light_list():
@@ -116,12 +116,12 @@ def test_several_lights_add_up_to_the_sum_of_each_alone(method):
     VTK_OUTPUT.expect(ANALYTIC_IGNORES_SHADOWS)
     renderer, window, info, point, shafts = two_light_scene(METHODS[method])
     both = rh.in_scatter(shafts)
-    assert shafts.GetLastNumberOfUsedLights() == 2
+    assert shafts.GetLastFrame().GetNumberOfUsedLights() == 2
     alone = []
     for light in (info.light, point):
         shafts.SetLight(light)
         window.Render()
-        assert shafts.GetLastNumberOfUsedLights() == 1
+        assert shafts.GetLastFrame().GetNumberOfUsedLights() == 1
         alone.append(rh.in_scatter(shafts))
     total = alone[0] + alone[1]
     assert alone[0].max() > 0.0 and alone[1].max() > 0.0
@@ -157,14 +157,14 @@ def test_mixed_methods_per_light_add_up():
     shafts = rh.plain_slab_pass(slices=96, Method=vtkLightShaftPass.AUTOMATIC)
     renderer.SetPass(shafts)
     window.Render()
-    assert shafts.GetLastLightMethod(0) == vtkLightShaftPass.SLICES
-    assert shafts.GetLastLightMethod(1) == vtkLightShaftPass.ANALYTIC
+    assert shafts.GetLastFrame().GetLightMethod(0) == vtkLightShaftPass.SLICES
+    assert shafts.GetLastFrame().GetLightMethod(1) == vtkLightShaftPass.ANALYTIC
     for settings in ({}, {"AccumulationPrecision": vtkLightShaftPass.ACCUMULATE_8BIT,
                           "Exposure": 40.0},
                      {"Method": vtkLightShaftPass.RAY_MARCH, "InterleaveSize": 2,
                       "NumberOfSteps": 96}):
         for name, value in settings.items():
-            getattr(shafts, "Set" + name)(value)
+            getattr(parameter_owner(shafts, name), "Set" + name)(value)
         shafts.RemoveAllLights()
         window.Render()
         mixed = rh.in_scatter(shafts)
@@ -187,14 +187,14 @@ def test_a_switched_off_light_contributes_nothing():
     shafts.AddLight(point)
     point.SwitchOff()
     window.Render()
-    assert shafts.GetLastNumberOfUsedLights() == 1
+    assert shafts.GetLastFrame().GetNumberOfUsedLights() == 1
     np.testing.assert_array_equal(rh.in_scatter(shafts), spot_alone)
     # Switched on with zero intensity: used, but adds nothing.
     point.SwitchOn()
     point.SetIntensity(0.0)
     window.Render()
-    assert shafts.GetLastNumberOfUsedLights() == 2
-    assert shafts.GetLastLightMethod(1) == -1
+    assert shafts.GetLastFrame().GetNumberOfUsedLights() == 2
+    assert shafts.GetLastFrame().GetLightMethod(1) == -1
     np.testing.assert_allclose(rh.in_scatter(shafts), spot_alone, rtol=1e-6, atol=0.0)
 
 
@@ -220,8 +220,8 @@ def directional_closed_form(renderer, window, info, shafts, light):
     t0 = np.where(k > 0.0, np.maximum(t_plane, 0.0), 0.0)
     t1 = np.where(k < 0.0, np.minimum(t_plane, t_surface), t_surface)
     t0 = np.where((k == 0.0) & (r_o < 0.0), t1, t0)
-    sigma_s = np.asarray(shafts.GetScatteringCoefficient())
-    sigma_t = sigma_s + np.asarray(shafts.GetAbsorptionCoefficient())
+    sigma_s = np.asarray(shafts.GetMedium().GetScatteringCoefficient())
+    sigma_t = sigma_s + np.asarray(shafts.GetMedium().GetAbsorptionCoefficient())
     intensity = light.GetIntensity() * np.asarray(light.GetDiffuseColor())
     rate = sigma_t[None, :] * (1.0 + k[:, None])
     span = np.maximum(t1 - t0, 0.0)[:, None]
@@ -251,7 +251,7 @@ def test_directional_light_lights_the_half_space_beyond_its_plane():
     camera.SetFocalPoint(0.0, 7.5, 0.0)
     renderer.ResetCameraClippingRange()
     window.Render()
-    assert shafts.GetLastLightKind(0) == DIRECTIONAL
+    assert shafts.GetLastFrame().GetLightKind(0) == DIRECTIONAL
     measured = rh.in_scatter(shafts)
     expected = directional_closed_form(renderer, window, info, shafts, info.light)
     error = relative_rms(measured, expected)
@@ -270,8 +270,8 @@ def test_directional_light_lights_the_half_space_beyond_its_plane():
     measured = rh.in_scatter(shafts)
     expected = directional_closed_form(renderer, window, info, shafts, info.light)
     assert relative_rms(measured, expected) < 2e-3
-    sigma_t = np.asarray(shafts.GetScatteringCoefficient()) + np.asarray(
-        shafts.GetAbsorptionCoefficient())
+    sigma_t = np.asarray(shafts.GetMedium().GetScatteringCoefficient()) + np.asarray(
+        shafts.GetMedium().GetAbsorptionCoefficient())
     _, on_floor = rh.surface_points(renderer, window, info)
     below = on_floor.reshape(measured.shape[:2]) & (expected.mean(axis=-1) > 0.0)
     assert below.sum() > 1000
@@ -301,7 +301,7 @@ def test_parallel_camera_looking_along_a_directional_light():
     camera.SetParallelScale(2.0)
     renderer.ResetCameraClippingRange()
     window.Render()
-    assert shafts.GetLastShadowMapRendered()
+    assert shafts.GetLastFrame().GetShadowMapRendered()
     measured = rh.in_scatter(shafts)
     parallel = rh.reference_camera(renderer, window)
     eye = np.asarray(camera.GetPosition())
@@ -314,8 +314,8 @@ def test_parallel_camera_looking_along_a_directional_light():
     rho2 = (x - centre[0]) ** 2 + (z - centre[2]) ** 2
     top = np.where(rho2 <= radius ** 2, centre[1] + np.sqrt(np.maximum(radius ** 2 - rho2, 0)),
                    0.0)
-    sigma_s = np.asarray(shafts.GetScatteringCoefficient())
-    sigma_t = sigma_s + np.asarray(shafts.GetAbsorptionCoefficient())
+    sigma_s = np.asarray(shafts.GetMedium().GetScatteringCoefficient())
+    sigma_t = sigma_s + np.asarray(shafts.GetMedium().GetAbsorptionCoefficient())
     # r = 7 - y, t = 8 - y: integrand exp(-sigma_t (15 - 2 y)) over y from the surface to 7.
     y0, y1 = top[..., None], 7.0
     integral = (np.exp(-sigma_t * (15.0 - 2.0 * y1)) - np.exp(-sigma_t * (15.0 - 2.0 * y0))) / (
@@ -384,53 +384,53 @@ def test_point_light_shafts_show_no_cube_face_seam():
 @pytest.mark.parametrize("kind", [SPOT, POINT, DIRECTIONAL])
 def test_shadow_map_is_kept_while_nothing_changes(kind):
     renderer, window, info, shafts = kind_scene(kind)
-    assert shafts.GetLastLightShadowMapRendered(0)
+    assert shafts.GetLastFrame().GetLightShadowMapRendered(0)
     first = rh.in_scatter(shafts)
     window.Render()
-    assert shafts.GetLastLightShadowMapReused(0) and not shafts.GetLastLightShadowMapRendered(0)
+    assert shafts.GetLastFrame().GetLightShadowMapReused(0) and not shafts.GetLastFrame().GetLightShadowMapRendered(0)
     np.testing.assert_array_equal(rh.in_scatter(shafts), first)
     # A caster moves: rendered again, and the shafts follow.
     sphere = info.actors[0]
     sphere.SetPosition(0.3, 0.0, 0.0)
     window.Render()
-    assert shafts.GetLastLightShadowMapRendered(0)
+    assert shafts.GetLastFrame().GetLightShadowMapRendered(0)
     assert not np.array_equal(rh.in_scatter(shafts), first)
     window.Render()
-    assert shafts.GetLastLightShadowMapReused(0)
+    assert shafts.GetLastFrame().GetLightShadowMapReused(0)
     # The caster's data changes (its source, not the actor): rendered again.
     sphere.GetMapper().GetInputAlgorithm().SetRadius(0.7)
     window.Render()
-    assert shafts.GetLastLightShadowMapRendered(0)
+    assert shafts.GetLastFrame().GetLightShadowMapRendered(0)
     # The light moves; the map's size changes: rendered again.
     position = np.asarray(info.light.GetPosition())
     info.light.SetPosition(*(position + [0.1, 0.0, 0.0]))
     window.Render()
-    assert shafts.GetLastLightShadowMapRendered(0)
+    assert shafts.GetLastFrame().GetLightShadowMapRendered(0)
     shafts.SetShadowMapSize(512)
     window.Render()
-    assert shafts.GetLastLightShadowMapRendered(0)
+    assert shafts.GetLastFrame().GetLightShadowMapRendered(0)
     # The camera moves: spot and point maps do not depend on it.
     camera = renderer.GetActiveCamera()
     camera.Azimuth(5.0)
     renderer.ResetCameraClippingRange()
     window.Render()
     if kind != DIRECTIONAL:
-        assert shafts.GetLastLightShadowMapReused(0)
+        assert shafts.GetLastFrame().GetLightShadowMapReused(0)
     # Someone observes the map (distributed processes combine theirs): rendered every frame.
     shafts.AddObserver(vtkLightShaftPass.ShadowMapRenderedEvent, lambda *args: None)
     for _ in range(2):
         window.Render()
-        assert shafts.GetLastLightShadowMapRendered(0)
+        assert shafts.GetLastFrame().GetLightShadowMapRendered(0)
 
 
 def test_each_light_keeps_its_own_map():
     renderer, window, info, point, shafts = two_light_scene(vtkLightShaftPass.SLICES)
-    assert shafts.GetLastLightShadowMapRendered(0) and shafts.GetLastLightShadowMapRendered(1)
+    assert shafts.GetLastFrame().GetLightShadowMapRendered(0) and shafts.GetLastFrame().GetLightShadowMapRendered(1)
     point.SetPosition(-1.4, 3.2, 1.0)
     window.Render()
-    assert shafts.GetLastLightShadowMapReused(0) and shafts.GetLastLightShadowMapRendered(1)
+    assert shafts.GetLastFrame().GetLightShadowMapReused(0) and shafts.GetLastFrame().GetLightShadowMapRendered(1)
     window.Render()
-    assert shafts.GetLastLightShadowMapReused(0) and shafts.GetLastLightShadowMapReused(1)
+    assert shafts.GetLastFrame().GetLightShadowMapReused(0) and shafts.GetLastFrame().GetLightShadowMapReused(1)
 
 
 # --- every method with every kind --------------------------------------------------------------
@@ -441,11 +441,11 @@ def test_every_method_supports_every_kind(kind, method):
     VTK_OUTPUT.expect(ANALYTIC_IGNORES_SHADOWS)
     renderer, window, info, shafts = kind_scene(kind, Method=METHODS[method])
     image = rh.in_scatter(shafts)
-    assert shafts.GetLastLightMethod(0) == METHODS[method]
-    assert shafts.GetLastLightSlicesDrawn(0) >= 1
+    assert shafts.GetLastFrame().GetLightMethod(0) == METHODS[method]
+    assert shafts.GetLastFrame().GetLightSlicesDrawn(0) >= 1
     assert np.all(np.isfinite(image)) and image.max() > 0.0
-    assert f"light={KIND_NAMES[kind]}" in shafts.GetLastShaderVariant()
-    assert f"method={method}" in shafts.GetLastShaderVariant()
+    assert f"light={KIND_NAMES[kind]}" in shafts.GetLastFrame().GetShaderVariant()
+    assert f"method={method}" in shafts.GetLastFrame().GetShaderVariant()
     # The methods agree with each other (their accuracy against the reference is tested in
     # test_light_kind_accuracy.py): the unshadowed ones with slices everywhere the sphere
     # does not shadow, and the total within the shadow's share.
@@ -469,7 +469,7 @@ def test_floor_shadow_matches_the_analytic_shadow(kind, delegate):
         info.light.SetAttenuationValues(1.0, 0.0, 0.0)
     shafts = vtkLightShaftPass()
     shafts.SetLight(info.light)
-    shafts.SetScatteringCoefficient(0.05)
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
     shafts.SetExposure(0.0)  # the surfaces alone
     shafts.AttenuateSceneOff()
     shafts.SetShadowMapSize(2048)
@@ -478,8 +478,8 @@ def test_floor_shadow_matches_the_analytic_shadow(kind, delegate):
         shafts.SetDelegatePass(vtkRenderStepsPass())
     renderer.SetPass(shafts)
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
-    assert shafts.GetLastNumberOfSceneRenders() == 2  # with and without the light
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetNumberOfSceneRenders() == 2  # with and without the light
     pixels = rh.screenshot(window).max(axis=-1)
     lit, dark = rh.floor_shadow_masks(renderer, window, info)
     assert lit.sum() > 1000 and dark.sum() > 200
@@ -491,7 +491,7 @@ def test_floor_shadow_matches_the_analytic_shadow(kind, delegate):
     # Off: VTK's lighting, no shadow.
     shafts.ShadowSurfacesOff()
     window.Render()
-    assert shafts.GetLastNumberOfSceneRenders() == 1
+    assert shafts.GetLastFrame().GetNumberOfSceneRenders() == 1
     assert np.mean(rh.screenshot(window).max(axis=-1)[dark] > 40) > 0.99
 
 
@@ -508,7 +508,7 @@ def test_surfaces_shadowed_for_each_of_several_lights():
     shafts.ShadowSurfacesOn()
     renderer.SetPass(shafts)
     window.Render()
-    assert shafts.GetLastNumberOfSceneRenders() == 3
+    assert shafts.GetLastFrame().GetNumberOfSceneRenders() == 3
     both = rh.screenshot(window).astype(float).max(axis=-1)
     spot_lit, spot_dark = rh.floor_shadow_masks(renderer, window, info)
     point_info = scenes.SceneInfo(light=point, spheres=info.spheres, floors=info.floors)

@@ -91,8 +91,8 @@ def scene(kind="spot", width=48, height=36):
     if kind != "spot":
         for light in rh.make_light_kind(renderer, info, kind, (0.5, 6.0, 0.0)):
             shafts.AddLight(light)
-    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
-    shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
+    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.02, 0.01, 0.03)
     renderer.SetPass(shafts)
     window.Render()  # the clipping range both references read; the field is set after
     return renderer, window, info, shafts
@@ -106,21 +106,21 @@ def test_a_uniform_field_is_the_homogeneous_medium():
     renderer, window, info, shafts = scene()
     homogeneous, _, _ = cpp_reference(renderer, shafts)
     assert homogeneous.max() > 0.0
-    shafts.SetMediumDensity(field_image(lambda x, y, z: np.ones_like(x), samples=2))
+    shafts.GetMedium().SetDensityField(field_image(lambda x, y, z: np.ones_like(x), samples=2))
     uniform, _, _ = cpp_reference(renderer, shafts)
     assert relative(uniform, homogeneous) < 1e-7
     # Scale halves sigma_s and sigma_t; the background alone (a zero field) is the medium.
-    shafts.SetMediumDensityScale(0.5)
+    shafts.GetMedium().SetDensityScale(0.5)
     halved, _, _ = cpp_reference(renderer, shafts)
-    shafts.SetMediumDensityScale(1.0)
-    shafts.SetMediumDensity(field_image(lambda x, y, z: np.zeros_like(x), samples=2))
-    shafts.SetMediumBackgroundDensity(1.0)
+    shafts.GetMedium().SetDensityScale(1.0)
+    shafts.GetMedium().SetDensityField(field_image(lambda x, y, z: np.zeros_like(x), samples=2))
+    shafts.GetMedium().SetBackgroundDensity(1.0)
     background, _, _ = cpp_reference(renderer, shafts)
     assert relative(background, homogeneous) < 1e-7
-    shafts.SetMediumDensity(None)
-    shafts.SetMediumBackgroundDensity(0.0)
-    shafts.SetScatteringCoefficient(0.025, 0.02, 0.015)
-    shafts.SetAbsorptionCoefficient(0.01, 0.005, 0.015)
+    shafts.GetMedium().SetDensityField(None)
+    shafts.GetMedium().SetBackgroundDensity(0.0)
+    shafts.GetMedium().SetScatteringCoefficient(0.025, 0.02, 0.015)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.01, 0.005, 0.015)
     expected, _, _ = cpp_reference(renderer, shafts)
     assert relative(halved, expected) < 1e-7
 
@@ -128,9 +128,9 @@ def test_a_uniform_field_is_the_homogeneous_medium():
 @pytest.mark.parametrize("kind", ["spot", "point", "directional"])
 def test_a_linear_field_agrees_with_the_numpy_reference(kind):
     renderer, window, info, shafts = scene(kind)
-    shafts.SetMediumDensity(field_image(linear))
-    shafts.SetMediumDensityScale(0.7)
-    shafts.SetMediumBackgroundDensity(0.2)
+    shafts.GetMedium().SetDensityField(field_image(linear))
+    shafts.GetMedium().SetDensityScale(0.7)
+    shafts.GetMedium().SetBackgroundDensity(0.2)
     values, _, _ = cpp_reference(renderer, shafts)
     expected = ref.in_scattered_radiance(
         rh.reference_camera(renderer, window), rh.reference_lights(info.light),
@@ -144,7 +144,7 @@ def test_a_linear_field_agrees_with_the_numpy_reference(kind):
 def test_a_cubic_field_on_a_rotated_grid_agrees_with_the_numpy_reference(cells):
     renderer, window, info, shafts = scene()
     field = rotated(cubic, 30.0)
-    shafts.SetMediumDensity(field_image(field, samples=7, cells=cells, angle_degrees=30.0))
+    shafts.GetMedium().SetDensityField(field_image(field, samples=7, cells=cells, angle_degrees=30.0))
     values, _, _ = cpp_reference(renderer, shafts)
     expected = ref.in_scattered_radiance(
         rh.reference_camera(renderer, window), rh.reference_lights(info.light),
@@ -157,7 +157,7 @@ def test_outside_the_field_the_density_is_the_background():
     renderer, window, info, shafts = scene()
     image = field_image(lambda x, y, z: np.ones_like(x), samples=2)
     image.SetOrigin(1000.0, 1000.0, 1000.0)
-    shafts.SetMediumDensity(image)
+    shafts.GetMedium().SetDensityField(image)
     values, _, _ = cpp_reference(renderer, shafts)
     assert values.max() == 0.0
 
@@ -168,10 +168,10 @@ def test_the_named_array_is_read():
     other = numpy_to_vtk(np.zeros(8), deep=True)
     other.SetName("empty")
     image.GetPointData().AddArray(other)
-    shafts.SetMediumDensity(image)
+    shafts.GetMedium().SetDensityField(image)
     ones, _, _ = cpp_reference(renderer, shafts)
-    shafts.SetMediumDensityArrayName("empty")
-    assert shafts.GetMediumDensityArrayName() == "empty"
+    shafts.GetMedium().SetDensityArrayName("empty")
+    assert shafts.GetMedium().GetDensityArrayName() == "empty"
     zeros, _, _ = cpp_reference(renderer, shafts)
     assert ones.max() > 0.0 and zeros.max() == 0.0
 
@@ -188,42 +188,42 @@ def refused(shafts, messages, call, *args):
 def test_bad_images_are_refused_and_the_previous_field_kept(messages):
     shafts = vtkLightShaftPass()
     good = field_image(linear, samples=3)
-    shafts.SetMediumDensity(good)
+    shafts.GetMedium().SetDensityField(good)
 
     no_scalars = vtkImageData()
     no_scalars.SetDimensions(4, 4, 4)
-    assert "has no point or cell scalars" in refused(shafts, messages, shafts.SetMediumDensity,
+    assert "has no point or cell scalars" in refused(shafts, messages, shafts.GetMedium().SetDensityField,
                                                      no_scalars)
     flat = field_image(linear, samples=3)
     flat.SetDimensions(3, 3, 1)
     flat.GetPointData().SetScalars(numpy_to_vtk(np.ones(9), deep=True))
     assert "not a 3D image (3 x 3 x 1 points" in refused(shafts, messages,
-                                                          shafts.SetMediumDensity, flat)
+                                                          shafts.GetMedium().SetDensityField, flat)
     for bad, words in ((math.nan, "nan at index 4"), (-0.5, "-0.5 at index 4")):
         image = field_image(linear, samples=3)
         image.GetPointData().GetScalars().SetValue(4, bad)
-        message = refused(shafts, messages, shafts.SetMediumDensity, image)
+        message = refused(shafts, messages, shafts.GetMedium().SetDensityField, image)
         assert words in message and "finite and not negative" in message
     huge = vtkImageData()
     huge.SetDimensions(513, 512, 512)  # checked before the values are read: no array this big
     huge.GetPointData().SetScalars(numpy_to_vtk(np.ones(1), deep=True))
     assert "more than the 134217728 (512^3)" in refused(shafts, messages,
-                                                        shafts.SetMediumDensity, huge)
+                                                        shafts.GetMedium().SetDensityField, huge)
     assert "no numeric point or cell array named \"nope\"" in refused(
-        shafts, messages, shafts.SetMediumDensityArrayName, "nope")
-    for setter in (shafts.SetMediumDensityScale, shafts.SetMediumBackgroundDensity):
+        shafts, messages, shafts.GetMedium().SetDensityArrayName, "nope")
+    for setter in (shafts.GetMedium().SetDensityScale, shafts.GetMedium().SetBackgroundDensity):
         assert "non-finite value refused" in refused(shafts, messages, setter, math.inf)
-    assert shafts.GetMediumDensity() is good
-    assert shafts.GetMediumDensityArrayName() == ""
-    shafts.SetMediumDensityScale(-1.0)
-    shafts.SetMediumBackgroundDensity(1e9)
-    assert (shafts.GetMediumDensityScale(), shafts.GetMediumBackgroundDensity()) == (0.0, 1e6)
-    shafts.SetMediumShadowResolution(-5)
-    assert shafts.GetMediumShadowResolution() == 0
-    shafts.SetMediumShadowResolution(100000)
-    assert shafts.GetMediumShadowResolution() == 256
-    shafts.SetMediumDensity(None)
-    assert shafts.GetMediumDensity() is None
+    assert shafts.GetMedium().GetDensityField() is good
+    assert shafts.GetMedium().GetDensityArrayName() == ""
+    shafts.GetMedium().SetDensityScale(-1.0)
+    shafts.GetMedium().SetBackgroundDensity(1e9)
+    assert (shafts.GetMedium().GetDensityScale(), shafts.GetMedium().GetBackgroundDensity()) == (0.0, 1e6)
+    shafts.GetMedium().SetFieldShadowResolution(-5)
+    assert shafts.GetMedium().GetFieldShadowResolution() == 0
+    shafts.GetMedium().SetFieldShadowResolution(100000)
+    assert shafts.GetMedium().GetFieldShadowResolution() == 256
+    shafts.GetMedium().SetDensityField(None)
+    assert shafts.GetMedium().GetDensityField() is None
 
 
 def marching(kind="spot", steps=256, width=96, height=72):
@@ -246,7 +246,7 @@ def test_ray_march_renders_a_uniform_field_as_the_homogeneous_medium(steps):
     # (vtkLightShaftShaders::DensitySteps); past it the picture came out 4x too dark.
     renderer, window, info, shafts = marching(steps=steps, width=48, height=36)
     homogeneous = rendered(window, shafts)
-    shafts.SetMediumDensity(field_image(lambda x, y, z: np.ones_like(x), samples=2))
+    shafts.GetMedium().SetDensityField(field_image(lambda x, y, z: np.ones_like(x), samples=2))
     uniform = rendered(window, shafts)
     assert homogeneous.max() > 0.0
     assert relative(uniform, homogeneous) < 1e-4
@@ -273,7 +273,7 @@ def test_ray_march_through_a_field_against_the_reference(kind, function):
     # light's cube map is not read back: exact visibility). Measured at 96x72, 256 steps:
     # 0.01% or less for each, the layer (density 1 below y = 2.5, 0 above) too.
     renderer, window, info, shafts = marching(kind)
-    shafts.SetMediumDensity(layer_image() if function == "layer" else field_image(function))
+    shafts.GetMedium().SetDensityField(layer_image() if function == "layer" else field_image(function))
     image = rendered(window, shafts)
     visibility = 0 if kind == "point" else 1
     expected, _, _ = cpp_reference(renderer, shafts, VisibilityMode=visibility)
@@ -286,7 +286,7 @@ def test_ray_march_through_a_field_against_the_reference(kind, function):
 def test_a_zero_field_scatters_nothing_and_changes_of_the_data_are_seen(messages):
     renderer, window, info, shafts = marching(width=48, height=36)
     image = field_image(lambda x, y, z: np.zeros_like(x), samples=3)
-    shafts.SetMediumDensity(image)
+    shafts.GetMedium().SetDensityField(image)
     assert rendered(window, shafts).max() == 0.0
     # The same image's values change (the pipeline's way): the next frame uses them.
     scalars = image.GetPointData().GetScalars()
@@ -308,20 +308,20 @@ def test_a_zero_field_scatters_nothing_and_changes_of_the_data_are_seen(messages
 def test_methods_without_a_field_give_way_to_ray_march_once(messages):
     renderer, window, info, shafts = scene(width=48, height=36)
     log = messages(shafts)
-    shafts.SetMediumDensity(field_image(linear, samples=3))
+    shafts.GetMedium().SetDensityField(field_image(linear, samples=3))
     shafts.SetMethod(vtkLightShaftPass.AUTOMATIC)
     window.Render()
-    assert shafts.GetLastMethod() == vtkLightShaftPass.RAY_MARCH and not log.warnings
+    assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.RAY_MARCH and not log.warnings
     for method in (vtkLightShaftPass.SLICES, vtkLightShaftPass.EPIPOLAR):
         shafts.SetMethod(method)
         window.Render()
-        assert shafts.GetLastMethod() == method and not log.warnings
+        assert shafts.GetLastFrame().GetMethod() == method and not log.warnings
     for method in (vtkLightShaftPass.LIGHT_VOLUME, vtkLightShaftPass.ANALYTIC,
                    vtkLightShaftPass.RADIAL_BLUR):
         shafts.SetMethod(method)
         for _ in range(2):
             window.Render()
-        assert shafts.GetLastMethod() == vtkLightShaftPass.RAY_MARCH
+        assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.RAY_MARCH
     assert len(log.warnings) == 1
     assert "rendered by SLICES, RAY_MARCH and EPIPOLAR" in log.warnings[0]
 
@@ -336,9 +336,9 @@ def test_the_scene_is_dimmed_by_the_field_not_by_the_coefficients():
     plain = rh.screenshot(window).astype(int)
     renderer.SetPass(shafts)
     homogeneous = rh.screenshot(window).astype(int)
-    shafts.SetMediumDensity(field_image(lambda x, y, z: np.zeros_like(x), samples=2))
+    shafts.GetMedium().SetDensityField(field_image(lambda x, y, z: np.zeros_like(x), samples=2))
     assert np.array_equal(rh.screenshot(window).astype(int), plain)
-    shafts.SetMediumDensity(field_image(lambda x, y, z: np.ones_like(x), samples=2))
+    shafts.GetMedium().SetDensityField(field_image(lambda x, y, z: np.ones_like(x), samples=2))
     uniform = rh.screenshot(window).astype(int)
     assert np.abs(uniform - homogeneous).max() <= 1
     assert np.abs(homogeneous - plain).max() > 20  # (the medium does dim and light the scene)
@@ -383,11 +383,11 @@ def test_the_light_leg_table_against_the_reference(kind, box, table_bytes):
     high = (3.0, 8.0, 3.0) if box == "tall" else (3.0, 3.0, 3.0)
     if kind == "point":
         info.light.SetPosition(0.5, 6.0, 0.0)  # outside the plume's box, inside the tall one
-    shafts.SetMediumDensity(plume_image(high=high))
+    shafts.GetMedium().SetDensityField(plume_image(high=high))
     image = rendered(window, shafts)
-    lights = shafts.GetLastNumberOfUsedLights()
-    assert [shafts.GetLastLightFieldShadowBytes(i) for i in range(lights)] == table_bytes
-    assert "field-shadow" in shafts.GetLastShaderVariant()
+    lights = shafts.GetLastFrame().GetNumberOfUsedLights()
+    assert [shafts.GetLastFrame().GetLightFieldShadowBytes(i) for i in range(lights)] == table_bytes
+    assert "field-shadow" in shafts.GetLastFrame().GetShaderVariant()
     visibility = 0 if kind in ("point", "pair") else 1
     expected, _, _ = cpp_reference(renderer, shafts, VisibilityMode=visibility)
     error, _ = ref.relative_rms_error(image, expected)
@@ -402,7 +402,7 @@ def test_final_quality_through_a_field_is_within_one_percent(density):
     # (density 1 below y = 2.5, 0 above) lit by the spot, each within 1% of the reference.
     renderer, window, info, shafts = scene("pair" if density == "plume" else "spot", 96, 72)
     shafts.SetQualityToFinal()
-    shafts.SetMediumDensity(plume_image() if density == "plume" else layer_image())
+    shafts.GetMedium().SetDensityField(plume_image() if density == "plume" else layer_image())
     image = rendered(window, shafts)
     visibility = 0 if density == "plume" else 1
     expected, _, _ = cpp_reference(renderer, shafts, VisibilityMode=visibility)
@@ -414,16 +414,16 @@ def test_final_quality_through_a_field_is_within_one_percent(density):
 def test_the_table_is_built_when_the_field_or_the_light_moves_only():
     renderer, window, info, shafts = marching(width=48, height=36)
     image = plume_image(samples=16)
-    shafts.SetMediumDensity(image)
+    shafts.GetMedium().SetDensityField(image)
 
     def built():
-        shafts.SetTime(shafts.GetTime() + 0.1)  # (a new frame of the shafts each time)
+        shafts.GetMedium().SetTime(shafts.GetMedium().GetTime() + 0.1)  # (a new frame of the shafts each time)
         window.Render()
-        return shafts.GetLastLightFieldShadowBuildTime(0) > 0.0
+        return shafts.GetLastFrame().GetLightFieldShadowBuildTime(0) > 0.0
 
     assert built() and not built()
-    shafts.SetMediumDensityScale(2.0)   # applied in the shader: nothing to build
-    shafts.SetMediumBackgroundDensity(0.1)
+    shafts.GetMedium().SetDensityScale(2.0)   # applied in the shader: nothing to build
+    shafts.GetMedium().SetBackgroundDensity(0.1)
     renderer.GetActiveCamera().Azimuth(10.0)
     assert not built()
     info.light.SetPosition(0.0, 6.0, 0.5)
@@ -432,14 +432,14 @@ def test_the_table_is_built_when_the_field_or_the_light_moves_only():
     scalars.SetValue(0, 2.0)
     scalars.Modified()
     assert built() and not built()
-    shafts.SetMediumShadowResolution(96)
+    shafts.GetMedium().SetFieldShadowResolution(96)
     assert built()
-    assert shafts.GetLastLightFieldShadowBytes(0) == 4 * 96 ** 3
-    shafts.SetMediumShadowResolution(0)  # the leg marched: no table
+    assert shafts.GetLastFrame().GetLightFieldShadowBytes(0) == 4 * 96 ** 3
+    shafts.GetMedium().SetFieldShadowResolution(0)  # the leg marched: no table
     assert not built()
-    assert shafts.GetLastLightFieldShadowBytes(0) == 0
-    assert "field-shadow" not in shafts.GetLastShaderVariant()
-    assert "field" in shafts.GetLastShaderVariant()
+    assert shafts.GetLastFrame().GetLightFieldShadowBytes(0) == 0
+    assert "field-shadow" not in shafts.GetLastFrame().GetShaderVariant()
+    assert "field" in shafts.GetLastFrame().GetShaderVariant()
 
 
 def test_a_pipeline_drives_the_field(messages):
@@ -458,14 +458,14 @@ def test_a_pipeline_drives_the_field(messages):
     scale.SetShift(10.0)  # (the wavelet dips below 0 at the box's corners)
     scale.SetScale(0.01)
     scale.SetOutputScalarTypeToFloat()
-    shafts.SetMediumDensityConnection(scale.GetOutputPort())
-    assert shafts.GetMediumDensityConnection() is scale.GetOutputPort()
+    shafts.GetMedium().SetDensityFieldConnection(scale.GetOutputPort())
+    assert shafts.GetMedium().GetDensityFieldConnection() is scale.GetOutputPort()
     first = rendered(window, shafts)
-    assert first.max() > 0.0 and shafts.GetLastLightFieldShadowBuildTime(0) > 0.0
-    assert shafts.GetMediumDensity() is scale.GetOutput()
+    assert first.max() > 0.0 and shafts.GetLastFrame().GetLightFieldShadowBuildTime(0) > 0.0
+    assert shafts.GetMedium().GetDensityField() is scale.GetOutput()
     wavelet.SetMaximum(1000.0)  # (the pipeline's way: no call to the pass)
     denser = rendered(window, shafts)
-    assert shafts.GetLastLightFieldShadowBuildTime(0) > 0.0
+    assert shafts.GetLastFrame().GetLightFieldShadowBuildTime(0) > 0.0
     assert not np.array_equal(denser, first)
     # The same as setting that pipeline's output image directly.
     direct = vtkImageData()
@@ -473,13 +473,13 @@ def test_a_pipeline_drives_the_field(messages):
     assert np.array_equal(rendered(window, shafts), denser) and not log.errors
     # An output that is not an image: one error, the last field kept.
     sphere = vtkSphereSource()
-    shafts.SetMediumDensityConnection(sphere.GetOutputPort())
+    shafts.GetMedium().SetDensityFieldConnection(sphere.GetOutputPort())
     kept = rendered(window, shafts)
     rendered(window, shafts)
     assert len(log.errors) == 1 and "vtkPolyData, not a vtkImageData" in log.errors[0]
     assert np.array_equal(kept, denser)
-    shafts.SetMediumDensity(direct)
-    assert shafts.GetMediumDensityConnection() is None
+    shafts.GetMedium().SetDensityField(direct)
+    assert shafts.GetMedium().GetDensityFieldConnection() is None
     assert np.array_equal(rendered(window, shafts), denser)
 
 
@@ -502,10 +502,10 @@ def test_slices_and_epipolar_through_a_field_against_the_reference(method, kind,
         shafts.SetNumberOfSteps(64)
         shafts.SetEpipolarStep(4)
         bound = 0.015
-    shafts.SetMediumDensity(layer_image() if density == "layer" else plume_image())
+    shafts.GetMedium().SetDensityField(layer_image() if density == "layer" else plume_image())
     image = rendered(window, shafts)
-    assert shafts.GetLastMethod() == getattr(vtkLightShaftPass, method)
-    assert "field-shadow" in shafts.GetLastShaderVariant()
+    assert shafts.GetLastFrame().GetMethod() == getattr(vtkLightShaftPass, method)
+    assert "field-shadow" in shafts.GetLastFrame().GetShaderVariant()
     visibility = 0 if kind == "pair" else 1
     expected, _, _ = cpp_reference(renderer, shafts, VisibilityMode=visibility)
     error, _ = ref.relative_rms_error(image, expected)
@@ -521,17 +521,17 @@ def test_a_target_error_is_not_applied_to_a_field_and_says_so_once(messages):
     log = messages(shafts)
     shafts.SetTargetError(0.02)
     window.Render()
-    assert shafts.GetLastPredictedError() > 0.0
+    assert shafts.GetLastFrame().GetPredictedError() > 0.0
     shafts.SetMethod(vtkLightShaftPass.SLICES)
-    shafts.SetMediumDensity(plume_image(samples=8))
+    shafts.GetMedium().SetDensityField(plume_image(samples=8))
     for _ in range(2):
         window.Render()
-    assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES
-    assert shafts.GetLastPredictedError() == -1.0
+    assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.SLICES
+    assert shafts.GetLastFrame().GetPredictedError() == -1.0
     assert len(log.warnings) == 1 and "no feature for a medium from data" in log.warnings[0]
-    shafts.SetMediumDensity(None)
+    shafts.GetMedium().SetDensityField(None)
     window.Render()
-    assert shafts.GetLastPredictedError() > 0.0
+    assert shafts.GetLastFrame().GetPredictedError() > 0.0
 
 
 def test_an_image_over_the_gl_3d_texture_size_is_resampled_with_one_warning(messages):
@@ -551,7 +551,7 @@ def test_an_image_over_the_gl_3d_texture_size_is_resampled_with_one_warning(mess
     values = linear(*grid).transpose(2, 1, 0)  # (z, y, x): x fastest when raveled
     image.GetPointData().SetScalars(numpy_to_vtk(values.ravel(), deep=True))
     log = messages(shafts)
-    shafts.SetMediumDensity(image)
+    shafts.GetMedium().SetDensityField(image)
     picture = rendered(window, shafts)
     rendered(window, shafts)
     assert len(log.warnings) == 1 and f"resampled to {limit} along that axis" in log.warnings[0]

@@ -20,7 +20,7 @@ import re
 import numpy as np
 import pytest
 
-from lightshafts import scenes, vtkLightShaftPass
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass
 
 import lightshaft_reference as ref
 import render_helpers as rh
@@ -52,7 +52,7 @@ def render_scene(prepare=None, width=320, height=240, **params):
         renderer.ResetCameraClippingRange()
     renderer.SetPass(shafts)
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     return renderer, window, info, shafts
 
 
@@ -78,7 +78,7 @@ def test_method_defaults_and_names():
     assert p.GetLightVolumeResolution() == 256
     assert (p.GetDecay(), p.GetDensity(), p.GetWeight()) == (1.0, 1.0, 1.0)
     assert p.GetRadialJitter()
-    assert p.GetLastMethod() == -1
+    assert p.GetLastFrame().GetMethod() == -1
     for name, value in METHODS.items():
         assert vtkLightShaftPass.GetMethodName(value) == name
     assert vtkLightShaftPass.GetMethodName(99) == "none"
@@ -104,10 +104,10 @@ def test_named_method_setters_and_clamping():
                                     ("Decay", -1.0, 2.0, (0.0, 1.0)),
                                     ("Density", -1.0, 2.0, (0.0, 1.0)),
                                     ("Weight", -1.0, 2.0, (0.0, 1.0))]:
-        getattr(p, "Set" + name)(low)
-        assert getattr(p, "Get" + name)() == expect[0], name
-        getattr(p, "Set" + name)(high)
-        assert getattr(p, "Get" + name)() == expect[1], name
+        getattr(parameter_owner(p, name), "Set" + name)(low)
+        assert getattr(parameter_owner(p, name), "Get" + name)() == expect[0], name
+        getattr(parameter_owner(p, name), "Set" + name)(high)
+        assert getattr(parameter_owner(p, name), "Get" + name)() == expect[1], name
     p.RadialJitterOff()
     assert not p.GetRadialJitter()
 
@@ -116,10 +116,10 @@ def test_named_method_setters_and_clamping():
 def test_non_finite_radial_controls_refused(messages, name):
     p = vtkLightShaftPass()
     log = messages(p)
-    getattr(p, "Set" + name)(0.5)
+    getattr(parameter_owner(p, name), "Set" + name)(0.5)
     for bad in (math.nan, math.inf):
-        getattr(p, "Set" + name)(bad)
-        assert getattr(p, "Get" + name)() == 0.5
+        getattr(parameter_owner(p, name), "Set" + name)(bad)
+        assert getattr(parameter_owner(p, name), "Get" + name)() == 0.5
     assert len(log.errors) == 2 and all(name in m for m in log.errors)
 
 
@@ -133,9 +133,9 @@ def test_ray_march_matches_the_reference_and_converges():
     for steps in (8, 32, 128, 512):
         shafts.SetNumberOfSteps(steps)
         window.Render()
-        assert shafts.GetLastMethod() == vtkLightShaftPass.RAY_MARCH
-        assert shafts.GetLastNumberOfSlicesDrawn() == 1  # one slab over the lit range
-        assert shafts.GetLastShadowMapRendered()
+        assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.RAY_MARCH
+        assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() == 1  # one slab over the lit range
+        assert shafts.GetLastFrame().GetShadowMapRendered()
         errors.append(error(renderer, window, info, shafts, reference=reference))
     print("ray march 8/32/128/512 steps, relative RMS:", [f"{e:.4%}" for e in errors])
     assert all(a > b for a, b in zip(errors, errors[1:])), errors
@@ -167,10 +167,10 @@ def test_epipolar_matches_the_reference_and_converges(view):
     renderer, window, info, shafts = render_scene(prepare, Method=vtkLightShaftPass.EPIPOLAR,
                                                   NumberOfSteps=64)
     assert light_on_screen(renderer, info) == (view == "radial")
-    assert shafts.GetLastMethod() == vtkLightShaftPass.EPIPOLAR
-    assert shafts.GetLastShadowMapRendered()
+    assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.EPIPOLAR
+    assert shafts.GetLastFrame().GetShadowMapRendered()
     # coordinates, coarse, refine, fine; the marks of the pixels marched themselves
-    assert shafts.GetLastNumberOfPostPasses() == 5
+    assert shafts.GetLastFrame().GetNumberOfPostPasses() == 5
     reference = rh.reference_for(renderer, window, info, shafts)
     errors = []
     for lines, samples, step in ((128, 256, 16), (512, 512, 16), (1024, 1024, 1)):
@@ -215,9 +215,9 @@ def test_light_volume_matches_the_reference_and_converges(view):
             camera.SetParallelScale(3.0)
     renderer, window, info, shafts = render_scene(prepare, Method=vtkLightShaftPass.LIGHT_VOLUME,
                                                   ShadowMapSize=2048)
-    assert shafts.GetLastMethod() == vtkLightShaftPass.LIGHT_VOLUME
-    assert shafts.GetLastShadowMapRendered()
-    assert shafts.GetLastNumberOfPostPasses() >= 1  # the crossings' pass
+    assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.LIGHT_VOLUME
+    assert shafts.GetLastFrame().GetShadowMapRendered()
+    assert shafts.GetLastFrame().GetNumberOfPostPasses() >= 1  # the crossings' pass
     reference = rh.reference_for(renderer, window, info, shafts)
     errors = []
     for cells in (32, 256, 1024):
@@ -248,7 +248,7 @@ def test_light_volume_through_many_shadow_walls():
                                 LightVolumeResolution=1024)
     renderer.SetPass(shafts)
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     image = rh.in_scatter(shafts)
     assert np.all(np.isfinite(image)) and image.min() >= 0.0
     reference = rh.scene_reference(renderer, shafts)
@@ -294,24 +294,24 @@ def test_light_volume_counts_the_medium_in_front_of_the_near_plane():
 def test_light_volume_gives_way_to_the_march_for_a_cookie_or_noise(feature):
     VTK_OUTPUT.expect(LIGHT_VOLUME_GIVES_WAY)
     renderer, window, info, shafts = render_scene(Method=vtkLightShaftPass.LIGHT_VOLUME)
-    assert shafts.GetLastLightMethod(0) == vtkLightShaftPass.LIGHT_VOLUME
+    assert shafts.GetLastFrame().GetLightMethod(0) == vtkLightShaftPass.LIGHT_VOLUME
     if feature == "cookie":
         shafts.SetCookie(rh.uniform_cookie())
     else:
-        shafts.SetNoiseAmplitude(0.5)
+        shafts.GetMedium().SetNoiseAmplitude(0.5)
     for _ in range(3):
         window.Render()
-        assert shafts.GetLastLightMethod(0) == vtkLightShaftPass.RAY_MARCH
-        assert feature in shafts.GetLastShaderVariant()
+        assert shafts.GetLastFrame().GetLightMethod(0) == vtkLightShaftPass.RAY_MARCH
+        assert feature in shafts.GetLastFrame().GetShaderVariant()
     said = [text for _, text in VTK_OUTPUT.messages if re.search(LIGHT_VOLUME_GIVES_WAY, text)]
     assert len(said) == 1 and feature in said[0]
     # Without it, the light volume again.
     if feature == "cookie":
         shafts.SetCookie(None)
     else:
-        shafts.SetNoiseAmplitude(0.0)
+        shafts.GetMedium().SetNoiseAmplitude(0.0)
     window.Render()
-    assert shafts.GetLastLightMethod(0) == vtkLightShaftPass.LIGHT_VOLUME
+    assert shafts.GetLastFrame().GetLightMethod(0) == vtkLightShaftPass.LIGHT_VOLUME
 
 
 def test_epipolar_with_every_sample_marched_is_the_ray_march():
@@ -337,11 +337,11 @@ def test_interleaved_sampling_beats_the_same_steps_without_it():
                                                   NumberOfSteps=16, InterleaveSize=1)
     reference = rh.reference_for(renderer, window, info, shafts)
     plain = error(renderer, window, info, shafts, reference=reference)
-    assert shafts.GetLastNumberOfPostPasses() == 0
+    assert shafts.GetLastFrame().GetNumberOfPostPasses() == 0
     for size in (2, 3, 4):
         shafts.SetInterleaveSize(size)
         window.Render()
-        assert shafts.GetLastNumberOfPostPasses() == 2  # the two gather passes
+        assert shafts.GetLastFrame().GetNumberOfPostPasses() == 2  # the two gather passes
         interleaved = error(renderer, window, info, shafts, reference=reference)
         print(f"16 steps, {size}x{size} interleave: {interleaved:.3%} (none: {plain:.3%})")
         assert interleaved < 0.8 * plain, (size, interleaved, plain)
@@ -353,22 +353,22 @@ def test_interleaved_sampling_beats_the_same_steps_without_it():
 def test_analytic_is_exact_without_shadows(case):
     def prepare(renderer, info, shafts):
         if case == "henyey-greenstein":
-            shafts.SetPhaseFunctionToHenyeyGreenstein()
-            shafts.SetAnisotropy(0.6)
+            shafts.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
+            shafts.GetMedium().SetAnisotropy(0.6)
         elif case == "rayleigh":
-            shafts.SetPhaseFunctionToRayleigh()
+            shafts.GetMedium().SetPhaseFunctionToRayleigh()
         elif case == "inverse-square":
             info.light.SetAttenuationValues(0.0, 0.0, 1.0)
         elif case == "spot-exponent":
             info.light.SetExponent(5.0)
         elif case == "thick":
-            shafts.SetScatteringCoefficient(2.0)
+            shafts.GetMedium().SetScatteringCoefficient(2.0)
         elif case == "no-extinction":
-            shafts.SetScatteringCoefficient(1e-7)
-            shafts.SetAbsorptionCoefficient(0.0)
+            shafts.GetMedium().SetScatteringCoefficient(1e-7)
+            shafts.GetMedium().SetAbsorptionCoefficient(0.0)
     renderer, window, info, shafts = render_scene(prepare, Method=vtkLightShaftPass.ANALYTIC)
-    assert shafts.GetLastMethod() == vtkLightShaftPass.ANALYTIC
-    assert not shafts.GetLastShadowMapRendered()
+    assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.ANALYTIC
+    assert not shafts.GetLastFrame().GetShadowMapRendered()
     relative = error(renderer, window, info, shafts, shadows=False)
     print(f"analytic, {case}: {relative:.2e}")
     assert relative < 1e-3
@@ -380,21 +380,21 @@ def remove_props(renderer, info, shafts):
 
 def test_automatic_takes_the_exact_path_when_nothing_shadows():
     renderer, window, info, shafts = render_scene(remove_props, Method=vtkLightShaftPass.AUTOMATIC)
-    assert shafts.GetLastMethod() == vtkLightShaftPass.ANALYTIC
-    assert shafts.GetLastNumberOfShadowCasters() == 0
+    assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.ANALYTIC
+    assert shafts.GetLastFrame().GetNumberOfShadowCasters() == 0
     reference = rh.reference_for(renderer, window, info, shafts, with_props=False)
     assert error(renderer, window, info, shafts, reference=reference) < 1e-3
 
 
 def test_automatic_uses_slices_with_casters_or_noise():
     renderer, window, info, shafts = render_scene(Method=vtkLightShaftPass.AUTOMATIC)
-    assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES
-    assert shafts.GetLastShadowMapRendered()
+    assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.SLICES
+    assert shafts.GetLastFrame().GetShadowMapRendered()
     renderer.RemoveAllViewProps()
-    shafts.SetNoiseAmplitude(0.5)
+    shafts.GetMedium().SetNoiseAmplitude(0.5)
     window.Render()
-    assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES
-    assert "noise" in shafts.GetLastShaderVariant()
+    assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.SLICES
+    assert "noise" in shafts.GetLastFrame().GetShaderVariant()
 
 
 def test_analytic_warns_once_when_props_could_shadow(messages):
@@ -409,10 +409,10 @@ def test_analytic_warns_once_when_props_could_shadow(messages):
 
 def test_radial_blur_shadows_approximately():
     renderer, window, info, shafts = render_scene(Method=vtkLightShaftPass.RADIAL_BLUR)
-    assert shafts.GetLastMethod() == vtkLightShaftPass.RADIAL_BLUR
-    assert not shafts.GetLastShadowMapRendered()
-    assert shafts.GetLastNumberOfPostPasses() == 2  # occlusion pre-pass and radial walk
-    assert shafts.GetLastRadialGuardBand() == 1.0  # the screen's own depth (the default)
+    assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.RADIAL_BLUR
+    assert not shafts.GetLastFrame().GetShadowMapRendered()
+    assert shafts.GetLastFrame().GetNumberOfPostPasses() == 2  # occlusion pre-pass and radial walk
+    assert shafts.GetLastFrame().GetRadialGuardBand() == 1.0  # the screen's own depth (the default)
     reference = rh.reference_for(renderer, window, info, shafts)
     radial = error(renderer, window, info, shafts, reference=reference)
     blurred = rh.in_scatter(shafts)
@@ -429,7 +429,7 @@ def test_radial_blur_shadows_approximately():
 def test_radial_blur_is_the_analytic_image_when_nothing_can_occlude():
     renderer, window, info, shafts = render_scene(remove_props,
                                                   Method=vtkLightShaftPass.RADIAL_BLUR)
-    assert shafts.GetLastNumberOfPostPasses() == 0  # no occlusion pass, no walk
+    assert shafts.GetLastFrame().GetNumberOfPostPasses() == 0  # no occlusion pass, no walk
     radial = rh.in_scatter(shafts)
     shafts.SetMethodToAnalytic()
     window.Render()
@@ -453,7 +453,7 @@ def test_radial_blur_weight_zero_and_light_behind_the_camera_give_the_analytic_i
     shafts.SetMethodToRadialBlur()
     shafts.SetWeight(1.0)
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     assert analytic.max() > 0.0
     np.testing.assert_array_equal(rh.in_scatter(shafts), analytic)
 
@@ -482,9 +482,9 @@ def test_radial_blur_guard_band_catches_occluders_off_the_screen():
         camera.SetViewAngle(30.0)
     renderer, window, info, shafts = render_scene(prepare, Method=vtkLightShaftPass.RADIAL_BLUR,
                                                   RadialGuardBand=2.0)
-    assert shafts.GetLastRadialGuardBand() == 2.0
+    assert shafts.GetLastFrame().GetRadialGuardBand() == 2.0
     # The casters' depth over the guard band, the occlusion pre-pass and the radial walk.
-    assert shafts.GetLastNumberOfPostPasses() == 3
+    assert shafts.GetLastFrame().GetNumberOfPostPasses() == 3
     for point in [(0.0, 0.7, 0.0), (0.8, 1.5, 0.0), (0.0, 0.7, 0.8)]:  # the sphere's bottom
         renderer.SetWorldPoint(*point, 1.0)
         renderer.WorldToDisplay()
@@ -493,8 +493,8 @@ def test_radial_blur_guard_band_catches_occluders_off_the_screen():
     guarded = error(renderer, window, info, shafts, reference=reference)
     shafts.SetRadialGuardBand(1.0)
     window.Render()
-    assert shafts.GetLastRadialGuardBand() == 1.0
-    assert shafts.GetLastNumberOfPostPasses() == 2  # no guard-band render
+    assert shafts.GetLastFrame().GetRadialGuardBand() == 1.0
+    assert shafts.GetLastFrame().GetNumberOfPostPasses() == 2  # no guard-band render
     screen_only = error(renderer, window, info, shafts, reference=reference)
     shafts.SetMethodToAnalytic()
     window.Render()
@@ -510,7 +510,7 @@ def test_radial_blur_guard_band_catches_occluders_off_the_screen():
 def test_radial_guard_band_parameter(messages):
     p = vtkLightShaftPass()
     log = messages(p)
-    assert p.GetRadialGuardBand() == 1.0 and p.GetLastRadialGuardBand() == 0.0
+    assert p.GetRadialGuardBand() == 1.0 and p.GetLastFrame().GetRadialGuardBand() == 0.0
     p.SetRadialGuardBand(0.5)
     assert p.GetRadialGuardBand() == 1.0
     p.SetRadialGuardBand(9.0)
@@ -526,7 +526,7 @@ def test_radial_controls_change_the_image_deterministically():
     np.testing.assert_array_equal(first, rh.in_scatter(shafts))  # stochastic, but fixed
     for name, value in [("Decay", 0.9), ("Density", 0.5), ("RadialSamples", 8),
                         ("RadialJitter", False)]:
-        getattr(shafts, "Set" + name)(value)
+        getattr(parameter_owner(shafts, name), "Set" + name)(value)
         window.Render()
         assert not np.array_equal(first, rh.in_scatter(shafts)), name
         first = rh.in_scatter(shafts)
@@ -542,15 +542,15 @@ def test_zero_medium_and_zero_exposure_leave_the_scene_identical(method):
     plain = rh.screenshot(window)
     shafts = vtkLightShaftPass()
     shafts.SetMethod(METHODS[method])
-    shafts.SetScatteringCoefficient(0.0)
+    shafts.GetMedium().SetScatteringCoefficient(0.0)
     renderer.SetPass(shafts)
     window.Render()
     np.testing.assert_array_equal(rh.screenshot(window), plain)
-    shafts.SetScatteringCoefficient(0.1)
+    shafts.GetMedium().SetScatteringCoefficient(0.1)
     shafts.SetExposure(0.0)
     shafts.AttenuateSceneOff()
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     assert rh.in_scatter(shafts).max() > 0.0
     np.testing.assert_array_equal(rh.screenshot(window), plain)
 
@@ -566,18 +566,18 @@ def test_every_method_survives_resizes_and_viewports_without_gl_errors(method):
     for size in [(160, 120), (1, 1), (97, 61), (160, 120)]:
         window.SetSize(*size)
         window.Render()
-        assert shafts.GetLastGLErrorCount() == 0
+        assert shafts.GetLastFrame().GetGLErrorCount() == 0
         image = rh.in_scatter(shafts)
         assert image.shape == (size[1], size[0], 3)
         assert np.all(np.isfinite(image))
     renderer.SetViewport(0.25, 0.0, 1.0, 0.5)
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
-    assert tuple(shafts.GetLastViewportSize()) == (120, 60)
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
+    assert tuple(shafts.GetLastFrame().GetViewportSize()) == (120, 60)
     shafts.ReleaseGraphicsResources(window)
     shafts.ReleaseGraphicsResources(window)
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
 
 
 def test_each_method_compiles_only_what_it_uses():
@@ -587,14 +587,14 @@ def test_each_method_compiles_only_what_it_uses():
         shafts.SetMethod(value)
         shafts.JitterOn()
         window.Render()
-        variants[name] = shafts.GetLastShaderVariant()
+        variants[name] = shafts.GetLastFrame().GetShaderVariant()
         assert variants[name].startswith("method=")
     assert "shadow" in variants["slices"] and "jitter" in variants["slices"]
     assert "shadow" in variants["ray-march"] and "jitter" not in variants["ray-march"]
     assert "shadow" in variants["epipolar"] and "jitter" not in variants["epipolar"]
     # LIGHT_VOLUME (the last) reads the map in its mesh only: its integrand has no lookup.
     assert "shadow-volume" in variants["light-volume"]
-    source = shafts.GetLastSliceShaderSource()
+    source = shafts.GetLastFrame().GetSliceShaderSource()
     assert "#define LIGHTSHAFT_SHADOW_VOLUME" in source
     assert "#define LIGHTSHAFT_SHADOW\n" not in source
     for name in ("radial-blur", "analytic"):
@@ -602,7 +602,7 @@ def test_each_method_compiles_only_what_it_uses():
     assert "LIGHTSHAFT_RAY_MARCH" not in variants["slices"]
     shafts.SetMethodToAnalytic()
     window.Render()
-    source = shafts.GetLastSliceShaderSource()
+    source = shafts.GetLastFrame().GetSliceShaderSource()
     assert "#define LIGHTSHAFT_ANALYTIC" in source
     assert "#define LIGHTSHAFT_SHADOW" not in source
 
@@ -626,7 +626,7 @@ def test_cookie_colours_the_shafts_in_every_method(method):
     plain = rh.in_scatter(shafts)
     shafts.SetCookie(cookie)
     window.Render()
-    assert "cookie" in shafts.GetLastShaderVariant()
+    assert "cookie" in shafts.GetLastFrame().GetShaderVariant()
     coloured = rh.in_scatter(shafts)
     assert np.all(np.isfinite(coloured))
     # Green is gone, red and blue each keep a part of the uncoloured shafts.
@@ -639,12 +639,12 @@ def test_cookie_colours_the_shafts_in_every_method(method):
 def test_noise_keeps_the_mean_in_every_method(method):
     renderer, window, info, shafts = render_scene(Method=METHODS[method])
     plain = rh.in_scatter(shafts).sum()
-    shafts.SetNoiseAmplitude(1.0)
+    shafts.GetMedium().SetNoiseAmplitude(1.0)
     window.Render()
     noisy = rh.in_scatter(shafts)
-    assert "noise" in shafts.GetLastShaderVariant()
+    assert "noise" in shafts.GetLastFrame().GetShaderVariant()
     assert abs(noisy.sum() / plain - 1.0) < 0.05
-    shafts.SetTime(3.0)
+    shafts.GetMedium().SetTime(3.0)
     window.Render()
     assert not np.array_equal(noisy, rh.in_scatter(shafts))
 
@@ -659,8 +659,8 @@ def test_lattice_converges_to_the_per_pixel_slabs_and_keeps_its_accuracy_bound()
     for n in (8, 32, 128):
         shafts.SetLatticeResolution(n)
         window.Render()
-        assert "lattice" in shafts.GetLastShaderVariant()
-        assert shafts.GetLastNumberOfSlicesDrawn() == 128
+        assert "lattice" in shafts.GetLastFrame().GetShaderVariant()
+        assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() == 128
         lattice = rh.in_scatter(shafts)
         differences.append(np.sqrt(((lattice - per_pixel) ** 2).sum() / (per_pixel ** 2).sum()))
         # Measured 1.0% / 0.06% / 0.004% from the per-pixel slabs, and 1.04% / 0.32% / 0.32%
@@ -680,8 +680,8 @@ def test_lattice_with_a_constant_integrand_is_the_per_pixel_image():
     def prepare(renderer, info, shafts):
         renderer.RemoveAllViewProps()
         info.light.SetExponent(0.0)
-        shafts.SetScatteringCoefficient(1e-6)
-        shafts.SetAbsorptionCoefficient(0.0)
+        shafts.GetMedium().SetScatteringCoefficient(1e-6)
+        shafts.GetMedium().SetAbsorptionCoefficient(0.0)
     renderer, window, info, shafts = render_scene(prepare)
     per_pixel = rh.in_scatter(shafts)
     lit = per_pixel[..., 0] > 0
@@ -697,7 +697,7 @@ def test_lattice_only_changes_the_slices():
     before = rh.in_scatter(shafts)
     shafts.SetLatticeResolution(16)
     window.Render()
-    assert "lattice" not in shafts.GetLastShaderVariant()
+    assert "lattice" not in shafts.GetLastFrame().GetShaderVariant()
     np.testing.assert_array_equal(before, rh.in_scatter(shafts))
     p = vtkLightShaftPass()
     assert p.GetLatticeResolution() == 0

@@ -41,18 +41,18 @@ def render(multisamples, configure=None):
     back = rh.screenshot(window)
     front = rh.screenshot(window, front=True)
     if shafts:
-        assert shafts.GetLastGLErrorCount() == 0
+        assert shafts.GetLastFrame().GetGLErrorCount() == 0
     window.SetMultiSamples(0)
     return back, front, shafts
 
 
 def medium_off(shafts):
-    shafts.SetScatteringCoefficient(0.0)
+    shafts.GetMedium().SetScatteringCoefficient(0.0)
 
 
 def vanishing_medium(shafts):
-    shafts.SetScatteringCoefficient(1e-9)
-    shafts.SetAbsorptionCoefficient(1e-9)
+    shafts.GetMedium().SetScatteringCoefficient(1e-9)
+    shafts.GetMedium().SetAbsorptionCoefficient(1e-9)
 
 
 def vanishing_medium_not_attenuated(shafts):
@@ -68,8 +68,8 @@ def test_no_medium_is_the_plain_render(multisamples, configure):
     back, front, shafts = render(multisamples, configure)
     if configure is not medium_off:
         # The window's samples (llvmpipe gives 4 for any request).
-        assert (shafts.GetLastMultiSamples() > 1) == (multisamples > 0)
-        assert shafts.GetLastNumberOfSlicesDrawn() > 0
+        assert (shafts.GetLastFrame().GetMultiSamples() > 1) == (multisamples > 0)
+        assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() > 0
     np.testing.assert_array_equal(back, plain_back)
     np.testing.assert_array_equal(front, plain_front)
 
@@ -84,7 +84,7 @@ def test_multisampling_changes_the_plain_render():
 @pytest.mark.parametrize("multisamples", [4, 8])
 def test_shafts_keep_the_antialiasing_where_they_add_nothing(multisamples):
     def shafted(shafts):
-        shafts.SetScatteringCoefficient(0.1)
+        shafts.GetMedium().SetScatteringCoefficient(0.1)
         shafts.AttenuateSceneOff()
         shafts.SetBlurRadius(0)
     plain, _, _ = render(multisamples)

@@ -1,9 +1,9 @@
-"""One source for the parameters' defaults and ranges: vtkLightShaftPass itself.
+"""One source for the parameters' defaults and ranges: vtkLightShaftPass and vtkLightShaftMedium.
 
-The pass's header declares each parameter's default and clamp; the ParaView XML, the header's
-own documentation and the README's parameter table are checked against what the pass does (a
-fresh pass's values, and the range read by setting values far outside it), so that none of
-them can drift.
+The classes' headers declare each parameter's default and clamp; the ParaView XML, the headers'
+own documentation and the parameter table of docs/parameters.md are checked against what the
+classes do (a fresh object's values, and the range read by setting values far outside it), so
+that none of them can drift.
 """
 
 import math
@@ -13,7 +13,7 @@ import xml.etree.ElementTree as ElementTree
 
 import pytest
 
-from lightshafts import vtkLightShaftPass
+from lightshafts import parameter_owner, vtkLightShaftMedium, vtkLightShaftPass
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 INTEGER_PROBE = 2 ** 31 - 1
@@ -33,7 +33,7 @@ def default(name):
 def clamp_range(name, integer):
     """(low, high) of the first component, from setting values far outside the range."""
     shafts = vtkLightShaftPass()
-    setter, getter = getattr(shafts, "Set" + name), getattr(shafts, "Get" + name)
+    setter, getter = getattr(parameter_owner(shafts, name), "Set" + name), getattr(parameter_owner(shafts, name), "Get" + name)
     n = len(default(name))
     probe = INTEGER_PROBE if integer else FLOAT_PROBE
     setter(*([-probe] * n))
@@ -59,7 +59,7 @@ def paraview_properties():
         if prop.tag not in ("IntVectorProperty", "DoubleVectorProperty"):
             continue
         name = PARAVIEW_NAMES.get(prop.get("name"), prop.get("name"))
-        if not hasattr(shafts, "Get" + name) or not hasattr(shafts, "Set" + name):
+        if not has_parameter(name) or not hasattr(parameter_owner(shafts, name), "Get" + name):
             continue
         defaults = tuple(float(v) for v in prop.get("default_values").split())
         domain = prop.find("IntRangeDomain")
@@ -100,28 +100,57 @@ def test_paraview_defaults_and_ranges_are_the_pass(name, kind, defaults, low, hi
 
 
 def header_groups():
-    """The documented groups (///@{ ... ///@}) of the pass's header: (comment, code)."""
-    with open(os.path.join(ROOT, "plugin", "vtkLightShaftPass.h")) as f:
-        text = f.read()
-    return re.findall(r"///@\{\s*/\*\*(.*?)\*/(.*?)///@\}", text, re.S)
+    """The documented groups (///@{ ... ///@}) of the public headers: (class, comment, code)."""
+    groups = []
+    for header, cls in HEADERS.items():
+        with open(os.path.join(ROOT, "plugin", header)) as f:
+            text = f.read()
+        groups += [(cls, comment, code) for comment, code in
+                   re.findall(r"///@\{\s*/\*\*(.*?)\*/(.*?)///@\}", text, re.S)]
+    return groups
+
+
+def group_setters(code):
+    """The parameters a group sets, in order (overloads and SetXToY shortcuts once)."""
+    names = []
+    for a, b in re.findall(r"vtkSet(?:Clamp)?Macro\((\w+),|void Set(\w+)\(", code):
+        name = a or b
+        if name not in names and not any(name.startswith(n + "To") for n in names):
+            names.append(name)
+    return names
+
+
+def documented_defaults(comment):
+    """The values after "Default is" / "Defaults are", in order (None for words such as nullptr
+    that are no number; a vector's first component)."""
+    match = re.search(r"Defaults? (?:is|are) (.*?)\.(?:\s|$)", comment.replace("\n", " ").replace(
+        "*", " ") + " ")
+    if not match:
+        return []
+    text = re.sub(r"\((?![-0-9])[^)]*\)", "", match.group(1))  # (remarks), not (vectors)
+    items = re.split(r",\s*(?![^()]*\))|\s+and\s+", re.sub(r"\s+", " ", text).strip())
+    values = []
+    for item in items:
+        word = item.strip().lstrip("(").split(",")[0].split()[0] if item.strip() else ""
+        values.append(word.rstrip(")"))
+    return values
 
 
 def header_defaults():
-    """{parameter: the number the header's documentation gives as its default}."""
+    """{parameter: the number the headers' documentation gives as its default}."""
     found = {}
-    for comment, code in header_groups():
-        match = re.search(r"Defaults? (?:is|are) \(?(-?[0-9.e+-]+|on|off|[A-Z_0-9]+\b)",
-                          comment.replace("\n", " "))
-        setters = re.findall(r"vtkSet(?:Clamp)?Macro\((\w+),|void Set(\w+)\(", code)
-        names = [a or b for a, b in setters]
-        if match and names:
-            word = match.group(1).rstrip(".")
+    for cls, comment, code in header_groups():
+        names = group_setters(code)
+        words = documented_defaults(comment)
+        if len(names) > 1 and words:
+            assert len(words) == len(names), (names, words)
+        for name, word in zip(names, words):
             if word in ("on", "off"):
-                found[names[0]] = float(word == "on")
-            elif re.fullmatch(r"[A-Z_0-9]+", word) and hasattr(vtkLightShaftPass, word):
-                found[names[0]] = float(getattr(vtkLightShaftPass, word))
+                found[name] = float(word == "on")
+            elif re.fullmatch(r"[A-Z_0-9]+", word) and hasattr(cls, word):
+                found[name] = float(getattr(cls, word))
             elif re.fullmatch(r"-?[0-9.e+-]+", word):
-                found[names[0]] = float(word)
+                found[name] = float(word)
     return found
 
 
@@ -129,7 +158,7 @@ HEADER = header_defaults()
 
 
 def test_the_header_documents_the_defaults():
-    assert len(HEADER) >= 25
+    assert len(HEADER) >= 40
 
 
 @pytest.mark.parametrize("name", sorted(HEADER))
@@ -138,35 +167,39 @@ def test_header_documented_default_is_the_pass(name):
 
 
 def header_clamps():
-    with open(os.path.join(ROOT, "plugin", "vtkLightShaftPass.h")) as f:
-        text = f.read()
-    return re.findall(r"vtkSetClampMacro\((\w+), (\w+), (\w+), (\w+)\);", text)
+    clamps = []
+    for header, cls in HEADERS.items():
+        with open(os.path.join(ROOT, "plugin", header)) as f:
+            text = f.read()
+        clamps += [(cls,) + c for c in
+                   re.findall(r"vtkSetClampMacro\((\w+), (\w+), (\w+), (\w+)\);", text)]
+    return clamps
 
 
-@pytest.mark.parametrize("name,kind,low,high", header_clamps(), ids=lambda v: str(v))
-def test_header_clamps_are_the_documented_ranges(name, kind, low, high):
-    value = (lambda v: getattr(vtkLightShaftPass, v) if v.isidentifier() else float(v))
+@pytest.mark.parametrize("cls,name,kind,low,high", header_clamps(), ids=lambda v: str(v))
+def test_header_clamps_are_the_documented_ranges(cls, name, kind, low, high):
+    value = (lambda v: getattr(cls, v) if v.isidentifier() else float(v))
     assert clamp_range(name, kind == "int") == (value(low), value(high))
     # The group's comment states that range.
-    for comment, code in header_groups():
+    for _, comment, code in header_groups():
         if f"vtkSetClampMacro({name}," in code and re.search(r"in \[", comment):
-            stated = re.search(r"in \[(-?[0-9.e+-]+), (-?[0-9.e+-]+)\]", comment)
-            assert stated, name
-            assert (float(stated.group(1)), float(stated.group(2))) == \
-                (float(value(low)), float(value(high)))
+            stated = re.findall(r"\[(-?[0-9.e+-]+), (-?[0-9.e+-]+)\]", comment)
+            assert (float(value(low)), float(value(high))) in \
+                [(float(a), float(b)) for a, b in stated], name
 
 
 def readme_rows():
-    """(setters, range text, default text) of the README's parameter table."""
-    with open(os.path.join(ROOT, "README.md")) as f:
+    """(setters, range text, default text) of the parameter tables (docs/parameters.md: one
+    for the pass, one for the medium)."""
+    with open(os.path.join(ROOT, "docs", "parameters.md")) as f:
         text = f.read()
-    table = text[text.index("| parameter | unit / range | default | meaning |"):]
-    table = table[:table.index("\n\n")]
     rows = []
-    for line in table.splitlines()[2:]:
-        cells = [c.strip() for c in line.strip("|").split("|")]
-        setters = re.findall(r"`Set(\w+)\(", cells[0])
-        rows.append((setters, cells[1], cells[2]))
+    for table in text.split("| parameter | unit / range | default | meaning |")[1:]:
+        table = table[:table.index("\n\n")] if "\n\n" in table else table
+        for line in table.splitlines()[2:]:
+            cells = [c.strip() for c in line.strip("|").split("|")]
+            setters = re.findall(r"`Set(\w+)\(", cells[0])
+            rows.append((setters, cells[1], cells[2]))
     return rows
 
 
@@ -177,7 +210,7 @@ def test_readme_ranges_and_defaults_are_the_pass():
         interval = re.search(r"\[(-?[0-9.e+-]+), (-?[0-9.e+-]+)\]", range_text)
         defaults = [d.strip() for d in default_text.split("(")[0].split(",")]
         for i, name in enumerate(setters):
-            if not hasattr(vtkLightShaftPass(), "Get" + name):
+            if not has_parameter(name):
                 continue
             integer = isinstance(default(name)[0], (int, bool)) and not isinstance(
                 default(name)[0], float)

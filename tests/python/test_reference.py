@@ -36,8 +36,8 @@ def scene(width=120, height=90, sphere=True, **medium):
         renderer.RemoveActor(info.actors[0])
         info.spheres = []
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(*medium.get("sigma_s", (0.05, 0.04, 0.03)))
-    shafts.SetAbsorptionCoefficient(*medium.get("sigma_a", (0.02, 0.01, 0.03)))
+    shafts.GetMedium().SetScatteringCoefficient(*medium.get("sigma_s", (0.05, 0.04, 0.03)))
+    shafts.GetMedium().SetAbsorptionCoefficient(*medium.get("sigma_a", (0.02, 0.01, 0.03)))
     renderer.SetPass(shafts)
     window.Render()  # VTK resets the clipping range; both references read it afterwards
     return renderer, window, info, shafts
@@ -108,7 +108,7 @@ def test_scalings_and_zero_scattering():
     info.light.SetIntensity(2.0)
     doubled, _, _ = cpp_reference(renderer, shafts)
     np.testing.assert_allclose(doubled, 2.0 * base, rtol=1e-9, atol=1e-300)
-    shafts.SetScatteringCoefficient(0.0)
+    shafts.GetMedium().SetScatteringCoefficient(0.0)
     zero, _, _ = cpp_reference(renderer, shafts)
     assert np.all(zero == 0.0)
 
@@ -150,9 +150,9 @@ def test_cookie_and_noise_against_the_pass():
     error, _ = ref.relative_rms_error(rh.in_scatter(shafts), values)
     assert error < 0.02
     shafts.SetCookie(None)
-    shafts.SetNoiseAmplitude(1.0)
-    shafts.SetNoiseScale(1.5)
-    shafts.SetTime(4.0)
+    shafts.GetMedium().SetNoiseAmplitude(1.0)
+    shafts.GetMedium().SetNoiseScale(1.5)
+    shafts.GetMedium().SetTime(4.0)
     window.Render()
     # Noise makes every ray's integrand wiggle: a looser tolerance keeps the reference quick.
     values, _, _ = cpp_reference(renderer, shafts, RelativeTolerance=1e-5)
@@ -172,7 +172,7 @@ def test_shadow_map_visibility_separates_shadow_map_error(size):
     shafts.SetBlurRadius(0)
     shafts.SetShadowMapSize(size)
     window.Render()
-    assert shafts.GetLastShadowMapRendered()
+    assert shafts.GetLastFrame().GetShadowMapRendered()
     measured = rh.in_scatter(shafts)
     exact, _, _ = cpp_reference(renderer, shafts)
     same_map, _, reference = cpp_reference(renderer, shafts, VisibilityMode=1,
@@ -190,7 +190,7 @@ def test_shadow_map_visibility_separates_shadow_map_error(size):
 
 def test_shadow_map_visibility_needs_a_shadow_map(messages, vtk_messages):
     renderer, window, info, shafts = scene(40, 30)
-    shafts.SetScatteringCoefficient(0.0)  # nothing scatters: no shadow map is rendered
+    shafts.GetMedium().SetScatteringCoefficient(0.0)  # nothing scatters: no shadow map is rendered
     window.Render()
     reference = vtkLightShaftReference()
     log = messages(reference)
@@ -237,8 +237,8 @@ def kind_scene(kind, width=120, height=90, sphere=True, phase="isotropic", **med
     for light in lights:
         shafts.AddLight(light)
     if phase == "hg":
-        shafts.SetPhaseFunctionToHenyeyGreenstein()
-        shafts.SetAnisotropy(0.6)
+        shafts.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
+        shafts.GetMedium().SetAnisotropy(0.6)
     window.Render()
     return renderer, window, info, shafts, lights
 
@@ -364,8 +364,8 @@ def test_directional_light_moved_back_dims_by_the_extinction_of_the_distance():
     camera.SetPosition(0.0, 3.0, 16.0)
     camera.SetFocalPoint(0.0, 2.5, 0.0)
     renderer.ResetCameraClippingRange()
-    shafts.SetPhaseFunctionToHenyeyGreenstein()
-    shafts.SetAnisotropy(-0.3)
+    shafts.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
+    shafts.GetMedium().SetAnisotropy(-0.3)
     window.Render()
     base, _, _ = cpp_reference(renderer, shafts)
     _, on_floor = rh.surface_points(renderer, window, info)
@@ -378,8 +378,8 @@ def test_directional_light_moved_back_dims_by_the_extinction_of_the_distance():
     light.SetPosition(*(position - distance * axis))
     light.SetFocalPoint(*(np.asarray(light.GetFocalPoint()) - distance * axis))
     moved, _, _ = cpp_reference(renderer, shafts)
-    sigma_t = np.asarray(shafts.GetScatteringCoefficient()) + np.asarray(
-        shafts.GetAbsorptionCoefficient())
+    sigma_t = np.asarray(shafts.GetMedium().GetScatteringCoefficient()) + np.asarray(
+        shafts.GetMedium().GetAbsorptionCoefficient())
     np.testing.assert_allclose(moved[stays], base[stays] * np.exp(-sigma_t * distance),
                                rtol=1e-10, atol=0.0)
 
@@ -462,7 +462,7 @@ def test_shadow_map_visibility_of_a_directional_light():
     shafts.SetBlurRadius(0)
     shafts.SetShadowMapSize(16)
     window.Render()
-    assert shafts.GetLastShadowMapRendered()
+    assert shafts.GetLastFrame().GetShadowMapRendered()
     measured = rh.in_scatter(shafts)
     exact, _, _ = cpp_reference(renderer, shafts)
     same_map, _, reference = cpp_reference(renderer, shafts, VisibilityMode=1,
@@ -480,7 +480,7 @@ def test_shadow_map_visibility_of_a_directional_light():
 def test_shadow_map_visibility_refuses_point_lights_and_several(kind, message, messages,
                                                                  vtk_messages):
     renderer, window, info, shafts, lights = kind_scene(kind, 40, 30)
-    assert shafts.GetLastNumberOfUsedLights() == len(lights)
+    assert shafts.GetLastFrame().GetNumberOfUsedLights() == len(lights)
     reference = vtkLightShaftReference()
     log = messages(reference)
     reference.SetRenderer(renderer)

@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 import lightshafts
-from lightshafts import scenes, vtkLightShaftPass
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass
 import vtkmodules.vtkInteractionStyle  # noqa: F401  (the interactor's default style)
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkRenderingCore import vtkPropPicker
@@ -42,7 +42,7 @@ def still_scene(width=WIDTH, height=HEIGHT, **params):
     info = scenes.sphere_and_floor(renderer)
     shafts = rh.plain_slab_pass(shadow_map=2048)
     for name, value in params.items():
-        getattr(shafts, "Set" + name)(value)
+        getattr(parameter_owner(shafts, name), "Set" + name)(value)
     shafts.SetLight(info.light)
     renderer.SetPass(shafts)
     return renderer, window, info, shafts
@@ -68,7 +68,7 @@ def error(image, expected):
 
 def render(window, shafts):
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     return rh.in_scatter(shafts)
 
 
@@ -84,9 +84,9 @@ def test_defaults_ranges_and_read_outs_when_off():
     assert shafts.GetRefinementFrames() == 4096
     renderer, window, info, shafts = still_scene()
     render(window, shafts)
-    assert shafts.GetLastRefinementEstimates() == 0
-    assert not shafts.GetLastRefinementConverged()
-    assert not shafts.GetLastInScatterReused()
+    assert shafts.GetLastFrame().GetRefinementEstimates() == 0
+    assert not shafts.GetLastFrame().GetRefinementConverged()
+    assert not shafts.GetLastFrame().GetInScatterReused()
 
 
 # --- convergence ----------------------------------------------------------------------------
@@ -97,8 +97,8 @@ def test_the_first_estimate_is_the_picture_without_refinement(method):
     plain = render(window, shafts)
     shafts.ProgressiveRefinementOn()
     first = render(window, shafts)
-    assert shafts.GetLastRefinementEstimates() == 1
-    assert "refine" not in shafts.GetLastShaderVariant()
+    assert shafts.GetLastFrame().GetRefinementEstimates() == 1
+    assert "refine" not in shafts.GetLastFrame().GetShaderVariant()
     assert np.array_equal(first, plain)
 
 
@@ -111,7 +111,7 @@ def test_the_estimates_converge_to_the_reference(method):
     for estimates in range(1, 33):
         image = render(window, shafts)
         expected = reference(renderer, window, info, shafts) if expected is None else expected
-        assert shafts.GetLastRefinementEstimates() == estimates
+        assert shafts.GetLastFrame().GetRefinementEstimates() == estimates
         if estimates in (1, 2, 4, 8, 16, 32):
             errors[estimates] = error(image, expected)
     print(method, {k: f"{100 * v:.3f}%" for k, v in errors.items()})
@@ -119,8 +119,8 @@ def test_the_estimates_converge_to_the_reference(method):
     for fewer, more in zip(counts, counts[1:]):
         assert errors[more] <= 1.05 * errors[fewer]
     assert errors[32] < errors[1] / 4
-    assert shafts.GetLastRefinementConverged()
-    assert "refine" in shafts.GetLastShaderVariant()
+    assert shafts.GetLastFrame().GetRefinementConverged()
+    assert "refine" in shafts.GetLastFrame().GetShaderVariant()
 
 
 def test_estimates_of_four_steps_come_close_to_one_frame_of_sixty_four():
@@ -157,7 +157,7 @@ def test_every_light_kind_refines(kind):
     assert np.array_equal(render(window, shafts), baseline)
     frames = lightshafts.render_converged(window, shafts)
     refined = rh.in_scatter(shafts)
-    assert frames == 16 and shafts.GetLastNumberOfUsedLights() == len(lights)
+    assert frames == 16 and shafts.GetLastFrame().GetNumberOfUsedLights() == len(lights)
     before, _ = ref.relative_rms_error(baseline, fine)
     after, _ = ref.relative_rms_error(refined, fine)
     print(kind, f"{100 * before:.3f}% -> {100 * after:.3f}% against 256 steps")
@@ -177,10 +177,10 @@ def test_a_converged_picture_is_reused_and_does_not_change():
     for _ in range(3):
         assert np.array_equal(render(window, shafts), converged)
         assert np.array_equal(rh.screenshot(window), picture)
-        assert shafts.GetLastInScatterReused() and shafts.GetLastRefinementConverged()
-        assert shafts.GetLastRefinementEstimates() == 6
-        assert shafts.GetLastNumberOfUsedLights() == 1
-        assert shafts.GetLastMethod() == vtkLightShaftPass.RAY_MARCH
+        assert shafts.GetLastFrame().GetInScatterReused() and shafts.GetLastFrame().GetRefinementConverged()
+        assert shafts.GetLastFrame().GetRefinementEstimates() == 6
+        assert shafts.GetLastFrame().GetNumberOfUsedLights() == 1
+        assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.RAY_MARCH
     assert len(needed) == 5
     assert lightshafts.render_converged(window, shafts) == 1
 
@@ -191,7 +191,7 @@ def test_surfaces_shadowed_keep_their_light_computed_and_the_picture_stays():
     lightshafts.render_converged(window, shafts)
     converged, picture = rh.in_scatter(shafts), rh.screenshot(window)
     render(window, shafts)
-    assert shafts.GetLastRefinementConverged() and not shafts.GetLastInScatterReused()
+    assert shafts.GetLastFrame().GetRefinementConverged() and not shafts.GetLastFrame().GetInScatterReused()
     assert np.array_equal(rh.in_scatter(shafts), converged)
     assert np.array_equal(rh.screenshot(window), picture)
 
@@ -210,10 +210,10 @@ def test_methods_with_nothing_to_shift_converge_at_once(method):
     needed = []
     shafts.AddObserver(vtkLightShaftPass.RefinementNeededEvent, lambda *_: needed.append(1))
     assert lightshafts.render_converged(window, shafts) == 1
-    assert shafts.GetLastRefinementEstimates() == 1 and not needed
+    assert shafts.GetLastFrame().GetRefinementEstimates() == 1 and not needed
     assert np.array_equal(rh.in_scatter(shafts), plain)
     render(window, shafts)
-    assert shafts.GetLastInScatterReused()
+    assert shafts.GetLastFrame().GetInScatterReused()
 
 
 # --- what starts a new picture --------------------------------------------------------------
@@ -234,7 +234,7 @@ CHANGES = {
     "camera": lambda r, i, s, w: r.GetActiveCamera().Azimuth(0.01),
     "window size": lambda r, i, s, w: w.SetSize(WIDTH + 2, HEIGHT),
     "a parameter": lambda r, i, s, w: s.SetNumberOfSteps(5),
-    "Time": lambda r, i, s, w: s.SetTime(0.5),
+    "Time": lambda r, i, s, w: s.GetMedium().SetTime(0.5),
     "light intensity": lambda r, i, s, w: i.light.SetIntensity(0.9),
     "light position": lambda r, i, s, w: i.light.SetPosition(0.5, 6.01, 0.0),
     "a prop's transform": _move_actor,
@@ -249,11 +249,11 @@ def test_every_change_starts_a_new_picture(change):
     renderer, window, info, shafts = still_scene(RefinementFrames=4, **SAMPLED["ray-march"])
     shafts.SetLight(None)  # the renderer's spot and point lights: one more counts
     lightshafts.render_converged(window, shafts)
-    assert shafts.GetLastRefinementConverged()
+    assert shafts.GetLastFrame().GetRefinementConverged()
     CHANGES[change](renderer, info, shafts, window)
     image = render(window, shafts)
-    assert shafts.GetLastRefinementEstimates() == 1
-    assert not shafts.GetLastInScatterReused() and not shafts.GetLastRefinementConverged()
+    assert shafts.GetLastFrame().GetRefinementEstimates() == 1
+    assert not shafts.GetLastFrame().GetInScatterReused() and not shafts.GetLastFrame().GetRefinementConverged()
     # The new first estimate is the new picture without refinement.
     shafts.ProgressiveRefinementOff()
     assert np.array_equal(render(window, shafts), image)
@@ -265,7 +265,7 @@ def test_setting_a_parameter_to_its_value_changes_nothing():
     shafts.SetNumberOfSteps(4)
     info.light.SetIntensity(info.light.GetIntensity())
     render(window, shafts)
-    assert shafts.GetLastInScatterReused()
+    assert shafts.GetLastFrame().GetInScatterReused()
 
 
 def test_picking_in_the_middle_of_refinement_picks_and_refinement_goes_on():
@@ -279,7 +279,7 @@ def test_picking_in_the_middle_of_refinement_picks_and_refinement_goes_on():
     assert picked is not None and picked.GetMapper().GetInputAlgorithm().GetClassName() in (
         "vtkSphereSource", "vtkPlaneSource")
     render(window, shafts)
-    assert shafts.GetLastRefinementEstimates() == 4
+    assert shafts.GetLastFrame().GetRefinementEstimates() == 4
 
 
 def test_downsampled_and_multisampled_refinement():
@@ -287,8 +287,8 @@ def test_downsampled_and_multisampled_refinement():
     window.SetMultiSamples(4)
     try:
         frames = lightshafts.render_converged(window, shafts)
-        assert frames == 16 and shafts.GetLastRefinementConverged()
-        assert shafts.GetLastMultiSamples() in (0, 4)
+        assert frames == 16 and shafts.GetLastFrame().GetRefinementConverged()
+        assert shafts.GetLastFrame().GetMultiSamples() in (0, 4)
         assert np.all(np.isfinite(rh.in_scatter(shafts)))
     finally:
         window.SetMultiSamples(0)
@@ -309,6 +309,6 @@ def test_refine_while_still_renders_from_timers_until_converged():
         if len(timers) < fired:
             break
         interactor.InvokeEvent(vtkCommand.TimerEvent)  # the event loop fires the timer
-    assert shafts.GetLastRefinementConverged()
-    assert shafts.GetLastRefinementEstimates() == 5
+    assert shafts.GetLastFrame().GetRefinementConverged()
+    assert shafts.GetLastFrame().GetRefinementEstimates() == 5
     assert len(timers) == 4  # none once converged

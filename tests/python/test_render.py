@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from lightshafts import scenes, vtkLightShaftPass
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkRenderingCore import (
@@ -22,11 +22,11 @@ def shaft_scene(width=200, height=150, **params):
     renderer, window = rh.make_window(width, height)
     info = scenes.sphere_and_floor(renderer, sphere_resolution=64)
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05)
-    shafts.SetAbsorptionCoefficient(0.01)
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.01)
     shafts.SetExposure(40.0)
     for name, value in params.items():
-        getattr(shafts, "Set" + name)(value)
+        getattr(parameter_owner(shafts, name), "Set" + name)(value)
     renderer.SetPass(shafts)
     return renderer, window, info, shafts
 
@@ -35,15 +35,15 @@ def test_render_smoke_and_statistics():
     renderer, window, _, shafts = shaft_scene(NumberOfSlices=64)
     window.Render()
     assert shafts.GetJitter()  # default: one more slab, each pixel's boundaries shifted
-    assert shafts.GetLastNumberOfSlicesDrawn() == 65
+    assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() == 65
     shafts.JitterOff()
     window.Render()
-    assert shafts.GetLastNumberOfSlicesDrawn() == 64
-    assert shafts.GetLastShadowMapRendered()
-    near, far = shafts.GetLastSliceDepthRange()
+    assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() == 64
+    assert shafts.GetLastFrame().GetShadowMapRendered()
+    near, far = shafts.GetLastFrame().GetSliceDepthRange()
     assert 0 < near < far
-    assert shafts.GetLastGLErrorCount() == 0
-    assert shafts.GetLastUsedLight() is renderer.GetLights().GetItemAsObject(0)
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetUsedLight() is renderer.GetLights().GetItemAsObject(0)
     pixels = rh.screenshot(window)
     assert pixels.max() > 0
 
@@ -78,13 +78,13 @@ def test_zero_medium_is_pixel_identical_to_delegate():
     window.Render()
     plain = rh.screenshot(window)
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.0)
-    shafts.SetAbsorptionCoefficient(0.0)
+    shafts.GetMedium().SetScatteringCoefficient(0.0)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.0)
     renderer.SetPass(shafts)
     window.Render()
     np.testing.assert_array_equal(rh.screenshot(window), plain)
-    assert shafts.GetLastNumberOfSlicesDrawn() == 0
-    assert not shafts.GetLastShadowMapRendered()
+    assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() == 0
+    assert not shafts.GetLastFrame().GetShadowMapRendered()
     assert np.all(rh.in_scatter(shafts) == 0.0)
 
 
@@ -100,7 +100,7 @@ def test_composite_path_preserves_scene_exactly():
     shafts.AttenuateSceneOff()
     renderer.SetPass(shafts)
     window.Render()
-    assert shafts.GetLastNumberOfSlicesDrawn() > 0
+    assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() > 0
     np.testing.assert_array_equal(rh.screenshot(window), plain)
 
 
@@ -112,8 +112,8 @@ def test_aerial_perspective_matches_transmittance():
     window.Render()
     plain = rh.screenshot(window).astype(float)
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.0)
-    shafts.SetAbsorptionCoefficient(0.05, 0.1, 0.2)
+    shafts.GetMedium().SetScatteringCoefficient(0.0)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.05, 0.1, 0.2)
     renderer.SetPass(shafts)
     window.Render()
     fogged = rh.screenshot(window).astype(float)
@@ -124,7 +124,7 @@ def test_aerial_perspective_matches_transmittance():
     # 8-bit rounding (and the tessellated sphere's silhouette) aside, they agree.
     close = np.abs(fogged - expected) <= 1.0
     assert close.mean() > 0.995
-    assert shafts.GetLastNumberOfSlicesDrawn() == 0
+    assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() == 0
 
 
 def test_no_light_renders_unchanged_and_warns_once(messages):
@@ -140,7 +140,7 @@ def test_no_light_renders_unchanged_and_warns_once(messages):
         window.Render()
     np.testing.assert_array_equal(rh.screenshot(window), plain)
     assert len(log.warnings) == 1
-    assert shafts.GetLastUsedLight() is None
+    assert shafts.GetLastFrame().GetUsedLight() is None
     # A given light that is switched off: same answer, one more warning.
     info.light.SwitchOff()
     shafts.SetLight(info.light)
@@ -155,7 +155,7 @@ def test_light_chosen_explicitly_over_automatic():
     other = scenes.add_spotlight(renderer, (0, 8, 8), (0, 0, 0), cone_angle=10)
     shafts.SetLight(other)
     window.Render()
-    assert shafts.GetLastUsedLight() is other
+    assert shafts.GetLastFrame().GetUsedLight() is other
 
 
 def test_many_frames_and_resizes_without_gl_errors():
@@ -164,13 +164,13 @@ def test_many_frames_and_resizes_without_gl_errors():
         window.SetSize(*size)
         for _ in range(3):
             window.Render()
-            assert shafts.GetLastGLErrorCount() == 0
+            assert shafts.GetLastFrame().GetGLErrorCount() == 0
         assert rh.in_scatter(shafts).shape == (size[1], size[0], 3)
-    shafts.SetPhaseFunctionToHenyeyGreenstein()
+    shafts.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
     shafts.SetShadowMapSize(256)
     for _ in range(3):
         window.Render()
-        assert shafts.GetLastGLErrorCount() == 0
+        assert shafts.GetLastFrame().GetGLErrorCount() == 0
 
 
 def test_release_graphics_resources_is_idempotent():
@@ -181,7 +181,7 @@ def test_release_graphics_resources_is_idempotent():
     shafts.ReleaseGraphicsResources(window)
     window.Render()
     np.testing.assert_allclose(rh.in_scatter(shafts), first, rtol=1e-5, atol=1e-9)
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
 
 
 @pytest.mark.parametrize("delegate", ["default", "camera and sequence"])
@@ -199,7 +199,7 @@ def test_overlay_stays_on_top_unfogged(delegate):
         renderer.AddViewProp(text)
         if with_pass:
             shafts = vtkLightShaftPass()
-            shafts.SetScatteringCoefficient(0.2)
+            shafts.GetMedium().SetScatteringCoefficient(0.2)
             shafts.AttenuateSceneOff()
             shafts.SetExposure(100.0)
             if delegate != "default":
@@ -242,7 +242,7 @@ def test_the_renderers_fxaa_applies_as_without_the_pass(medium):
         shafts = None
         if with_pass:
             shafts = vtkLightShaftPass()
-            shafts.SetScatteringCoefficient(medium)
+            shafts.GetMedium().SetScatteringCoefficient(medium)
             shafts.SetNumberOfSlices(64)
             renderer.SetPass(shafts)
         window.Render()
@@ -252,14 +252,14 @@ def test_the_renderers_fxaa_applies_as_without_the_pass(medium):
 
     aliased, _ = render(True, False)
     antialiased, shafts = render(True, True)
-    assert shafts.GetLastRendererFXAA() and shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetRendererFXAA() and shafts.GetLastFrame().GetGLErrorCount() == 0
     changed = np.abs(antialiased.astype(int) - aliased).max(axis=-1) > 0
     assert 0.001 < changed.mean() < 0.2  # the edges, not the whole picture
     if medium == 0.0:
         np.testing.assert_array_equal(antialiased, render(False, True)[0])
     # A multisampled target is antialiased already: FXAA is not applied there.
     _, shafts = render(True, True, samples=4)
-    assert not shafts.GetLastRendererFXAA() and shafts.GetLastGLErrorCount() == 0
+    assert not shafts.GetLastFrame().GetRendererFXAA() and shafts.GetLastFrame().GetGLErrorCount() == 0
 
 
 def test_user_render_steps_delegate_keeps_its_overlay():
@@ -269,7 +269,7 @@ def test_user_render_steps_delegate_keeps_its_overlay():
     overlay = steps.GetOverlayPass()
     window.Render()
     assert steps.GetOverlayPass() is overlay
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
 
 
 def test_viewport_is_honoured():
@@ -282,11 +282,11 @@ def test_viewport_is_honoured():
     right.SetBackground(0.2, 0.3, 0.4)
     window.AddRenderer(right)
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05)
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
     shafts.SetNumberOfSlices(256)
     renderer.SetPass(shafts)
     window.Render()
-    assert tuple(shafts.GetLastViewportSize()) == (width // 2, height)
+    assert tuple(shafts.GetLastFrame().GetViewportSize()) == (width // 2, height)
     measured = rh.in_scatter(shafts)
     assert measured.shape == (height, width // 2, 3)
     reference = rh.reference_for(renderer, window, info, shafts, size=(width // 2, height))
@@ -330,7 +330,7 @@ def test_translucent_and_volume_props_still_render():
             renderer.SetPass(vtkRenderStepsPass())
         else:
             shafts = vtkLightShaftPass()
-            shafts.SetScatteringCoefficient(1e-6)  # medium present, effect negligible
+            shafts.GetMedium().SetScatteringCoefficient(1e-6)  # medium present, effect negligible
             shafts.AttenuateSceneOff()
             renderer.SetPass(shafts)
         window.Render()
@@ -338,7 +338,7 @@ def test_translucent_and_volume_props_still_render():
 
     plain, _ = render(False)
     through_pass, shafts = render(True)
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     # Same picture (the medium is almost empty), translucent sphere and volume included.
     assert np.abs(through_pass.astype(int) - plain.astype(int)).max() <= 1
 
@@ -348,8 +348,8 @@ def test_light_volume_outside_view_skips_work():
     info.light.SetPosition(0.0, 6.0, 40.0)  # behind the camera, aiming away
     info.light.SetFocalPoint(0.0, 6.0, 80.0)
     window.Render()
-    assert shafts.GetLastNumberOfSlicesDrawn() == 0
-    assert not shafts.GetLastShadowMapRendered()
+    assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() == 0
+    assert not shafts.GetLastFrame().GetShadowMapRendered()
     assert np.all(rh.in_scatter(shafts) == 0.0)
 
 
@@ -357,14 +357,14 @@ def test_shadow_surfaces_agree_with_the_shafts_shadow():
     renderer, window = rh.make_window(320, 240)
     info = scenes.sphere_and_floor(renderer)
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05)
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
     shafts.SetExposure(0.0)  # look at the surfaces alone
     shafts.AttenuateSceneOff()
     shafts.SetShadowMapSize(2048)
     shafts.ShadowSurfacesOn()
     renderer.SetPass(shafts)
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     pixels = rh.screenshot(window).max(axis=-1)
     lit, dark = rh.floor_shadow_masks(renderer, window, info)
     assert lit.sum() > 1000 and dark.sum() > 200
@@ -401,8 +401,8 @@ def test_nested_in_another_image_pass_renders_into_its_framebuffer():
     tone.SetDelegatePass(shafts)
     renderer.SetPass(tone)
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
-    assert tuple(shafts.GetLastViewportSize()) == (200, 150)
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
+    assert tuple(shafts.GetLastFrame().GetViewportSize()) == (200, 150)
     np.testing.assert_allclose(rh.in_scatter(shafts), reference, rtol=1e-5, atol=1e-9)
     with_shafts = rh.screenshot(window).astype(int).sum()
     shafts.SetExposure(0.0)

@@ -27,7 +27,7 @@ def scene(with_pass, multisamples=0):
     shafts = None
     if with_pass:
         shafts = vtkLightShaftPass()
-        shafts.SetScatteringCoefficient(0.08)
+        shafts.GetMedium().SetScatteringCoefficient(0.08)
         renderer.SetPass(shafts)
     window.Render()
     return renderer, window, info, shafts
@@ -76,14 +76,14 @@ def test_hardware_selection_is_unchanged(field, area):
 def test_selection_then_the_shafts_come_back():
     renderer, window, info, shafts = scene(True)
     before = rh.screenshot(window)
-    slabs = shafts.GetLastNumberOfSlicesDrawn()
-    assert slabs > 0 and not shafts.GetLastPlainScene()
+    slabs = shafts.GetLastFrame().GetNumberOfSlicesDrawn()
+    assert slabs > 0 and not shafts.GetLastFrame().GetPlainScene()
     hits = select(renderer, (0, 0, WIDTH - 1, HEIGHT - 1), FIELDS["cells"])
     assert len(hits) == 2
-    assert shafts.GetLastPlainScene()
+    assert shafts.GetLastFrame().GetPlainScene()
     window.Render()
-    assert not shafts.GetLastPlainScene()
-    assert shafts.GetLastNumberOfSlicesDrawn() == slabs
+    assert not shafts.GetLastFrame().GetPlainScene()
+    assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() == slabs
     np.testing.assert_array_equal(rh.screenshot(window), before)
 
 
@@ -212,6 +212,6 @@ def test_depth_only_passes_get_the_plain_scene():
         assert baker.GetHasShadows()
         pictures.append(rh.screenshot(window))
         if nest:
-            assert nested.GetLastPlainScene()
-            assert nested.GetLastMethod() == -1 and nested.GetLastNumberOfSlicesDrawn() == 0
+            assert nested.GetLastFrame().GetPlainScene()
+            assert nested.GetLastFrame().GetMethod() == -1 and nested.GetLastFrame().GetNumberOfSlicesDrawn() == 0
     np.testing.assert_array_equal(pictures[1], pictures[0])

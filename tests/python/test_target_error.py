@@ -27,7 +27,7 @@ import sys
 import numpy as np
 import pytest
 
-from lightshafts import scenes, vtkLightShaftPass
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass
 
 import lightshaft_reference as ref
 import render_helpers as rh
@@ -47,13 +47,13 @@ def make_scene(width=WIDTH, height=HEIGHT, **params):
     renderer, window = rh.make_window(width, height)
     info = scenes.sphere_and_floor(renderer)
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
-    shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
+    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.02, 0.01, 0.03)
     for name, value in params.items():
-        getattr(shafts, "Set" + name)(value)
+        getattr(parameter_owner(shafts, name), "Set" + name)(value)
     renderer.SetPass(shafts)
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     return renderer, window, info, shafts
 
 
@@ -73,8 +73,8 @@ def reference():
 @pytest.mark.parametrize("target", TARGETS)
 def test_target_is_met(reference, target):
     _, _, _, shafts = make_scene(TargetError=target)
-    setting = shafts.GetLastErrorModelSetting()
-    predicted = shafts.GetLastPredictedError()
+    setting = shafts.GetLastFrame().GetErrorModelSetting()
+    predicted = shafts.GetLastFrame().GetPredictedError()
     # Within the target, or the most accurate setting when none is predicted to be.
     assert setting >= 0 and predicted > 0.0
     assert predicted <= target or setting == number_of_settings() - 1
@@ -88,8 +88,8 @@ def test_smaller_targets_cost_more():
     for target in (0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 1e-4):
         shafts.SetTargetError(target)
         window.Render()
-        settings.append(shafts.GetLastErrorModelSetting())
-        predictions.append(shafts.GetLastPredictedError())
+        settings.append(shafts.GetLastFrame().GetErrorModelSetting())
+        predictions.append(shafts.GetLastFrame().GetPredictedError())
     assert settings == sorted(settings)
     assert all(b <= a or s == settings[-1] for a, b, s in
                zip(predictions, predictions[1:], settings[1:]))
@@ -101,23 +101,23 @@ def test_parameters_set_are_kept():
     before = rh.in_scatter(shafts)
     shafts.SetTargetError(0.005)
     window.Render()
-    chosen = shafts.GetLastErrorModelSetting()
+    chosen = shafts.GetLastFrame().GetErrorModelSetting()
     name = vtkLightShaftPass.GetErrorModelSettingName(chosen)
     kind, samples = re.match(r"([SMEV])(\d+)", name).groups()
     if kind == "S":  # slices
-        assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES
-        assert shafts.GetLastNumberOfSlicesDrawn() in (int(samples), int(samples) + 1)
+        assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.SLICES
+        assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() in (int(samples), int(samples) + 1)
     else:  # ray-march steps, epipolar steps per sample, light-volume cells
         method = {"M": vtkLightShaftPass.RAY_MARCH, "E": vtkLightShaftPass.EPIPOLAR,
                   "V": vtkLightShaftPass.LIGHT_VOLUME}[kind]
-        assert shafts.GetLastMethod() == method
+        assert shafts.GetLastFrame().GetMethod() == method
     assert shafts.GetNumberOfSlices() == 40 and shafts.GetBlurRadius() == 3
     assert not shafts.GetJitter()
     shafts.SetTargetError(0.0)
     window.Render()
-    assert shafts.GetLastErrorModelSetting() == -1 and shafts.GetLastPredictedError() == -1.0
-    assert shafts.GetLastMethod() == vtkLightShaftPass.SLICES
-    assert shafts.GetLastNumberOfSlicesDrawn() == 40
+    assert shafts.GetLastFrame().GetErrorModelSetting() == -1 and shafts.GetLastFrame().GetPredictedError() == -1.0
+    assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.SLICES
+    assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() == 40
     np.testing.assert_array_equal(rh.in_scatter(shafts), before)
 
 
@@ -132,9 +132,9 @@ def test_a_cookie_or_noise_leaves_the_light_volume_out(feature):
     for target in (0.5,) + TARGETS + (1e-4,):
         shafts.SetTargetError(target)
         window.Render()
-        assert shafts.GetLastErrorModelSetting() not in volumes, target
-        assert shafts.GetLastMethod() != vtkLightShaftPass.LIGHT_VOLUME
-        assert feature in shafts.GetLastShaderVariant()
+        assert shafts.GetLastFrame().GetErrorModelSetting() not in volumes, target
+        assert shafts.GetLastFrame().GetMethod() != vtkLightShaftPass.LIGHT_VOLUME
+        assert feature in shafts.GetLastFrame().GetShaderVariant()
 
 
 @pytest.mark.parametrize("params", [
@@ -145,7 +145,7 @@ def test_a_cookie_or_noise_leaves_the_light_volume_out(feature):
 ])
 def test_no_prediction(params):
     _, _, _, shafts = make_scene(**params)
-    assert shafts.GetLastPredictedError() == -1.0
+    assert shafts.GetLastFrame().GetPredictedError() == -1.0
 
 
 def test_presets_are_predicted():
@@ -153,36 +153,36 @@ def test_presets_are_predicted():
         renderer, window, _, shafts = make_scene()
         getattr(shafts, "SetQualityTo" + preset)()
         window.Render()
-        assert shafts.GetLastErrorModelSetting() >= 0, preset
-        assert shafts.GetLastPredictedError() > 0.0, preset
+        assert shafts.GetLastFrame().GetErrorModelSetting() >= 0, preset
+        assert shafts.GetLastFrame().GetPredictedError() > 0.0, preset
 
 
 def test_features_follow_geometry():
     _, _, _, small = make_scene()
     _, _, _, large = make_scene(width=2 * WIDTH, height=2 * HEIGHT)
-    assert large.GetLastBeamWidthInPixels() == pytest.approx(
-        2 * small.GetLastBeamWidthInPixels(), rel=1e-9)
-    assert large.GetLastDepthRangeInBeamWidths() == pytest.approx(
-        small.GetLastDepthRangeInBeamWidths(), rel=1e-9)
-    assert small.GetLastDepthRangeInBeamWidths() > 0.0
-    assert large.GetLastShadowTexelInPixels() == pytest.approx(
-        2 * small.GetLastShadowTexelInPixels(), rel=1e-9)
-    assert small.GetLastShadowTexelInPixels() > 0.0  # the sphere can shadow
+    assert large.GetLastFrame().GetBeamWidthInPixels() == pytest.approx(
+        2 * small.GetLastFrame().GetBeamWidthInPixels(), rel=1e-9)
+    assert large.GetLastFrame().GetDepthRangeInBeamWidths() == pytest.approx(
+        small.GetLastFrame().GetDepthRangeInBeamWidths(), rel=1e-9)
+    assert small.GetLastFrame().GetDepthRangeInBeamWidths() > 0.0
+    assert large.GetLastFrame().GetShadowTexelInPixels() == pytest.approx(
+        2 * small.GetLastFrame().GetShadowTexelInPixels(), rel=1e-9)
+    assert small.GetLastFrame().GetShadowTexelInPixels() > 0.0  # the sphere can shadow
     _, _, _, dense = make_scene(AbsorptionCoefficient=(0.17, 0.16, 0.18))
     # sigma_t's largest channel: 0.05 + 0.02 = 0.07 against 0.05 + 0.17 = 0.22.
-    assert dense.GetLastOpticalDepth() == pytest.approx(
-        small.GetLastOpticalDepth() * 0.22 / 0.07, rel=1e-9)
+    assert dense.GetLastFrame().GetOpticalDepth() == pytest.approx(
+        small.GetLastFrame().GetOpticalDepth() * 0.22 / 0.07, rel=1e-9)
 
     # The spotlight (above the sphere) is outside the default view; looking up at it, it is in.
     renderer, window, info, shafts = make_scene()
-    assert not shafts.GetLastLightInView()
+    assert not shafts.GetLastFrame().GetLightInView()
     camera = renderer.GetActiveCamera()
     light = info.light
     camera.SetPosition(light.GetPosition()[0] + 4.0, 0.5, light.GetPosition()[2] + 4.0)
     camera.SetFocalPoint(light.GetPosition())
     renderer.ResetCameraClippingRange()
     window.Render()
-    assert shafts.GetLastLightInView()
+    assert shafts.GetLastFrame().GetLightInView()
 
 
 def _table_rows():
@@ -203,19 +203,19 @@ def test_prediction_is_the_fitted_table(target):
     rows = _table_rows()
     assert len(rows) >= 3
     _, _, info, shafts = make_scene(TargetError=target)
-    name, coefficients, margin = rows[shafts.GetLastErrorModelSetting()]
-    assert name == vtkLightShaftPass.GetErrorModelSettingName(shafts.GetLastErrorModelSetting())
+    name, coefficients, margin = rows[shafts.GetLastFrame().GetErrorModelSetting()]
+    assert name == vtkLightShaftPass.GetErrorModelSettingName(shafts.GetLastFrame().GetErrorModelSetting())
     light = info.light
     falling = any(a != 0 for a in light.GetAttenuationValues()[1:])
-    features = dict(depth_range_in_beam_widths=shafts.GetLastDepthRangeInBeamWidths(),
-                    beam_width_in_pixels=shafts.GetLastBeamWidthInPixels(),
-                    model_optical_depth=shafts.GetLastOpticalDepth(),
-                    shadow_texel_in_pixels=shafts.GetLastShadowTexelInPixels(),
-                    model_light_in_view=int(shafts.GetLastLightInView()),
+    features = dict(depth_range_in_beam_widths=shafts.GetLastFrame().GetDepthRangeInBeamWidths(),
+                    beam_width_in_pixels=shafts.GetLastFrame().GetBeamWidthInPixels(),
+                    model_optical_depth=shafts.GetLastFrame().GetOpticalDepth(),
+                    shadow_texel_in_pixels=shafts.GetLastFrame().GetShadowTexelInPixels(),
+                    model_light_in_view=int(shafts.GetLastFrame().GetLightInView()),
                     falling_attenuation=int(falling), kind="spot")
     x = fit_error_model.variables(features)
     predicted = math.exp(margin + sum(b * v for b, v in zip(coefficients, x)))
-    assert shafts.GetLastPredictedError() == pytest.approx(predicted, rel=1e-9)
+    assert shafts.GetLastFrame().GetPredictedError() == pytest.approx(predicted, rel=1e-9)
 
 
 def test_two_lights_take_the_larger_prediction():
@@ -236,6 +236,6 @@ def test_two_lights_take_the_larger_prediction():
         shafts.SetTargetError(0.0)
         shafts.SetQualityToInteractive()
         window.Render()
-        predictions.append(shafts.GetLastPredictedError())
+        predictions.append(shafts.GetLastFrame().GetPredictedError())
     assert min(predictions) > 0.0
     assert predictions[2] == pytest.approx(max(predictions[:2]), rel=1e-12)

@@ -12,7 +12,7 @@ import itertools
 import numpy as np
 import pytest
 
-from lightshafts import scenes, vtkLightShaftPass
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkRenderingCore import vtkTexture
 from vtkmodules.util.numpy_support import numpy_to_vtk
@@ -75,14 +75,14 @@ def apply(setup, state):
     renderer, window, shafts = setup
     _, params, size, viewport = state
     for name, value in {**DEFAULTS, **params}.items():
-        getattr(shafts, "Set" + name)(value)
+        getattr(parameter_owner(shafts, name), "Set" + name)(value)
     window.SetSize(*size)
     renderer.SetViewport(*viewport)
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     image = rh.in_scatter(shafts)
     assert np.all(np.isfinite(image))
-    return image, shafts.GetLastShaderVariant()
+    return image, shafts.GetLastFrame().GetShaderVariant()
 
 
 @pytest.fixture(scope="module")
@@ -112,7 +112,7 @@ def without_cookie(setup, messages):
     apply(setup, STATES[0])
     log = messages(shafts)
     window.Render()
-    assert "cookie" not in shafts.GetLastShaderVariant()
+    assert "cookie" not in shafts.GetLastFrame().GetShaderVariant()
     return window, shafts, log, rh.in_scatter(shafts)
 
 
@@ -122,15 +122,15 @@ def test_cookie_replaced_by_an_empty_texture_or_removed(setup, messages):
     shafts.SetCookie(COOKIE)
     window.Render()
     with_cookie = rh.in_scatter(shafts)
-    assert "cookie" in shafts.GetLastShaderVariant()
+    assert "cookie" in shafts.GetLastFrame().GetShaderVariant()
     assert np.abs(with_cookie - no_cookie).max() > 0.1 * no_cookie.max()
-    assert shafts.GetLastNumberOfSceneRenders() == 2
+    assert shafts.GetLastFrame().GetNumberOfSceneRenders() == 2
 
     empty = vtkTexture()  # no image: no cookie, one warning
     shafts.SetCookie(empty)
     window.Render()
-    assert "cookie" not in shafts.GetLastShaderVariant()
-    assert shafts.GetLastNumberOfSceneRenders() == 1
+    assert "cookie" not in shafts.GetLastFrame().GetShaderVariant()
+    assert shafts.GetLastFrame().GetNumberOfSceneRenders() == 1
     np.testing.assert_array_equal(rh.in_scatter(shafts), no_cookie)
     window.Render()
     assert len(log.warnings) == 1 and "cookie texture has no image" in log.warnings[0]
@@ -141,7 +141,7 @@ def test_cookie_replaced_by_an_empty_texture_or_removed(setup, messages):
 
     shafts.SetCookie(None)
     window.Render()
-    assert "cookie" not in shafts.GetLastShaderVariant()
+    assert "cookie" not in shafts.GetLastFrame().GetShaderVariant()
     np.testing.assert_array_equal(rh.in_scatter(shafts), no_cookie)
 
 
@@ -153,7 +153,7 @@ def test_cookie_image_arriving_later_is_used(setup, messages):
     np.testing.assert_array_equal(rh.in_scatter(shafts), no_cookie)
     texture.SetInputData(COOKIE.GetInput())
     window.Render()
-    assert "cookie" in shafts.GetLastShaderVariant()
+    assert "cookie" in shafts.GetLastFrame().GetShaderVariant()
     assert np.abs(rh.in_scatter(shafts) - no_cookie).max() > 0.1 * no_cookie.max()
     assert len(log.warnings) == 1
     shafts.SetCookie(None)

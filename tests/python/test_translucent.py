@@ -15,7 +15,7 @@ import pytest
 from vtkmodules.vtkFiltersSources import vtkPlaneSource
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 
-from lightshafts import scenes, vtkLightShaftPass
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass
 
 import lightshaft_reference as ref
 import render_helpers as rh
@@ -54,16 +54,16 @@ def make_scene(kind, panes=(), half=50.0, **params):
     lights = rh.make_light_kind(renderer, info, kind, POINT_POSITION)
     actors = [add_pane(renderer, *pane, half=half) for pane in panes]
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
-    shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
+    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.02, 0.01, 0.03)
     shafts.SetQualityToFinal()
     for light in lights:
         shafts.AddLight(light)
     for name, value in params.items():
-        getattr(shafts, "Set" + name)(value)
+        getattr(parameter_owner(shafts, name), "Set" + name)(value)
     renderer.SetPass(shafts)
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
     return renderer, window, shafts, actors
 
 
@@ -89,8 +89,8 @@ def beyond(with_panes, without, transmittance):
 @pytest.mark.parametrize("kind", KINDS)
 def test_a_red_pane_at_half_opacity_halves_green_and_blue_beyond_it(kind):
     renderer, window, shafts, _ = make_scene(kind, [(4.0, RED, 0.5)])
-    assert shafts.GetLastLightTranslucentLayers(0) == 1
-    assert "translucent" in shafts.GetLastShaderVariant()
+    assert shafts.GetLastFrame().GetLightTranslucentLayers(0) == 1
+    assert "translucent" in shafts.GetLastFrame().GetShaderVariant()
     pane = rh.in_scatter(shafts)
     expected = reference(renderer, shafts)
     error, pixels = ref.relative_rms_error(pane, expected)
@@ -109,7 +109,7 @@ def test_a_red_pane_at_half_opacity_halves_green_and_blue_beyond_it(kind):
 def test_two_panes_multiply(kind):
     panes = [(4.0, RED, 0.5), (3.5, GREEN, 0.25)]  # (1, .5, .5) then (.75, 1, .75)
     renderer, window, shafts, _ = make_scene(kind, panes)
-    assert shafts.GetLastLightTranslucentLayers(0) == 2
+    assert shafts.GetLastFrame().GetLightTranslucentLayers(0) == 2
     both = rh.in_scatter(shafts)
     expected = reference(renderer, shafts)
     error, pixels = ref.relative_rms_error(both, expected)
@@ -129,7 +129,7 @@ def test_opacity_zero_is_no_prop_and_one_is_an_opaque_prop(kind):
     _, _, shafts, _ = make_scene(kind)
     clear = rh.in_scatter(shafts)
     _, _, shafts, _ = make_scene(kind, [(4.0, RED, 0.0)])
-    assert shafts.GetLastLightTranslucentLayers(0) == 0
+    assert shafts.GetLastFrame().GetLightTranslucentLayers(0) == 0
     transparent = rh.in_scatter(shafts)
     assert nearly_same(transparent, clear)
     _, _, shafts, _ = make_scene(kind, [(4.0, RED, 0.0)], TranslucentShadows=False)
@@ -137,13 +137,13 @@ def test_opacity_zero_is_no_prop_and_one_is_an_opaque_prop(kind):
     # Towards 0 the light beyond changes continuously: by at most the opacity.
     # (float32 arithmetic: 3 times the opacity as the bound; measured 2.4 times.)
     _, _, shafts, _ = make_scene(kind, [(4.0, RED, 1e-6)])
-    assert shafts.GetLastLightTranslucentLayers(0) == 1
+    assert shafts.GetLastFrame().GetLightTranslucentLayers(0) == 1
     change = np.abs(rh.in_scatter(shafts) - transparent)
     assert np.all(change <= 3e-6 * transparent + 1e-7 * transparent.max())
 
     # Opacity 1: VTK renders the pane with the opaque props; it blocks the light, exactly.
     renderer, _, shafts, _ = make_scene(kind, [(4.0, RED, 1.0)], half=2.0)
-    assert shafts.GetLastLightTranslucentLayers(0) == 0
+    assert shafts.GetLastFrame().GetLightTranslucentLayers(0) == 0
     opaque = rh.in_scatter(shafts)
     error, pixels = ref.relative_rms_error(opaque, reference(renderer, shafts))
     assert pixels > 100 and error < 0.01, f"{kind}: {error:.4%} over {pixels} pixels"
@@ -155,18 +155,18 @@ def test_translucent_shadows_off_lets_the_light_through():
     _, _, shafts, _ = make_scene("spot")
     clear = rh.in_scatter(shafts)
     _, _, shafts, _ = make_scene("spot", [(4.0, RED, 0.5)], TranslucentShadows=False)
-    assert shafts.GetLastLightTranslucentLayers(0) == 0
-    assert "translucent" not in shafts.GetLastShaderVariant()
+    assert shafts.GetLastFrame().GetLightTranslucentLayers(0) == 0
+    assert "translucent" not in shafts.GetLastFrame().GetShaderVariant()
     assert nearly_same(rh.in_scatter(shafts), clear)
 
 
 def test_layers_beyond_the_maximum_are_left_out():
     panes = [(4.5, RED, 0.5), (4.0, GREEN, 0.5), (3.5, (0.0, 0.0, 1.0), 0.5)]
     _, _, shafts, _ = make_scene("spot", panes)
-    assert shafts.GetLastLightTranslucentLayers(0) == 3
+    assert shafts.GetLastFrame().GetLightTranslucentLayers(0) == 3
     three = rh.in_scatter(shafts)
     _, _, shafts, _ = make_scene("spot", panes, TranslucentShadowLayers=2)
-    assert shafts.GetLastLightTranslucentLayers(0) == 2
+    assert shafts.GetLastFrame().GetLightTranslucentLayers(0) == 2
     two = rh.in_scatter(shafts)
     _, _, shafts, _ = make_scene("spot", panes[:2])
     assert nearly_same(two, rh.in_scatter(shafts))
@@ -180,8 +180,8 @@ def test_the_largest_map_holds_its_layers_to_their_memory_budget(kind):
     23023); a light's layers are held to 512 MiB, coarser than the map, and still dim the light
     as the pane does."""
     renderer, window, shafts, _ = make_scene(kind, [(4.0, RED, 0.5)], ShadowMapSize=16384)
-    assert shafts.GetLastLightTranslucentLayers(0) == 1
-    assert 0.9 * 2**29 < shafts.GetLastLightTranslucentBytes(0) <= 2**29
+    assert shafts.GetLastFrame().GetLightTranslucentLayers(0) == 1
+    assert 0.9 * 2**29 < shafts.GetLastFrame().GetLightTranslucentBytes(0) <= 2**29
     pane = rh.in_scatter(shafts)
     expected = reference(renderer, shafts)
     error, pixels = ref.relative_rms_error(pane, expected)
@@ -196,29 +196,29 @@ def test_the_largest_map_holds_its_layers_to_their_memory_budget(kind):
 
 def test_the_layers_are_kept_until_a_translucent_prop_or_the_light_changes():
     renderer, window, shafts, (pane,) = make_scene("spot", [(4.0, RED, 0.5)])
-    assert shafts.GetLastLightShadowMapRendered(0)
+    assert shafts.GetLastFrame().GetLightShadowMapRendered(0)
     window.Render()
-    assert shafts.GetLastLightShadowMapReused(0)
-    assert shafts.GetLastLightTranslucentLayers(0) == 1
+    assert shafts.GetLastFrame().GetLightShadowMapReused(0)
+    assert shafts.GetLastFrame().GetLightTranslucentLayers(0) == 1
     renderer.GetActiveCamera().Azimuth(5.0)
     window.Render()
-    assert shafts.GetLastLightShadowMapReused(0)
+    assert shafts.GetLastFrame().GetLightShadowMapReused(0)
     before = rh.in_scatter(shafts)
     pane.GetProperty().SetOpacity(0.25)
     window.Render()
-    assert shafts.GetLastLightShadowMapRendered(0)
+    assert shafts.GetLastFrame().GetLightShadowMapRendered(0)
     after = rh.in_scatter(shafts)
     assert after[..., 1].sum() > before[..., 1].sum()  # 0.75 of green passes instead of 0.5
-    shafts.GetLastUsedLight(0).SetPosition(0.6, 6.0, 0.0)
+    shafts.GetLastFrame().GetUsedLight(0).SetPosition(0.6, 6.0, 0.0)
     window.Render()
-    assert shafts.GetLastLightShadowMapRendered(0)
+    assert shafts.GetLastFrame().GetLightShadowMapRendered(0)
 
 
 def test_light_volume_gives_way_to_ray_march_with_translucent_casters(vtk_messages):
     vtk_messages.expect("Method LIGHT_VOLUME has no closed form with translucent casters")
     _, _, shafts, _ = make_scene("spot", [(4.0, RED, 0.5)], Method=vtkLightShaftPass.LIGHT_VOLUME)
-    assert shafts.GetLastMethod() == vtkLightShaftPass.RAY_MARCH
-    assert shafts.GetLastLightTranslucentLayers(0) == 1
+    assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.RAY_MARCH
+    assert shafts.GetLastFrame().GetLightTranslucentLayers(0) == 1
 
 
 def test_surfaces_beyond_a_pane_are_tinted():
@@ -254,8 +254,8 @@ def test_picking_and_selection_see_the_panes_as_without_the_pass():
     assert picker.Pick(WIDTH / 2, HEIGHT / 2, 0.0, renderer)
     assert picker.GetViewProp() is pane
     window.Render()
-    assert not shafts.GetLastPlainScene()
-    assert shafts.GetLastLightTranslucentLayers(0) == 1
+    assert not shafts.GetLastFrame().GetPlainScene()
+    assert shafts.GetLastFrame().GetLightTranslucentLayers(0) == 1
 
 
 @pytest.mark.parametrize("peeling", ["depth peeling", "blending"])
@@ -266,8 +266,8 @@ def test_the_cameras_translucency_modes_work_with_the_layers(peeling):
     renderer.SetMaximumNumberOfPeels(8)
     window.Render()
     window.Render()
-    assert shafts.GetLastGLErrorCount() == 0
-    assert shafts.GetLastLightTranslucentLayers(0) == 1
+    assert shafts.GetLastFrame().GetGLErrorCount() == 0
+    assert shafts.GetLastFrame().GetLightTranslucentLayers(0) == 1
     assert np.array_equal(rh.in_scatter(shafts), plain)
     renderer.SetUseDepthPeeling(False)
 
@@ -276,7 +276,7 @@ def test_several_lights_each_through_their_own_layers():
     # The orange spot above the pane and a blue point light under it (render_helpers' "pair"):
     # each light peels the pane in its own view (the point light's in its upper cube faces).
     renderer, window, shafts, _ = make_scene("pair", [(4.0, RED, 0.5)])
-    assert shafts.GetLastNumberOfUsedLights() == 2
-    assert [shafts.GetLastLightTranslucentLayers(i) for i in range(2)] == [1, 1]
+    assert shafts.GetLastFrame().GetNumberOfUsedLights() == 2
+    assert [shafts.GetLastFrame().GetLightTranslucentLayers(i) for i in range(2)] == [1, 1]
     error, pixels = ref.relative_rms_error(rh.in_scatter(shafts), reference(renderer, shafts))
     assert pixels > 1000 and error < 0.01, f"{error:.4%} over {pixels} pixels"

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 from vtkmodules.vtkRenderingCore import vtkLight
 
-from lightshafts import scenes, vtkLightShaftPass
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass
 
 import render_helpers as rh
 from vtk_output import Messages
@@ -26,7 +26,7 @@ def narrow_beam(width, height, **params):
     info.light.SetConeAngle(3.0)
     shafts = vtkLightShaftPass()
     for name, value in params.items():
-        getattr(shafts, "Set" + name)(value)
+        getattr(parameter_owner(shafts, name), "Set" + name)(value)
     renderer.SetPass(shafts)
     return renderer, window, shafts, Messages(shafts)
 
@@ -36,7 +36,7 @@ def test_ray_march_steps_beyond_the_budget_are_reduced_with_one_warning():
                                                 NumberOfSteps=4096, InterleaveSize=1)
     for _ in range(2):
         window.Render()
-        assert shafts.GetLastNumberOfSteps() == BUDGET // (640 * 480) == 3495
+        assert shafts.GetLastFrame().GetNumberOfSteps() == BUDGET // (640 * 480) == 3495
         assert np.all(np.isfinite(rh.in_scatter(shafts)))
     assert len(log.warnings) == 1
     assert "NumberOfSteps 4096 over 307200 in-scatter pixels" in log.warnings[0]
@@ -44,7 +44,7 @@ def test_ray_march_steps_beyond_the_budget_are_reduced_with_one_warning():
     # Half resolution fits: the steps asked for, and the next reduction is said again.
     shafts.SetDownsampleFactor(2)
     window.Render()
-    assert shafts.GetLastNumberOfSteps() == 4096
+    assert shafts.GetLastFrame().GetNumberOfSteps() == 4096
     shafts.SetDownsampleFactor(1)
     window.Render()
     assert len(log.warnings) == 2
@@ -58,21 +58,21 @@ def test_the_lights_of_a_frame_share_the_budget():
     second.SetPosition(np.add(second.GetPosition(), (0.5, 0.0, 0.0)))
     renderer.AddLight(second)
     window.Render()
-    assert shafts.GetLastNumberOfUsedLights() == 2
-    assert shafts.GetLastNumberOfSteps() == BUDGET // 2 // (640 * 480) == 1747
+    assert shafts.GetLastFrame().GetNumberOfUsedLights() == 2
+    assert shafts.GetLastFrame().GetNumberOfSteps() == BUDGET // 2 // (640 * 480) == 1747
     assert np.all(np.isfinite(rh.in_scatter(shafts)))
     assert len(log.warnings) == 1
     assert "using 1747" in log.warnings[0] and "shared by 2 lights" in log.warnings[0]
     # Switched off, the second light leaves the first the whole budget.
     second.SwitchOff()
     window.Render()
-    assert shafts.GetLastNumberOfSteps() == BUDGET // (640 * 480)
+    assert shafts.GetLastFrame().GetNumberOfSteps() == BUDGET // (640 * 480)
 
 
 def test_slices_beyond_the_budget_are_reduced_with_one_warning():
     renderer, window, shafts, log = narrow_beam(640, 480, NumberOfSlices=4096, BlurRadius=0)
     window.Render()
-    assert shafts.GetLastNumberOfSlicesDrawn() <= 3495 + 1
+    assert shafts.GetLastFrame().GetNumberOfSlicesDrawn() <= 3495 + 1
     assert np.all(np.isfinite(rh.in_scatter(shafts)))
     assert len(log.warnings) == 1 and "NumberOfSlices 4096" in log.warnings[0]
 
@@ -82,7 +82,7 @@ def test_the_presets_fit_the_budget_up_to_1080p(size):
     renderer, window, shafts, log = narrow_beam(*size)
     shafts.SetQualityToFinal()  # 256 steps: 530 M segments at 1080p
     window.Render()
-    assert shafts.GetLastNumberOfSteps() == 256 and not log.warnings
+    assert shafts.GetLastFrame().GetNumberOfSteps() == 256 and not log.warnings
 
 
 def test_epipolar_steps_count_every_sample_it_may_march():
@@ -96,4 +96,4 @@ def test_epipolar_steps_count_every_sample_it_may_march():
     assert len(log.warnings) == 1
     assert "NumberOfSteps 4096 over 3584000 rays" in log.warnings[0]
     assert "using 299" in log.warnings[0]
-    assert shafts.GetLastNumberOfSteps() == 299
+    assert shafts.GetLastFrame().GetNumberOfSteps() == 299

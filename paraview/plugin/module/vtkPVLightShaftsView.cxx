@@ -6,6 +6,8 @@
 #include "vtkImageReader2.h"
 #include "vtkImageReader2Factory.h"
 #include "vtkLight.h"
+#include "vtkLightShaftFrameReport.h"
+#include "vtkLightShaftMedium.h"
 #include "vtkLightShaftOpenGL.h"
 #include "vtkLightShaftPass.h"
 #include "vtkMultiProcessController.h"
@@ -213,27 +215,27 @@ vtkLightShaftPass* vtkPVLightShaftsView::GetLightShaftPass()
 
 bool vtkPVLightShaftsView::GetRefinementConverged()
 {
-  return this->Impl->Shafts->GetLastRefinementConverged();
+  return this->Impl->Shafts->GetLastFrame()->GetRefinementConverged();
 }
 
 int vtkPVLightShaftsView::GetRefinementEstimates()
 {
-  return this->Impl->Shafts->GetLastRefinementEstimates();
+  return this->Impl->Shafts->GetLastFrame()->GetRefinementEstimates();
 }
 
 double vtkPVLightShaftsView::GetLastTimeBudget()
 {
-  return this->Impl->Shafts->GetLastTimeBudget();
+  return this->Impl->Shafts->GetLastFrame()->GetTimeBudget();
 }
 
 const char* vtkPVLightShaftsView::GetLastShaderVariant()
 {
-  return this->Impl->Shafts->GetLastShaderVariant();
+  return this->Impl->Shafts->GetLastFrame()->GetShaderVariant();
 }
 
 double vtkPVLightShaftsView::GetLastMediumShadowBuildTime()
 {
-  return this->Impl->Shafts->GetLastLightFieldShadowBuildTime(0);
+  return this->Impl->Shafts->GetLastFrame()->GetLightFieldShadowBuildTime(0);
 }
 
 //------------------------------------------------------------------------------
@@ -375,25 +377,25 @@ void vtkPVLightShaftsView::SetTranslucentShadows(bool translucent)
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetScatteringCoefficient(double r, double g, double b)
 {
-  this->Impl->Shafts->SetScatteringCoefficient(r, g, b);
+  this->Impl->Shafts->GetMedium()->SetScatteringCoefficient(r, g, b);
 }
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetAbsorptionCoefficient(double r, double g, double b)
 {
-  this->Impl->Shafts->SetAbsorptionCoefficient(r, g, b);
+  this->Impl->Shafts->GetMedium()->SetAbsorptionCoefficient(r, g, b);
 }
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetPhaseFunction(int phase)
 {
-  this->Impl->Shafts->SetPhaseFunction(phase);
+  this->Impl->Shafts->GetMedium()->SetPhaseFunction(phase);
 }
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetAnisotropy(double g)
 {
-  this->Impl->Shafts->SetAnisotropy(g);
+  this->Impl->Shafts->GetMedium()->SetAnisotropy(g);
 }
 
 //------------------------------------------------------------------------------
@@ -668,61 +670,61 @@ const char* vtkPVLightShaftsView::GetCookieFileName()
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetNoiseAmplitude(double amplitude)
 {
-  this->Impl->Shafts->SetNoiseAmplitude(amplitude);
+  this->Impl->Shafts->GetMedium()->SetNoiseAmplitude(amplitude);
 }
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetNoiseScale(double scale)
 {
-  this->Impl->Shafts->SetNoiseScale(scale);
+  this->Impl->Shafts->GetMedium()->SetNoiseScale(scale);
 }
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetNoiseVelocity1(double u, double v)
 {
-  this->Impl->Shafts->SetNoiseVelocity1(u, v);
+  this->Impl->Shafts->GetMedium()->SetNoiseVelocity1(u, v);
 }
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetNoiseVelocity2(double u, double v)
 {
-  this->Impl->Shafts->SetNoiseVelocity2(u, v);
+  this->Impl->Shafts->GetMedium()->SetNoiseVelocity2(u, v);
 }
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetMediumDensityConnection(vtkAlgorithmOutput* output)
 {
-  this->Impl->Shafts->SetMediumDensityConnection(output);
+  this->Impl->Shafts->GetMedium()->SetDensityFieldConnection(output);
 }
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetMediumDensityArray(const char* name)
 {
-  this->Impl->Shafts->SetMediumDensityArrayName(name);
+  this->Impl->Shafts->GetMedium()->SetDensityArrayName(name);
 }
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetMediumDensityScale(double scale)
 {
-  this->Impl->Shafts->SetMediumDensityScale(scale);
+  this->Impl->Shafts->GetMedium()->SetDensityScale(scale);
 }
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetMediumBackgroundDensity(double density)
 {
-  this->Impl->Shafts->SetMediumBackgroundDensity(density);
+  this->Impl->Shafts->GetMedium()->SetBackgroundDensity(density);
 }
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetMediumShadowResolution(int resolution)
 {
-  this->Impl->Shafts->SetMediumShadowResolution(resolution);
+  this->Impl->Shafts->GetMedium()->SetFieldShadowResolution(resolution);
 }
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::UpdateTime()
 {
-  this->Impl->Shafts->SetTime(
+  this->Impl->Shafts->GetMedium()->SetTime(
     this->LinkShaftTimeToAnimation ? this->Impl->ViewTime : this->ShaftTime);
 }
 

@@ -1,0 +1,209 @@
+#include "vtkLightShaftFrameReport.h"
+
+#include "vtkLight.h"
+#include "vtkLightShaftFrame.h"
+#include "vtkLightShaftLights.h"
+#include "vtkLightShaftPass.h"
+#include "vtkObjectFactory.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+class vtkLightShaftFrameReport::Internals
+{
+public:
+  std::vector<vtkLightShaftLightStatistics> Lights;
+  std::string Variant;
+  std::string Source;
+
+  const vtkLightShaftLightStatistics* Light(int index) const
+  {
+    return index >= 0 && index < static_cast<int>(this->Lights.size()) ? &this->Lights[index]
+                                                                       : nullptr;
+  }
+};
+
+vtkStandardNewMacro(vtkLightShaftFrameReport);
+
+vtkLightShaftFrameReport::vtkLightShaftFrameReport()
+  : Impl(new Internals)
+{
+}
+
+vtkLightShaftFrameReport::~vtkLightShaftFrameReport() = default;
+
+//------------------------------------------------------------------------------
+// The frame's values: per light, and the totals and first light's values the frame-wide
+// read-outs report.
+void vtkLightShaftFrameReport::Publish(const vtkLightShaftFrame& frame,
+  const char* variant,
+  const char* source)
+{
+  const vtkLightShaftStatistics& stats = frame.Statistics;
+  this->ViewportSize[0] = std::max(frame.Size[0], 0);
+  this->ViewportSize[1] = std::max(frame.Size[1], 0);
+  this->NumberOfSlabBatches = stats.SlabBatches;
+  this->LatticeResolution = stats.LatticeResolution;
+  this->NumberOfSteps = stats.NumberOfSteps;
+  this->NumberOfPostPasses = stats.PostPasses;
+  this->NumberOfSceneRenders = stats.SceneRenders;
+  this->MultiSamples = stats.MultiSamples;
+  this->PlainScene = stats.PlainScene;
+  this->RendererFXAA = stats.RendererFXAA;
+  this->SliceDepthRange[0] = stats.SliceDepthRange[0];
+  this->SliceDepthRange[1] = stats.SliceDepthRange[1];
+  this->RadialGuardBand = stats.RadialGuardBand;
+  this->PredictedError = stats.PredictedError;
+  this->ErrorModelSetting = stats.ErrorModelSetting;
+  this->RefinementEstimates = stats.RefinementEstimates;
+  this->RefinementConverged = stats.RefinementConverged;
+  this->InScatterReused = stats.InScatterReused;
+  this->TimeBudget = stats.TimeBudget;
+  this->PredictedFrameTime = stats.TimeBudget > 0.0 ? stats.PredictedFrameTime : -1.0;
+  this->FrameTime = stats.FrameTime;
+  this->DownsampleFactor = frame.Parameters.DownsampleFactor;
+  this->DepthRangeInBeamWidths = stats.ErrorFeatures.DepthRangeInBeamWidths;
+  this->BeamWidthInPixels = stats.ErrorFeatures.BeamWidthInPixels;
+  this->OpticalDepth = stats.ErrorFeatures.OpticalDepth;
+  this->ShadowTexelInPixels = stats.ErrorFeatures.ShadowTexelInPixels;
+  this->LightInView = stats.ErrorFeatures.LightInView;
+  this->Method = -1;
+  this->NumberOfSlicesDrawn = 0;
+  this->ShadowMapRendered = false;
+  this->NumberOfShadowCasters = 0;
+  for (const vtkLightShaftLightStatistics& light : stats.Lights)
+  {
+    if (this->Method < 0)
+    {
+      this->Method = light.Method;
+    }
+    this->NumberOfSlicesDrawn += light.SlicesDrawn;
+    this->NumberOfShadowCasters += light.ShadowCasters;
+    const bool mapped = light.ShadowMapRendered || light.ShadowMapReused;
+    if (mapped && !this->ShadowMapRendered)
+    {
+      this->LightDepthRange[0] = light.LightDepthRange[0];
+      this->LightDepthRange[1] = light.LightDepthRange[1];
+      this->ShadowBias = light.ShadowBias;
+    }
+    this->ShadowMapRendered = this->ShadowMapRendered || mapped;
+  }
+  this->Impl->Lights = stats.Lights;
+  this->Impl->Variant = variant ? variant : "";
+  this->Impl->Source = source ? source : "";
+  this->Modified();
+}
+
+const char* vtkLightShaftFrameReport::GetShaderVariant()
+{
+  return this->Impl->Variant.c_str();
+}
+
+const char* vtkLightShaftFrameReport::GetSliceShaderSource()
+{
+  return this->Impl->Source.c_str();
+}
+
+//------------------------------------------------------------------------------
+// Per used light.
+int vtkLightShaftFrameReport::GetNumberOfUsedLights()
+{
+  return static_cast<int>(this->Impl->Lights.size());
+}
+
+vtkLight* vtkLightShaftFrameReport::GetUsedLight(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
+  return light ? light->Light.Get() : nullptr;
+}
+
+int vtkLightShaftFrameReport::GetLightKind(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
+  return light ? light->Kind : -1;
+}
+
+int vtkLightShaftFrameReport::GetLightMethod(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
+  return light ? light->Method : -1;
+}
+
+int vtkLightShaftFrameReport::GetLightSlicesDrawn(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
+  return light ? light->SlicesDrawn : 0;
+}
+
+bool vtkLightShaftFrameReport::GetLightShadowMapRendered(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
+  return light && light->ShadowMapRendered;
+}
+
+bool vtkLightShaftFrameReport::GetLightShadowMapReused(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
+  return light && light->ShadowMapReused;
+}
+
+int vtkLightShaftFrameReport::GetLightShadowCasters(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
+  return light ? light->ShadowCasters : 0;
+}
+
+double vtkLightShaftFrameReport::GetLightTime(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
+  return light ? light->Time : -1.0;
+}
+
+double vtkLightShaftFrameReport::GetLightFieldShadowBytes(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
+  return light ? light->FieldShadowBytes : 0.0;
+}
+
+double vtkLightShaftFrameReport::GetLightFieldShadowBuildTime(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
+  return light ? light->FieldShadowBuildTime : 0.0;
+}
+
+int vtkLightShaftFrameReport::GetLightTranslucentLayers(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
+  return light ? light->TranslucentLayers : 0;
+}
+
+double vtkLightShaftFrameReport::GetLightTranslucentBytes(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
+  return light ? light->TranslucentBytes : 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftFrameReport::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Method: " << vtkLightShaftPass::GetMethodName(this->Method) << "\n";
+  os << indent << "ViewportSize: (" << this->ViewportSize[0] << ", " << this->ViewportSize[1]
+     << ")\n";
+  os << indent << "PlainScene: " << this->PlainScene << "\n";
+  os << indent << "GLErrorCount: " << this->GLErrorCount << "\n";
+  os << indent << "NumberOfSlicesDrawn: " << this->NumberOfSlicesDrawn << "\n";
+  os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
+  os << indent << "DownsampleFactor: " << this->DownsampleFactor << "\n";
+  os << indent << "ShadowMapRendered: " << this->ShadowMapRendered << "\n";
+  os << indent << "PredictedError: " << this->PredictedError << "\n";
+  os << indent << "ErrorModelSetting: "
+     << vtkLightShaftPass::GetErrorModelSettingName(this->ErrorModelSetting) << "\n";
+  os << indent << "TimeBudget: " << this->TimeBudget << "\n";
+  os << indent << "FrameTime: " << this->FrameTime << "\n";
+  os << indent << "RefinementEstimates: " << this->RefinementEstimates << "\n";
+  os << indent << "RefinementConverged: " << this->RefinementConverged << "\n";
+  os << indent << "UsedLights: " << this->Impl->Lights.size() << "\n";
+  os << indent << "ShaderVariant: " << this->Impl->Variant << "\n";
+}

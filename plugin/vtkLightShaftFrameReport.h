@@ -1,0 +1,224 @@
+/**
+ * @class   vtkLightShaftFrameReport
+ * @brief   What vtkLightShaftPass's last frame did: the setting it chose, its predicted error,
+ *          times, resolution, refinement state, and per light its method, shadow map, tables
+ *          and layers. Read-only.
+ *
+ * vtkLightShaftPass::GetLastFrame() returns it; the pass updates the same object at the end of
+ * each frame (keep the pointer, read it after a render). For tests, tuning and read-outs in a
+ * GUI:
+ * @code{.py}
+ *   window.Render()
+ *   frame = shafts.GetLastFrame()
+ *   print(frame.GetMethod(), frame.GetPredictedError(), frame.GetLightTime(0))
+ * @endcode
+ * Before the first frame every value is its default (documented with it).
+ *
+ * @sa vtkLightShaftPass
+ */
+
+#ifndef vtkLightShaftFrameReport_h
+#define vtkLightShaftFrameReport_h
+
+#include "vtkLightShaftsModule.h" // For the export macro
+#include "vtkObject.h"            // For the base class
+
+#include <memory> // For std::unique_ptr (the per-light values)
+
+class vtkLight;
+struct vtkLightShaftFrame;
+
+class VTKLIGHTSHAFTS_EXPORT vtkLightShaftFrameReport : public vtkObject
+{
+public:
+  static vtkLightShaftFrameReport* New();
+  vtkTypeMacro(vtkLightShaftFrameReport, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * What the frame drew. The method it used (AUTOMATIC resolved; -1 when no shafts were
+   * computed; vtkLightShaftPass::GetMethodName names it). The viewport's size in pixels.
+   * How many times the scene was rendered (2 with a cookie: with and without the light). Its
+   * samples per pixel: those of the target the pass draws into (0: not multisampled). Whether
+   * the frame drew only the plain scene, exactly as without the pass (the renderer rendered
+   * for a hardware selector, an enclosing pass with its own shaders, or into a target without
+   * colour; the shafts come back on the next frame). Whether the pass applied the renderer's
+   * FXAA. OpenGL errors raised while it rendered (0 when all is well; errors pending before
+   * the frame are not counted). Defaults are -1, (0, 0), 0, 0, false, false and 0.
+   */
+  vtkGetMacro(Method, int);
+  vtkGetVector2Macro(ViewportSize, int);
+  vtkGetMacro(NumberOfSceneRenders, int);
+  vtkGetMacro(MultiSamples, int);
+  vtkGetMacro(PlainScene, bool);
+  vtkGetMacro(RendererFXAA, bool);
+  vtkGetMacro(GLErrorCount, int);
+  ///@}
+
+  ///@{
+  /**
+   * The sampling. SLICES: slabs drawn over all lights, the view-depth range the first light's
+   * slabs span, and their draw calls. The lattice resolution the slabs used (less than asked
+   * where the frame's budget of 2^21 lattice cells required; 0: none). The steps RAY_MARCH and
+   * EPIPOLAR took per ray (fewer than asked where the frame would integrate more than 2^30
+   * segments; the fewest of the lights; 0: neither method). Full-screen passes after the
+   * in-scatter (gather, blur, ...). RADIAL_BLUR's guard band (0: not run). The in-scatter's
+   * resolution factor (DownsampleFactor, or the budget's or target's choice). Defaults are 0,
+   * (0, 0), 0, 0, 0, 0, 0 and 1.
+   */
+  vtkGetMacro(NumberOfSlicesDrawn, int);
+  vtkGetVector2Macro(SliceDepthRange, double);
+  vtkGetMacro(NumberOfSlabBatches, int);
+  vtkGetMacro(LatticeResolution, int);
+  vtkGetMacro(NumberOfSteps, int);
+  vtkGetMacro(NumberOfPostPasses, int);
+  vtkGetMacro(RadialGuardBand, double);
+  vtkGetMacro(DownsampleFactor, int);
+  ///@}
+
+  ///@{
+  /**
+   * The shader variants compiled (each light's features, e.g. "method=slices phase=isotropic
+   * shadow cookie noise jitter accumulate=float32", joined by "; "), and the slab or march
+   * program's fragment source. Default is "".
+   */
+  const char* GetShaderVariant();
+  const char* GetSliceShaderSource();
+  ///@}
+
+  ///@{
+  /**
+   * The shadow maps: whether any light's shafts were shadowed by one (rendered this frame or
+   * reused), and their casters summed over the lights. The first shadowed light's camera near
+   * and far distances and depth tolerance: relative for spot and point lights (lit when
+   * w <= stored depth * (1 + bias)), in world units for a directional light. Defaults are
+   * false, 0, (0, 0) and 0.
+   */
+  vtkGetMacro(ShadowMapRendered, bool);
+  vtkGetMacro(NumberOfShadowCasters, int);
+  vtkGetVector2Macro(LightDepthRange, double);
+  vtkGetMacro(ShadowBias, double);
+  ///@}
+
+  ///@{
+  /**
+   * The error model's view. The predicted relative RMS error (of the setting TargetError or
+   * the budget chose, or of the parameters when they are a setting of the model's ladder; -1:
+   * none), that setting (-1: none; vtkLightShaftPass::GetErrorModelSettingName names it), and
+   * the first lit light's features: the lit volume's view-depth range over the beam's width,
+   * that width in pixels, the optical depth over the range, a 1024^2 map's texel in pixels (0:
+   * no caster), and whether the light projects inside the view. Defaults are -1, -1, 0, 0, 0,
+   * 0 and false.
+   */
+  vtkGetMacro(PredictedError, double);
+  vtkGetMacro(ErrorModelSetting, int);
+  vtkGetMacro(DepthRangeInBeamWidths, double);
+  vtkGetMacro(BeamWidthInPixels, double);
+  vtkGetMacro(OpticalDepth, double);
+  vtkGetMacro(ShadowTexelInPixels, double);
+  vtkGetMacro(LightInView, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The frame budget: the budget the frame had (seconds; 0: none), the frame time predicted
+   * for the sampling chosen (-1: no budget), and the time measured (the shafts' part of the
+   * frame, scene and composite included; -1: only frames under a budget are measured).
+   * Defaults are 0, -1 and -1.
+   */
+  vtkGetMacro(TimeBudget, double);
+  vtkGetMacro(PredictedFrameTime, double);
+  vtkGetMacro(FrameTime, double);
+  ///@}
+
+  ///@{
+  /**
+   * Progressive refinement: the estimates averaged into the picture (0: off, or nothing
+   * computed), whether it is converged, and whether the frame reused the converged in-scatter
+   * instead of computing it. Defaults are 0, false and false.
+   */
+  vtkGetMacro(RefinementEstimates, int);
+  vtkGetMacro(RefinementConverged, bool);
+  vtkGetMacro(InScatterReused, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Per used light: how many lights the frame used (the given ones switched on, or the
+   * automatic choice) and the i-th, in the order their in-scatter was added; its kind
+   * (vtkLightShaftPass::LightKindType); the method that computed its in-scatter (-1: none, e.g.
+   * outside the view); its slabs; whether its shadow map was rendered this frame, or reused
+   * because nothing that decides it changed; its casters; the GPU milliseconds its in-scatter
+   * took (timer queries of the latest frame whose queries completed; -1: not available); its
+   * light-leg table through a density field: bytes (0: none) and build milliseconds (0:
+   * reused); its translucent casters' layers: how many (0: none) and their bytes. Out of range:
+   * nullptr, -1, -1, 0, false, false, 0, -1, 0, 0, 0 and 0.
+   */
+  int GetNumberOfUsedLights();
+  vtkLight* GetUsedLight(int index);
+  int GetLightKind(int index);
+  int GetLightMethod(int index);
+  int GetLightSlicesDrawn(int index);
+  bool GetLightShadowMapRendered(int index);
+  bool GetLightShadowMapReused(int index);
+  int GetLightShadowCasters(int index);
+  double GetLightTime(int index);
+  double GetLightFieldShadowBytes(int index);
+  double GetLightFieldShadowBuildTime(int index);
+  int GetLightTranslucentLayers(int index);
+  double GetLightTranslucentBytes(int index);
+  ///@}
+
+protected:
+  vtkLightShaftFrameReport();
+  ~vtkLightShaftFrameReport() override;
+
+  int Method = -1;
+  int ViewportSize[2] = { 0, 0 };
+  int NumberOfSceneRenders = 0;
+  int MultiSamples = 0;
+  bool PlainScene = false;
+  bool RendererFXAA = false;
+  int GLErrorCount = 0;
+  int NumberOfSlicesDrawn = 0;
+  double SliceDepthRange[2] = { 0.0, 0.0 };
+  int NumberOfSlabBatches = 0;
+  int LatticeResolution = 0;
+  int NumberOfSteps = 0;
+  int NumberOfPostPasses = 0;
+  double RadialGuardBand = 0.0;
+  int DownsampleFactor = 1;
+  bool ShadowMapRendered = false;
+  int NumberOfShadowCasters = 0;
+  double LightDepthRange[2] = { 0.0, 0.0 };
+  double ShadowBias = 0.0;
+  double PredictedError = -1.0;
+  int ErrorModelSetting = -1;
+  double DepthRangeInBeamWidths = 0.0;
+  double BeamWidthInPixels = 0.0;
+  double OpticalDepth = 0.0;
+  double ShadowTexelInPixels = 0.0;
+  bool LightInView = false;
+  double TimeBudget = 0.0;
+  double PredictedFrameTime = -1.0;
+  double FrameTime = -1.0;
+  int RefinementEstimates = 0;
+  bool RefinementConverged = false;
+  bool InScatterReused = false;
+
+private:
+  vtkLightShaftFrameReport(const vtkLightShaftFrameReport&) = delete;
+  void operator=(const vtkLightShaftFrameReport&) = delete;
+
+  // Only the pass writes it.
+  friend class vtkLightShaftPass;
+  /// The frame's values, with the shader variants and source it compiled.
+  void Publish(const vtkLightShaftFrame& frame, const char* variant, const char* source);
+  void SetGLErrorCount(int count) { this->GLErrorCount = count; }
+
+  class Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+#endif
