@@ -33,16 +33,16 @@ def measure(case, slices_list, shadow_sizes, width, height):
     renderer, window = rh.make_window(width, height)
     info = scenes.sphere_and_floor(renderer)
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
-    shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
+    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.02, 0.01, 0.03)
     shafts.JitterOff()  # the slab integration alone
     shafts.SetBlurRadius(0)
     if case == "hg":
-        shafts.SetPhaseFunctionToHenyeyGreenstein()
-        shafts.SetAnisotropy(0.6)
+        shafts.GetMedium().SetPhaseFunctionToHenyeyGreenstein()
+        shafts.GetMedium().SetAnisotropy(0.6)
     elif case == "light-in-view":
         info.light.SetAttenuationValues(0.0, 0.0, 1.0)
-        shafts.SetPhaseFunctionToRayleigh()
+        shafts.GetMedium().SetPhaseFunctionToRayleigh()
         camera = renderer.GetActiveCamera()
         camera.SetPosition(0.0, 8.0, 12.0)
         camera.SetFocalPoint(0.0, 4.0, 0.0)
@@ -73,8 +73,8 @@ def frame_times(slices_list, width, height, frames=15):
 
     plain = rh.median_frame_time(window, frames)
     shafts = vtkLightShaftPass()
-    shafts.SetScatteringCoefficient(0.05, 0.04, 0.03)
-    shafts.SetAbsorptionCoefficient(0.02, 0.01, 0.03)
+    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.02, 0.01, 0.03)
     shafts.SetShadowMapSize(2048)
     shafts.JitterOff()
     shafts.SetBlurRadius(0)
