@@ -146,9 +146,9 @@ public:
   ///@{
   /**
    * Per used light: how many lights the frame used (the given ones switched on, or the
-   * automatic choice) and the i-th, in the order their in-scatter was added; its kind
-   * (vtkLightShaftPass::LightKindType); the method that computed its in-scatter (-1: none, e.g.
-   * outside the view); its slabs; whether its shadow map was rendered this frame, or reused
+   * automatic choice) and the i-th (default the first), in the order their in-scatter was added;
+   * its kind (vtkLightShaftPass::LightKindType); the method that computed its in-scatter (-1: none,
+   * e.g. outside the view); its slabs; whether its shadow map was rendered this frame, or reused
    * because nothing that decides it changed; its casters; the GPU milliseconds its in-scatter
    * took (timer queries of the latest frame whose queries completed; -1: not available); its
    * light-leg table through a density field: bytes (0: none) and build milliseconds (0:
@@ -156,7 +156,7 @@ public:
    * nullptr, -1, -1, 0, false, false, 0, -1, 0, 0, 0 and 0.
    */
   int GetNumberOfUsedLights();
-  vtkLight* GetUsedLight(int index);
+  vtkLight* GetUsedLight(int index = 0);
   int GetLightKind(int index);
   int GetLightMethod(int index);
   int GetLightSlicesDrawn(int index);

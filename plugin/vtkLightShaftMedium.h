@@ -143,7 +143,7 @@ public:
    * pipeline instead (brought up to date at each render; an output that cannot be a field gets
    * one error and the last usable field is kept); each setter replaces the other's source.
    * GetDensityField is the image in use (a pipeline's last usable output). Defaults are
-   * nullptr (homogeneous) and no name.
+   * nullptr (homogeneous), nullptr and "" (the scalars).
    */
   void SetDensityField(vtkImageData* density);
   vtkImageData* GetDensityField();

@@ -63,7 +63,7 @@ sys.path.insert(0, HERE)
 import lightshaft_reference as ref  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from benchmark import reference_image  # noqa: E402  (tests/benchmarks/benchmark.py)
-from lightshafts import parameter_owner, vtkLightShaftPass  # noqa: E402
+from lightshafts import parameter_owner, vtkLightShaftMedium, vtkLightShaftPass  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow  # noqa: E402
 from vtkmodules.vtkCommonMath import vtkMatrix4x4  # noqa: E402
 from vtkmodules.vtkFiltersSources import (  # noqa: E402

@@ -5,7 +5,7 @@ import math
 import pytest
 
 import lightshafts
-from lightshafts import parameter_owner, vtkLightShaftPass
+from lightshafts import parameter_owner, vtkLightShaftMedium, vtkLightShaftPass
 from vtkmodules.vtkRenderingCore import vtkLight
 from vtkmodules.vtkRenderingOpenGL2 import vtkImageProcessingPass, vtkRenderStepsPass
 
@@ -154,7 +154,7 @@ def test_vector_clamping(name):
 ])
 def test_non_finite_refused(messages, name, args):
     p = vtkLightShaftPass()
-    log = messages(p)
+    log = messages(parameter_owner(p, name))  # (the medium's setters report on the medium)
     before = getattr(parameter_owner(p, name), "Get" + name)()
     mtime = p.GetMTime()
     getattr(parameter_owner(p, name), "Set" + name)(*args)

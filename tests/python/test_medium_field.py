@@ -177,7 +177,7 @@ def test_the_named_array_is_read():
 
 
 def refused(shafts, messages, call, *args):
-    log = messages(shafts)
+    log = messages(shafts.GetMedium())  # (the medium's setters report on the medium)
     before = shafts.GetMTime()
     call(*args)
     assert shafts.GetMTime() == before, "a refused image changed the pass"

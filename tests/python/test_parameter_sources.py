@@ -22,11 +22,23 @@ FLOAT_PROBE = 1e300
 # ParaView property name -> the pass's parameter, where they differ.
 PARAVIEW_NAMES = {"ShaftExposure": "Exposure", "ShaftMethod": "Method", "ShaftJitter": "Jitter",
                   "ShaftBlurRadius": "BlurRadius", "ShaftDownsampleFactor": "DownsampleFactor",
-                  "ShaftTime": "Time"}
+                  "ShaftTime": "Time", "MediumDensityScale": "DensityScale",
+                  "MediumBackgroundDensity": "BackgroundDensity",
+                  "MediumShadowResolution": "FieldShadowResolution"}
+# The public headers whose documented groups hold parameters, and the class of each.
+HEADERS = {"vtkLightShaftPass.h": vtkLightShaftPass, "vtkLightShaftMedium.h": vtkLightShaftMedium}
+
+
+def has_parameter(name):
+    try:
+        parameter_owner(vtkLightShaftPass(), name)
+    except TypeError:
+        return False
+    return True
 
 
 def default(name):
-    value = getattr(vtkLightShaftPass(), "Get" + name)()
+    value = getattr(parameter_owner(vtkLightShaftPass(), name), "Get" + name)()
     return tuple(value) if isinstance(value, tuple) else (value,)
 
 

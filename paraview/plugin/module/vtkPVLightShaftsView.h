@@ -55,8 +55,8 @@ public:
 
   ///@{
   /**
-   * What the last render did (vtkLightShaftPass's GetLastRefinementConverged,
-   * GetLastRefinementEstimates, GetLastTimeBudget), for scripts: the view's information
+   * What the last render did (vtkLightShaftFrameReport's GetRefinementConverged,
+   * GetRefinementEstimates, GetTimeBudget), for scripts: the view's information
    * properties RefinementConverged, RefinementEstimates and LastTimeBudget.
    */
   bool GetRefinementConverged();
@@ -67,7 +67,7 @@ public:
   ///@{
   /**
    * The last render's shader variant and its first light's light-leg table build time
-   * (vtkLightShaftPass::GetLastShaderVariant, GetLastLightFieldShadowBuildTime(0)), for
+   * (vtkLightShaftFrameReport::GetShaderVariant, GetLightFieldShadowBuildTime(0)), for
    * scripts: the information properties LastShaderVariant and LastMediumShadowBuildTime.
    */
   const char* GetLastShaderVariant();
@@ -108,8 +108,9 @@ public:
 
   ///@{
   /**
-   * The medium and the image: forwarded to vtkLightShaftPass (same ranges and defaults;
-   * ShaftExposure is the pass's Exposure, the render view's own Exposure being tone mapping's).
+   * The medium (forwarded to the pass's vtkLightShaftMedium) and the image (to
+   * vtkLightShaftPass), with the same ranges and defaults; ShaftExposure is the pass's
+   * Exposure, the render view's own Exposure being tone mapping's.
    */
   void SetScatteringCoefficient(double r, double g, double b);
   void SetAbsorptionCoefficient(double r, double g, double b);
@@ -205,7 +206,7 @@ public:
 
   ///@{
   /**
-   * Scrolling-noise density: forwarded to vtkLightShaftPass.
+   * Scrolling-noise density: forwarded to the pass's vtkLightShaftMedium.
    */
   void SetNoiseAmplitude(double amplitude);
   void SetNoiseScale(double scale);
@@ -215,7 +216,9 @@ public:
 
   ///@{
   /**
-   * A medium from data, forwarded to vtkLightShaftPass (same ranges and defaults): the
+   * A medium from data, forwarded to the pass's vtkLightShaftMedium (SetDensityFieldConnection,
+   * SetDensityArrayName, SetDensityScale, SetBackgroundDensity, SetFieldShadowResolution: same
+   * ranges and defaults; the property names are those of earlier versions): the
    * MediumDensity property's pipeline output (a vtkImageData, brought up to date at each
    * render; none: the homogeneous medium), its array (MediumDensityArray: point or cell data,
    * the first component; empty: the scalars), scale, background density and the light leg's
