@@ -6,7 +6,7 @@
 
 The panes are ordinary props (vtkActor, opacity below 1, a colour each): the pass peels them in
 each light's view and passes 1 - a (1 - c) of the light through a pane of opacity a and colour c
-(README, "Translucent casters"), in the shafts and, with ShadowSurfaces, on the floor. Unlike a
+(docs/translucent-and-volumes.md), in the shafts and, with ShadowSurfaces, on the floor. Unlike a
 cookie, the glass belongs to the scene: move the light or the panes and the colours follow.
 Without a display, run it under `xvfb-run -a`.
 """

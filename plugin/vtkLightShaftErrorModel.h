@@ -7,7 +7,7 @@
  *
  * The ladder and the model's coefficients are fitted on random scenes by
  * tests/benchmarks/fit_error_model.py, which writes vtkLightShaftErrorModelTable.h; the model
- * is validated on other seeds (README "Target error").
+ * is validated on other seeds (docs/quality-and-cost.md).
  */
 #ifndef vtkLightShaftErrorModel_h
 #define vtkLightShaftErrorModel_h

@@ -221,7 +221,7 @@ void AppendSlabTriangles(const SlabFootprint& slab, int lattice, std::vector<flo
 
 /// Lattice cells built and drawn in one frame at most, shared equally by the lights that
 /// radiate: the cells are clipped on the CPU, so their number bounds the frame's CPU time
-/// (about 1.5 s for 2^21 cells here: README "Behaviour with any scene").
+/// (about 1.5 s for 2^21 cells here: docs/any-scene.md).
 constexpr long long LatticeCellBudget = 1LL << 21;
 
 /// The lattice resolution that `slabs` slabs of one of `lights` lights can afford within
@@ -232,8 +232,8 @@ int AffordableLattice(int requested, int slabs, int lights = 1);
 /// Segments (a step of a march, a slab across a pixel: one closed-form integral and one
 /// lookup each) a frame's in-scatter integrates at most, counted over the in-scatter's pixels
 /// and shared equally by the lights that radiate: the bound of a frame's time at the sampling
-/// maxima (about 16 s here, 15 ns a segment on llvmpipe with 2 cores: README "Behaviour with
-/// any scene").
+/// maxima (about 16 s here, 15 ns a segment on llvmpipe with 2 cores: docs/any-scene.md
+/// ).
 constexpr long long SegmentBudget = 1LL << 30;
 
 /// The steps or slabs per pixel that `pixels` in-scatter pixels of one of `lights` lights can

@@ -19,7 +19,7 @@ class vtkTranslucentPass;
  *          fragment's colour replaced by the surface's transmittance and the nearest surface
  *          behind the previous layer and in front of the opaque casters kept.
  *
- * The rule (README, "Translucent casters"): a surface of opacity a (the fragment's, with its
+ * The rule (docs/translucent-and-volumes.md): a surface of opacity a (the fragment's, with its
  * scalars' and texture's alpha) and diffuse colour c (the mapper's: Diffuse times the colour
  * or the mapped scalars, clamped to [0, 1]) passes 1 - a (1 - c) of the light per channel:
  * a - the covered fraction - filters it through c, the rest passes. Opacity 0 passes all (VTK

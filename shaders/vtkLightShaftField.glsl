@@ -1,5 +1,5 @@
 // Shared by the slab fragment shaders when the medium comes from data (LIGHTSHAFT_FIELD): the
-// density rho(x) of vtkLightShaftPass::SetMediumDensity, a 3D texture (trilinear, clamped to
+// density rho(x) of vtkLightShaftMedium::SetDensityField, a 3D texture (trilinear, clamped to
 // its edge, as vtkLightShaftDensityField's rule), and its integral along a segment for the
 // extinction of both legs. Without the feature nothing here is compiled.
 #ifdef LIGHTSHAFT_FIELD

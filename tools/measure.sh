@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Reproduces a measured figure of the README: runs one of the measurement scripts offscreen
+# Reproduces a measured figure of the docs: runs one of the measurement scripts offscreen
 # (Xvfb) against the build in build/, writing into docs/ unless told otherwise.
 #
 #   tools/measure.sh accuracy          # slices vs the float64 reference (docs/accuracy.md)
@@ -17,8 +17,8 @@
 #                                      # medium (docs/medium-field.md; about 1 min)
 #   tools/measure.sh medium-field-pareto  # each method through a plume: speed against
 #                                      # error (docs/medium-field.md; about 2 min)
-#   tools/measure.sh translucent       # translucent casters' cost per layer (README,
-#                                      # "Translucent casters"; about 3 min)
+#   tools/measure.sh translucent       # translucent casters' cost per layer
+#                                      # (docs/translucent-cost.md; about 3 min)
 #   tools/measure.sh worst-corners     # the slider corners (docs/robustness.md)
 #   tools/measure.sh random-scenes     # 50 random scenes: presets, methods, targets, the
 #                                      # fitted ladder (TargetError's cost against the oracle)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Proves the pass rendering with no X server, through EGL (Mesa's EGL on llvmpipe, or a GPU's)
-# and OSMesa (CPU only), on the route the system's VTK offers (README, "Headless"):
+# and OSMesa (CPU only), on the route the system's VTK offers (docs/headless.md):
 #
 #   run-time choice (VTK 9.4 and later: Debian unstable's 9.6): the distribution's VTK picks its
 #     window class when a window is made (VTK_DEFAULT_OPENGL_WINDOW). Per backend whose library
@@ -55,7 +55,7 @@ if [ -z "$route" ]; then
   if [ "$route" = built ] && [ -n "$system_vtk" ] && [ "$system_vtk" != 9.1 ]; then
     echo "== headless: the system's VTK $system_vtk picks its window system when it is built" \
       "(its Debian build: X only), and tools/build-headless-vtk.sh builds Debian 12's VTK 9.1" \
-      "only: no headless route here (README, \"Headless\")"
+      "only: no headless route here (docs/headless.md)"
     echo "0 passed, 0 failed, ${#backends[@]} not available"
     exit 0
   fi

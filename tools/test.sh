@@ -2,8 +2,8 @@
 # Runs the whole test suite offscreen (under Xvfb) against the build in build/:
 # the C++ tests (ctest) and the Python tests (pytest). Run tools/quickstart.sh first.
 # Xvfb gets -noreset: without it the server resets whenever its last client disconnects and
-# drops a client connecting at that moment (VTK: "bad X server connection"; README, Known
-# issues), which pvbatch's display probe and any window re-creation run into.
+# drops a client connecting at that moment (VTK: "bad X server connection"; docs/known-issues.md
+# ), which pvbatch's display probe and any window re-creation run into.
 # LIGHTSHAFTS_XVFB_SERVERNUM (default 99) is the first display number xvfb-run tries: lanes run
 # side by side in chroots (tools/test-distros.sh) need their own, since an X server's abstract
 # socket is shared by every root of the machine (a second :99 fails to start, and a client could

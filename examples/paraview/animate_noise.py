@@ -67,7 +67,7 @@ for frame in range(args.frames):
     path = os.path.join(args.output_dir, f"frame_{frame:04d}.png")
     SaveScreenshot(path, view, ImageResolution=list(args.size))
     print(f"frame {frame}: time {GetTimeKeeper().Time:.3f} -> {path}", flush=True)
-# pvbatch 5.11 crashes in its own teardown after a script ends (README, Known issues): skip
+# pvbatch 5.11 crashes in its own teardown after a script ends (docs/known-issues.md): skip
 # it, with the output flushed (from ParaView 6.0 it goes through C stdio, which os._exit drops).
 sys.stdout.flush()
 ctypes.CDLL(None).fflush(None)

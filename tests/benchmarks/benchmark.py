@@ -199,7 +199,7 @@ def main():
         build, sigma_s, sigma_a = SCENES[name]
         renderer, window = rh.make_window(*args.size)
         build(renderer)
-        # After the scene's first frames have settled (README, Known issues).
+        # After the scene's first frames have settled (docs/known-issues.md).
         plain = rh.median_frame_time(window, args.frames, warm_up=30, warm_up_seconds=2.0)
         reference = None
         for family, label, params in settings:

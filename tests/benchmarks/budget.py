@@ -4,7 +4,7 @@
     PYTHONPATH=build/lib/python3.11/dist-packages xvfb-run -a -s "-noreset" /usr/bin/python3 \
         tests/benchmarks/budget.py --output-dir docs
 
-Scene: the README's window scene (lightshafts.scenes.window_room, σ_s 0.05, exposure 40) at
+Scene: the README picture's window scene (lightshafts.scenes.window_room, σ_s 0.05, exposure 40) at
 --size, with the pass's still setting (--still: a preset, or RAY_MARCH 16 steps with a 2048²
 map) and ProgressiveRefinement on. The path: the window's DesiredUpdateRate set to --rate (what
 VTK's interactors do while the user drags: the renderer's AllocatedRenderTime becomes the

@@ -22,7 +22,7 @@ nine times in ten. It writes plugin/vtkLightShaftErrorModelTable.h (the ladder a
 coefficients), docs/error-model.md (the fit, the presets the training percentiles choose) and
 docs/error-model-training.csv (the training rows with their features).
 
-The features are read from the pass (GetLastDepthRangeInBeamWidths, ...) by rendering each
+The features are read from the pass (GetLastFrame().GetDepthRangeInBeamWidths(), ...) by rendering each
 training scene once, so that the fit and the pass use exactly the same numbers.
 """
 
@@ -50,7 +50,7 @@ QUANTILE = 90      # of the leave-one-out residuals: the margin
 # Errors below are taken as this: a tenth of the smallest target validated (0.5%), so that the
 # fit spends nothing on telling 0.001% from 0.0001%.
 ERROR_FLOOR = 5e-4
-# The presets' aims: 90th-percentile error of each (README "Benchmark and presets").
+# The presets' aims: 90th-percentile error of each (docs/quality-and-cost.md).
 AIMS = (("Draft", 0.05), ("Interactive", 0.02), ("Final", 0.005))
 
 
@@ -247,7 +247,7 @@ def write_markdown(path, report, presets, rows):
     lines = ["# The error model of TargetError", "",
              f"Fitted by `tests/benchmarks/fit_error_model.py` on {n} random scenes "
              "(`tools/measure.sh error-model`: seeds 8 and 9, 240p-720p; validated on the "
-             "held-out seed 0, README \"Target error\" and docs/random-scenes.md). Per "
+             "held-out seed 0, docs/quality-and-cost.md and docs/random-scenes.md). Per "
              "setting of the ladder (cheapest first): the training errors "
              "(relative RMS against the float64 reference), the spread of log(error) around "
              "its geometric mean and around the fit (leave-one-out), and the margin added to "

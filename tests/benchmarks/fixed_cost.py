@@ -9,7 +9,7 @@ measured in one run: the plain frame (no pass), ANALYTIC at full resolution,
 ANALYTIC at DownsampleFactor 8 (the integral over 1/64 of the pixels: the frame is then nearly
 all fixed cost: the scene into the pass's targets, the depth-aware upsampling, the composite),
 the same without AttenuateScene (the composite's aerial perspective), and the in-scatter's own
-GPU time (GetLastLightTime, timer queries). Each is a median of --frames frames after a warm-up
+GPU time (GetLastFrame().GetLightTime, timer queries). Each is a median of --frames frames after a warm-up
 frame (glFinish), and a ratio to the plain frame. Prints one line per scene and setting.
 """
 

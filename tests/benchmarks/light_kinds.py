@@ -11,7 +11,7 @@ through (0.5, 6, 0) towards the origin), and with two lights (the spot and the p
 four lights (two spots, two point lights). For every setting: the median frame time over
 --frames frames after a warm-up frame, each finished with glFinish, divided by the median frame
 time of the same scene without the pass measured in the same run; the GPU time of each light's
-in-scatter (GetLastLightTime: shadow map, slabs or march, own passes; median over the frames);
+in-scatter (GetLastFrame().GetLightTime: shadow map, slabs or march, own passes; median over the frames);
 and the relative RMS error of the in-scatter against vtkLightShaftReference (exact surfaces and
 shadows, float64; pixels above 1% of the reference's peak). "surfaces" rows add ShadowSurfaces
 (one more scene render, and one full-screen pass per light) to the defaults.

@@ -5,7 +5,7 @@ a density field against the homogeneous medium at the same setting, in one run.
     PYTHONPATH=build/lib/python3.11/dist-packages xvfb-run -a -s "-noreset" /usr/bin/python3 \
         tests/benchmarks/medium_field_cost.py [--size 640x480] [--frames 5]
 
-Scene: the README's window scene (σ_s 0.05, exposure 40), RAY_MARCH at --steps. Fields: VTK's
+Scene: the README picture's window scene (σ_s 0.05, exposure 40), RAY_MARCH at --steps. Fields: VTK's
 wavelet (vtkRTAnalyticSource) at 64³, 128³ and 256³ samples over the scene's bounds, rescaled to
 mean 1. For each: the median frame (of --frames, after one; each frame's Time differs, so the
 shafts are computed every frame), the first frame after the field was set less that (the

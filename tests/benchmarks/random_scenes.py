@@ -597,8 +597,8 @@ def run_scene(scene, settings, frames, log, keep_pictures):
         # view holds no medium, only rounding (the reference's peak was 1e-22 in one such scene).
         return None, None
     log.take()
-    # The plain frame after the scene's first frames have settled (30 frames, or 2 s: README,
-    # Known issues); the settings' frames come after it, settled too.
+    # The plain frame after the scene's first frames have settled (30 frames, or 2 s:
+    # docs/known-issues.md); the settings' frames come after it, settled too.
     plain = rh.median_frame_time(window, max(frames, 1), warm_up=30, warm_up_seconds=2.0)
     _, unexpected = log.take()
     if unexpected:

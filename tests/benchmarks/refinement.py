@@ -5,7 +5,7 @@ reference falls with the estimates, and the seconds that takes.
     PYTHONPATH=build/lib/python3.11/dist-packages xvfb-run -a -s "-noreset" /usr/bin/python3 \
         tests/benchmarks/refinement.py --output-dir docs
 
-Scene: the README's window scene (lightshafts.scenes.window_room, σ_s 0.05, exposure 40) at
+Scene: the README picture's window scene (lightshafts.scenes.window_room, σ_s 0.05, exposure 40) at
 --size. For each setting: the plain frame (no pass; median of --frames after the scene has
 settled, as tools/measure.sh random-scenes measures it); then, with ProgressiveRefinement on,
 the camera nudged (a new picture) and --estimates frames rendered one after another, each

@@ -5,7 +5,7 @@ camera's own: the bound on reusing earlier frames by reprojecting the picture (i
     PYTHONPATH=build/lib/python3.11/dist-packages xvfb-run -a -s "-noreset" /usr/bin/python3 \
         tests/benchmarks/reprojection_bound.py --output docs/reprojection.md
 
-Scene: the README's window scene (lightshafts.scenes.window_room, σ_s 0.05, exposure 40) at
+Scene: the README picture's window scene (lightshafts.scenes.window_room, σ_s 0.05, exposure 40) at
 --size. For each camera move (one frame of an interactor's path), the float64 reference
 (vtkLightShaftReference: exact surfaces and shadows) at camera A is carried to camera B three
 ways and compared with B's reference (relative RMS over the pixels above 1% of its peak):

@@ -5,7 +5,7 @@ the resolution exponents of vtkLightShaftCostModel.
     PYTHONPATH=build/lib/python3.11/dist-packages xvfb-run -a -s "-noreset" /usr/bin/python3 \
         tests/benchmarks/resolution_cost.py
 
-Scene: the README's window scene (σ_s 0.05, exposure 40) at --size, the camera turned ±0.5
+Scene: the README picture's window scene (σ_s 0.05, exposure 40) at --size, the camera turned ±0.5
 degree every frame (as while moving: the shadow map is kept, the epipolar lines are not).
 For each setting at DownsampleFactor 1, 2 and 4: the median frame (of --frames, after two)
 less the plain frame, and the exponent e of time ∝ (pixels / factor²)^e between full and

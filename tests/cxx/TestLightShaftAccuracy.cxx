@@ -7,7 +7,7 @@
 //      integration's error alone): relative RMS error <= 0.5%;
 //   3. against the in-scatter the X (GLX) build rendered, stored in tests/baselines: relative
 //      RMS difference <= 1e-3 and largest difference <= 1e-2 of the peak. On one machine the
-//      backends share Mesa's llvmpipe and agree far closer (README, "Headless"); the bounds
+//      backends share Mesa's llvmpipe and agree far closer (docs/headless.md); the bounds
 //      leave room for another driver's rounding, and 1 and 2 hold for any driver.
 // Any error or warning VTK prints fails the test. The figures are printed on one line,
 // "accuracy: ...", which tools/test-headless.sh reports.

@@ -170,7 +170,7 @@ def finish(status):
     """End the pvbatch run with `status`, skipping pvbatch's teardown: ParaView 5.11 segfaults
     in it after sys.exit() from a script, and ParaView 6.1 (Debian's VTK 9.6) warns there that
     its own composite mappers left textures active ("There are still active textures when there
-    should not be"), a plain RenderView too (README, Known issues). What the script printed is
+    should not be"), a plain RenderView too (docs/known-issues.md). What the script printed is
     flushed first: from 6.0 pvbatch's Python output goes through C stdio, which os._exit would
     drop."""
     import ctypes

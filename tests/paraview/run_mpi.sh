@@ -10,7 +10,7 @@ here="$(cd "$(dirname "$0")" && pwd)"
 mkdir -p "$out"
 rm -f "$out/serial.npz" "$out/np2.npz"
 pvbatch "$here/mpi_shafts.py" "$out/serial.npz" > "$out/serial.log" 2>&1
-# pvbatch 5.11 ends scripts with os._exit (README), so mpirun reports an improper exit of the
+# pvbatch 5.11 ends scripts with os._exit (docs/known-issues.md), so mpirun reports an improper exit of the
 # other rank: its status is not the test's; the results file is.
 mpirun --allow-run-as-root --oversubscribe -np 2 -x PYTHONPATH \
   -x LIGHTSHAFTS_PARAVIEW_PLUGIN_LIST -x LIGHTSHAFTS_PARAVIEW_PLUGIN -x DISPLAY \
@@ -21,7 +21,7 @@ for f in serial np2; do
     echo "FAIL: no $f results"
     if grep -q "bad X server connection" "$out/$f.log"; then
       echo "(XOpenDisplay failed. Is the X server up? An Xvfb without -noreset drops a client" \
-        "that connects as the server resets after its last client left: README, Known issues.)"
+        "that connects as the server resets after its last client left: docs/known-issues.md.)"
     fi
     exit 1
   fi

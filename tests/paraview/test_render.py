@@ -101,7 +101,7 @@ def main():
     if identical > 0:
         failures.append("an empty medium differs from a plain RenderView")
     # (The plain view is left to the end of the run: deleting one of several views makes
-    # ParaView 6.1 warn about its own composite mappers' active textures; README, Known issues.)
+    # ParaView 6.1 warn about its own composite mappers' active textures; docs/known-issues.md.)
 
     # 4. Tone mapping is chained, not replaced.
     # A bright picture (this scene is dark, where the curve is nearly the identity).

@@ -19,7 +19,7 @@ def make_window(width=320, height=240):
     One window serves every test, so the tests do not close and reopen X connections one after
     another: an Xvfb started without -noreset (xvfb-run's default) resets when its last client
     disconnects and drops a client that connected just before, and VTK then aborts with
-    `bad X server connection` (see README, Known issues).
+    `bad X server connection` (see docs/known-issues.md).
     """
     global _shared_window
     if _shared_window is None:
@@ -260,7 +260,7 @@ def floor_shadow_masks(renderer, window, info, erode=2):
 def median_frame_time(window, frames, warm_up=1, warm_up_seconds=0.0):
     """Median wall time of `frames` renders, each finished with glFinish, after `warm_up`
     frames, or more until `warm_up_seconds` have passed. A fresh scene's first frames can be
-    slow for a while (README, Known issues: 23 frames for the sphere scene's sphere)."""
+    slow for a while (docs/known-issues.md: 23 frames for the sphere scene's sphere)."""
     import statistics
     import time
     start = time.perf_counter()
@@ -279,7 +279,7 @@ def median_frame_time(window, frames, warm_up=1, warm_up_seconds=0.0):
 
 
 def window_scene(width, height):
-    """The README's window scene (scenes.window_room) at width x height, its settled plain
+    """The README picture's window scene (scenes.window_room) at width x height, its settled plain
     frame time (median of 5 after 30 frames and 2 s), and a vtkLightShaftPass with the README's
     medium (σ_s 0.05, exposure 40), not yet set on the renderer:
     (renderer, window, plain_seconds, shafts)."""

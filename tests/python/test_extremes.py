@@ -26,7 +26,7 @@ pytestmark = pytest.mark.sweep
 
 
 METHODS = ["slices", "ray-march", "radial-blur", "analytic", "epipolar", "light-volume"]
-# RADIAL_BLUR measures 6% on the test scene's default view (README); at the extremes (eye in
+# RADIAL_BLUR measures 6% on the test scene's default view (docs/methods.md); at the extremes (eye in
 # the beam, light behind the camera, pencil cones) its screen-space shadows are worse.
 RADIAL_BLUR_BOUND = 0.3
 _method = "slices"

@@ -73,7 +73,7 @@ REFUSING = {"Exposure", "Anisotropy", "NoiseAmplitude", "NoiseScale", "Time", "D
             "Density", "Weight", "RadialGuardBand", "ScatteringCoefficient",
             "DensityScale", "BackgroundDensity",
             "AbsorptionCoefficient", "NoiseVelocity1", "NoiseVelocity2", "TimeBudget"}
-# The pass's documented warnings (README "Behaviour with any scene").
+# The pass's documented warnings (docs/any-scene.md).
 DOCUMENTED_WARNINGS = ["No spot or point light in the renderer", "given to the pass are switched off",
                        "The cookie shapes spot and directional lights only",
                        "cookie texture has no image", "noise texture has no image",

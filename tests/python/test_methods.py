@@ -2,7 +2,7 @@
 bound per method, what each computes and skips, and invariants that must hold for all of them.
 
 Scene: scenes.sphere_and_floor at 320x240, the accuracy tests' medium, no jitter or blur unless
-a test says otherwise. Bounds, with what was measured on llvmpipe (README "Methods"; `pytest -s`
+a test says otherwise. Bounds, with what was measured on llvmpipe (docs/methods.md; `pytest -s`
 prints the figures):
 - RAY_MARCH, 512 steps, no interleave: 1% (measured 0.045%); error falls with steps;
   interleaving (2x2, 3x3, 4x4 at 16 steps) beats no interleave at 16 steps (measured 0.53 /
@@ -266,7 +266,7 @@ def test_light_volume_through_many_shadow_walls():
     # Measured: 1.79% RMS, 1.44% energy (RAY_MARCH, 256 steps: 0.96%, 0.27%). The mesh joins
     # a bar's texel centres to the floor's beside it: its silhouette is a slope one cell wide,
     # which misses a little shadow near the bar and adds as much nearer the floor, where the
-    # cells are wider: the shadows come out about a cell's worth too large (README).
+    # cells are wider: the shadows come out about a cell's worth too large (docs/methods.md).
     assert pixels > 5000
     assert relative < 0.03 and energy < 0.025
 

@@ -30,11 +30,12 @@ HEADERS = {"vtkLightShaftPass.h": vtkLightShaftPass, "vtkLightShaftMedium.h": vt
 
 
 def has_parameter(name):
+    """Whether `name` is a parameter (a Set and a Get) of the pass or of its medium."""
     try:
-        parameter_owner(vtkLightShaftPass(), name)
+        owner = parameter_owner(vtkLightShaftPass(), name)
     except TypeError:
         return False
-    return True
+    return hasattr(owner, "Get" + name)
 
 
 def default(name):

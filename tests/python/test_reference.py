@@ -165,7 +165,7 @@ def test_shadow_map_visibility_separates_shadow_map_error(size):
     # The pass against the exact reference and against the reference that uses the pass's own
     # shadow map: a coarse map (16^2) is far from the exact one near the sphere's shadow (3.3%
     # measured), close to its own (0.08%: the integration error, the same for every size;
-    # README "The float64 reference in C++" quotes what this prints).
+    # docs/reference-and-benchmarks.md quotes what this prints).
     renderer, window, info, shafts = scene(200, 150)
     shafts.SetNumberOfSlices(512)
     shafts.JitterOff()

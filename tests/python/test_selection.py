@@ -1,7 +1,7 @@
 """Picking and selection through the pass give exactly the answers they give without it.
 
 VTK's hardware selector renders ids, not colours: while it renders, the pass draws the plain
-scene as the renderer would without it (GetLastPlainScene), and the next frame has its shafts
+scene as the renderer would without it (GetLastFrame().GetPlainScene()), and the next frame has its shafts
 again. Compared with the same scene and camera with no pass: vtkHardwareSelector (cells,
 points; the whole window, boxes and single pixels), vtkPropPicker (with and without a pick
 list), vtkCellPicker (software),

@@ -1,5 +1,5 @@
 """Translucent casters: a prop with opacity a < 1 and diffuse colour c passes 1 - a (1 - c) of
-the light per channel, several surfaces multiply (README, "Translucent casters").
+the light per channel, several surfaces multiply (docs/translucent-and-volumes.md).
 
 Scene: scenes.sphere_and_floor without its sphere (the spot at (0.5, 6, 0) aiming at the
 origin, 30 degrees), a pane at y = 4 across the whole scene (and a second at y = 3.5 for
