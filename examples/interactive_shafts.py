@@ -34,6 +34,7 @@ from vtkmodules.vtkInteractionStyle import vtkInteractorStyleTrackballCamera
 from vtkmodules.vtkRenderingCore import (
     vtkInteractorEventRecorder, vtkRenderer, vtkRenderWindow, vtkRenderWindowInteractor)
 
+import lightshafts
 from lightshafts import scenes, vtkLightShaftPass, write_png
 
 METHODS = [vtkLightShaftPass.SLICES, vtkLightShaftPass.RAY_MARCH, vtkLightShaftPass.RADIAL_BLUR,
@@ -85,10 +86,12 @@ class Demo:
         light.SetPosition(x + dx, y + dy, z + dz)
 
     def scale(self, name, factor):
-        getattr(self.shafts, "Set" + name)(getattr(self.shafts, "Get" + name)() * factor)
+        owner = lightshafts.parameter_owner(self.shafts, name)  # the pass or its medium
+        getattr(owner, "Set" + name)(getattr(owner, "Get" + name)() * factor)
 
     def add(self, name, delta):
-        getattr(self.shafts, "Set" + name)(getattr(self.shafts, "Get" + name)() + delta)
+        owner = lightshafts.parameter_owner(self.shafts, name)
+        getattr(owner, "Set" + name)(getattr(owner, "Get" + name)() + delta)
 
     def scale_sigma(self, factor):
         self.shafts.GetMedium().SetScatteringCoefficient(
@@ -104,7 +107,8 @@ class Demo:
         getattr(self.shafts, "Set" + name)(max(1, int(round(current * factor))))
 
     def toggle_noise(self):
-        self.shafts.GetMedium().SetNoiseAmplitude(0.0 if self.shafts.GetMedium().GetNoiseAmplitude() > 0.0 else 0.8)
+        medium = self.shafts.GetMedium()
+        medium.SetNoiseAmplitude(0.0 if medium.GetNoiseAmplitude() > 0.0 else 0.8)
 
     # --- frames and reports ----------------------------------------------------------------
     def render(self):
@@ -114,20 +118,20 @@ class Demo:
         self.last_frame_ms = 1000.0 * (time.perf_counter() - start)
 
     def report(self, key):
-        p = self.shafts
+        p, medium, frame = self.shafts, self.shafts.GetMedium(), self.shafts.GetLastFrame()
         method = vtkLightShaftPass.GetMethodName(p.GetMethod())
-        used = vtkLightShaftPass.GetMethodName(p.GetLastFrame().GetMethod())
+        used = vtkLightShaftPass.GetMethodName(frame.GetMethod())
         print(f"[{key}] method={method} (used {used}) light={self.info.light.GetPosition()} "
-              f"exposure={p.GetExposure():.4g} sigma_s={p.GetMedium().GetScatteringCoefficient()[0]:.4g} "
+              f"exposure={p.GetExposure():.4g} sigma_s={medium.GetScatteringCoefficient()[0]:.4g} "
               f"slices={p.GetNumberOfSlices()} steps={p.GetNumberOfSteps()} "
               f"samples={p.GetRadialSamples()} cells={p.GetLightVolumeResolution()} "
               f"decay={p.GetDecay():.3g} "
               f"weight={p.GetWeight():.3g} density={p.GetDensity():.3g} "
-              f"noise={p.GetMedium().GetNoiseAmplitude():.3g} time={p.GetMedium().GetTime():.4g}")
-        print(f"    last frame: {self.last_frame_ms:.1f} ms, slabs {p.GetLastFrame().GetNumberOfSlicesDrawn()}, "
-              f"shadow map {'yes' if p.GetLastFrame().GetShadowMapRendered() else 'no'}, "
-              f"post passes {p.GetLastFrame().GetNumberOfPostPasses()}, "
-              f"shader '{p.GetLastFrame().GetShaderVariant()}', GL errors {p.GetLastFrame().GetGLErrorCount()}",
+              f"noise={medium.GetNoiseAmplitude():.3g} time={medium.GetTime():.4g}")
+        print(f"    last frame: {self.last_frame_ms:.1f} ms, slabs {frame.GetNumberOfSlicesDrawn()}, "
+              f"shadow map {'yes' if frame.GetShadowMapRendered() else 'no'}, "
+              f"post passes {frame.GetNumberOfPostPasses()}, "
+              f"shader '{frame.GetShaderVariant()}', GL errors {frame.GetGLErrorCount()}",
               flush=True)
 
     def on_key(self, interactor, _event):

@@ -25,7 +25,7 @@ import time
 import numpy as np
 import pytest
 
-from lightshafts import parameter_owner, scenes, vtkLightShaftPass
+from lightshafts import parameter_owner, scenes, vtkLightShaftMedium, vtkLightShaftPass
 from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkImageData
 from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkPlaneSource, vtkSphereSource
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkHardwareSelector, vtkLight,
@@ -189,7 +189,13 @@ class Fuzzer:
             light.SwitchOff()
         self.shafts = vtkLightShaftPass()
         self.renderer.SetPass(self.shafts)
-        self.log = Messages(self.shafts)
+        self.log = Messages(self.shafts, self.shafts.GetMedium())
+        # Media to switch between: the pass's own, and one shared with a second pass (which
+        # renders nothing); SetMedium(None) adds fresh ones.
+        self.media = [self.shafts.GetMedium(), vtkLightShaftMedium()]
+        self.log.observe(self.media[1])
+        self.other_pass = vtkLightShaftPass()
+        self.other_pass.SetMedium(self.media[1])
         self.errors, self.warnings = self.log.errors, self.log.warnings
         self.steps = []
         self.undo = []  # how to undo the junk set on VTK objects
@@ -278,6 +284,18 @@ class Fuzzer:
             self.expected_errors.append(expected)
         self.shafts.GetMedium().SetDensityField(image)
         return f"SetDensityField({image.GetDimensions()}, {expected or 'usable'})"
+
+    def medium_object(self):
+        # Another medium: one already used (its values, field and noise as they were left), or
+        # a fresh default one.
+        if self.rng.random() < 0.25:
+            self.shafts.SetMedium(None)
+            self.media.append(self.shafts.GetMedium())
+            self.log.observe(self.media[-1])
+            return "SetMedium(None)"
+        index = self.rng.randrange(len(self.media))
+        self.shafts.SetMedium(self.media[index])
+        return f"SetMedium(media[{index}])"
 
     def translucent(self):
         # Translucent casters: a pane across the spot's beam, a sphere shell around the scene's
@@ -494,7 +512,7 @@ class Fuzzer:
     ACTIONS = [(set_scalar, 30), (set_vector, 8), (set_boolean, 6), (preset, 2), (textures, 5),
                (light, 10), (several_lights, 8), (usable_light, 5), (camera, 10), (window_size, 6), (viewport, 4), (multisamples, 3),
                (delegate, 2), (selection, 2), (still, 6), (update_rate, 3), (junk_vtk, 6),
-               (medium, 3), (translucent, 4)]
+               (medium, 3), (medium_object, 2), (translucent, 4)]
 
     # --- one frame --------------------------------------------------------------------------
     def step(self, index):

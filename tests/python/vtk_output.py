@@ -13,10 +13,10 @@ LIGHT_VOLUME_GIVES_WAY = r"Method LIGHT_VOLUME has no closed form"
 
 
 class Messages:
-    """Collects the ErrorEvent/WarningEvent messages a VTK object emits (VTK then does not print
-    them)."""
+    """Collects the ErrorEvent/WarningEvent messages some VTK objects emit (VTK then does not
+    print them): a pass and its medium, say, whose setters report on the medium."""
 
-    def __init__(self, obj):
+    def __init__(self, *objects):
         self.errors = []
         self.warnings = []
 
@@ -29,6 +29,12 @@ class Messages:
             self.warnings.append(message)
 
         self._callbacks = (on_error, on_warning)
+        for obj in objects:
+            self.observe(obj)
+
+    def observe(self, obj):
+        """Collect `obj`'s messages too."""
+        on_error, on_warning = self._callbacks
         obj.AddObserver("ErrorEvent", on_error)
         obj.AddObserver("WarningEvent", on_warning)
 
