@@ -96,9 +96,9 @@ def enable_light_shafts(plotter, light=None, quality=None, method=None, **params
     renderer when it is not there yet), or None for the pass's own choice (the renderer's spot
     and point lights). quality: "draft", "interactive" or "final". method: "slices",
     "ray-march", "radial-blur", "analytic", "automatic", "epipolar" or "light-volume". Every
-    other keyword is a parameter of vtkLightShaftPass (Name=value calls SetName(value);
-    lightshafts.add_light_shafts has the rules). Called again on the same renderer, it sets up the pass it already has and returns
-    it. The picture changes at the plotter's next render (show, screenshot, render).
+    other keyword is a parameter of vtkLightShaftPass or of its medium (Name=value calls
+    SetName(value) on whichever has it; lightshafts.add_light_shafts has the rules). Called again
+    on the same renderer, it sets up the pass it already has and returns it. The picture changes at the plotter's next render (show, screenshot, render).
     """
     _render_passes_module()
     renderer = _renderer(plotter)
