@@ -157,11 +157,18 @@ void vtkLightShaftPass::Internals::ReleaseOwnResources(vtkWindow* w)
 // Parameters.
 void vtkLightShaftPass::SetMedium(vtkLightShaftMedium* medium)
 {
-  if (medium && medium == this->Impl->Medium)
+  if (!medium)
+  {
+    this->Impl->Medium = vtkSmartPointer<vtkLightShaftMedium>::New(); // (a fresh one)
+  }
+  else if (medium != this->Impl->Medium)
+  {
+    this->Impl->Medium = medium;
+  }
+  else
   {
     return;
   }
-  this->Impl->Medium = medium ? medium : vtkSmartPointer<vtkLightShaftMedium>::New().Get();
   this->Modified();
 }
 
