@@ -182,7 +182,8 @@ struct vtkLightShaftFrame
   /// Progressive refinement's shift of the shadow maps' texel grid, in texels ([-0.5, 0.5)).
   double ShadowMapOffset[2] = { 0.0, 0.0 };
 
-  /// The method whose slab program the frame readied (the frame report's GetShaderVariant names it).
+  /// The method whose slab program the frame readied (the frame report's GetShaderVariant names
+  /// it).
   const vtkLightShaftMethod* ShaderMethod = nullptr;
 
   vtkLightShaftStatistics Statistics;

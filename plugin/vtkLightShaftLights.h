@@ -25,7 +25,8 @@ class vtkRenderer;
 class vtkWindow;
 
 /**
- * What a frame did for one of its lights; published as vtkLightShaftFrameReport's GetLight* read-outs.
+ * What a frame did for one of its lights; published as vtkLightShaftFrameReport's GetLight*
+ * read-outs.
  */
 struct vtkLightShaftLightStatistics
 {

@@ -41,7 +41,8 @@ std::string WithFeatures(const char* source, const std::vector<std::string>& def
 
 /**
  * A feature variant: the #defines a shader is compiled with, and their description as
- * vtkLightShaftFrameReport::GetShaderVariant reports it ("method=slices phase=isotropic shadow cookie ...").
+ * vtkLightShaftFrameReport::GetShaderVariant reports it ("method=slices phase=isotropic shadow
+ * cookie ...").
  */
 struct Variant
 {

@@ -108,7 +108,7 @@ int main(int argc, char* argv[])
   writer->SetFileName(output);
   writer->SetInputConnection(grab->GetOutputPort());
   writer->Write();
-  std::cout << "wrote " << output << " (" << shafts->GetLastFrame()->GetNumberOfSlicesDrawn() << " slices)"
-            << std::endl;
+  std::cout << "wrote " << output << " (" << shafts->GetLastFrame()->GetNumberOfSlicesDrawn()
+            << " slices)" << std::endl;
   return shafts->GetLastFrame()->GetGLErrorCount() == 0 ? 0 : 1;
 }

@@ -115,7 +115,8 @@ int main(int argc, char* argv[])
   {
     return Fail("OpenGL errors during the frame");
   }
-  if (shafts->GetLastFrame()->GetNumberOfSlicesDrawn() != 512 || !shafts->GetLastFrame()->GetShadowMapRendered())
+  if (shafts->GetLastFrame()->GetNumberOfSlicesDrawn() != 512 ||
+      !shafts->GetLastFrame()->GetShadowMapRendered())
   {
     return Fail("expected 512 slabs and a shadow map");
   }

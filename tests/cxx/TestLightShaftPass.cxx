@@ -106,7 +106,8 @@ int main(int argc, char* argv[])
   {
     return Fail("OpenGL errors during the frame");
   }
-  if (shafts->GetLastFrame()->GetNumberOfSlicesDrawn() != 256 || !shafts->GetLastFrame()->GetShadowMapRendered())
+  if (shafts->GetLastFrame()->GetNumberOfSlicesDrawn() != 256 ||
+      !shafts->GetLastFrame()->GetShadowMapRendered())
   {
     return Fail("expected 256 slabs and a shadow map");
   }
@@ -216,7 +217,8 @@ int main(int argc, char* argv[])
     shafts->SetMethod(method);
     window->Render();
     vtkNew<vtkImageData> methodRadiance;
-    if (shafts->GetLastFrame()->GetGLErrorCount() != 0 || !shafts->GetInScatteredRadiance(methodRadiance) ||
+    if (shafts->GetLastFrame()->GetGLErrorCount() != 0 ||
+        !shafts->GetInScatteredRadiance(methodRadiance) ||
         methodRadiance->GetPointData()->GetScalars()->GetRange(0)[1] <= 0.0)
     {
       return Fail(std::string("method ") + vtkLightShaftPass::GetMethodName(method) +
