@@ -100,7 +100,8 @@ def parameter_owner(shafts, name):
 def render_converged(window, shafts, max_frames=None):
     """Render `window` until the still picture of `shafts` (a vtkLightShaftPass) is converged:
     switches its ProgressiveRefinement on (and leaves it on) and renders until
-    GetLastFrame().GetRefinementConverged(), at most `max_frames` frames (default: its RefinementFrames).
+    GetLastFrame().GetRefinementConverged(), at most `max_frames` frames (default: its
+    RefinementFrames).
     Returns the number of frames rendered. For offscreen batch renders:
 
         frames = lightshafts.render_converged(window, shafts)
@@ -113,7 +114,8 @@ def render_converged(window, shafts, max_frames=None):
         window.Render()
         frames += 1
         # Converged, or nothing to refine (no shafts were computed).
-        if shafts.GetLastFrame().GetRefinementConverged() or shafts.GetLastFrame().GetRefinementEstimates() == 0:
+        frame = shafts.GetLastFrame()
+        if frame.GetRefinementConverged() or frame.GetRefinementEstimates() == 0:
             break
     return frames
 
