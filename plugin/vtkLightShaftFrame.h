@@ -63,6 +63,7 @@ struct vtkLightShaftParameters
   int LightVolumeResolution{};
   int MediumShadowResolution{};
   int TranslucentLayers{}; ///< the most layers of translucent casters (0: they cast nothing)
+  int CameraLayers{};      ///< the most translucent layers the camera leg peels
   double Decay{};
   double Density{};
   double Weight{};
@@ -91,6 +92,9 @@ struct vtkLightShaftStatistics
   int MultiSamples = 0;
   bool PlainScene = false;
   bool RendererFXAA = false;
+  /// The camera leg's translucent layers peeled this frame and the GL memory they hold.
+  int CameraLayers = 0;
+  double CameraLayerBytes = 0.0;
   double SliceDepthRange[2] = { 0.0, 0.0 }; ///< of the first light whose shafts were computed
   double RadialGuardBand = 0.0;
   std::vector<vtkLightShaftLightStatistics> Lights; ///< one per used light, in order
@@ -158,6 +162,11 @@ struct vtkLightShaftFrame
   /// shadow map is readied (vtkLightShaftShadowMap::Ready).
   vtkTextureObject* Translucency = nullptr;
   int TranslucentLayers = 0;
+  /// The translucent surfaces the camera sees in front of the opaque scene, peeled front to
+  /// back (side by side: r the fraction VTK's blending keeps of what lies behind, a the depth;
+  /// nullptr: none) and how many: the camera leg of the shafts behind them.
+  vtkTextureObject* CameraLayers = nullptr;
+  int CameraLayerCount = 0;
   vtkLightShaftLightStatistics* LightStatistics = nullptr;
   /// The lights that radiate this frame: they share the frame's segment budget.
   int RadiatingLights = 1;

@@ -59,6 +59,8 @@ void vtkLightShaftFrameReport::Publish(const vtkLightShaftFrame& frame,
   this->RefinementEstimates = stats.RefinementEstimates;
   this->RefinementConverged = stats.RefinementConverged;
   this->InScatterReused = stats.InScatterReused;
+  this->CameraTranslucentLayers = stats.CameraLayers;
+  this->CameraTranslucentBytes = stats.CameraLayerBytes;
   this->TimeBudget = stats.TimeBudget;
   this->PredictedFrameTime = stats.TimeBudget > 0.0 ? stats.PredictedFrameTime : -1.0;
   this->FrameTime = stats.FrameTime;

@@ -145,6 +145,17 @@ public:
 
   ///@{
   /**
+   * The camera leg through translucent surfaces: the layers of translucent surfaces in front of
+   * the opaque scene that the frame peeled from the camera (0: none in view, or no shafts
+   * computed) and the GL memory they hold, bytes (docs/translucent-and-volumes.md). Defaults
+   * are 0 and 0.
+   */
+  vtkGetMacro(CameraTranslucentLayers, int);
+  vtkGetMacro(CameraTranslucentBytes, double);
+  ///@}
+
+  ///@{
+  /**
    * Per used light: how many lights the frame used (the given ones switched on, or the
    * automatic choice) and the i-th (default the first), in the order their in-scatter was added;
    * its kind (vtkLightShaftPass::LightKindType); the method that computed its in-scatter (-1: none,
@@ -206,6 +217,8 @@ protected:
   int RefinementEstimates = 0;
   bool RefinementConverged = false;
   bool InScatterReused = false;
+  int CameraTranslucentLayers = 0;
+  double CameraTranslucentBytes = 0.0;
 
 private:
   vtkLightShaftFrameReport(const vtkLightShaftFrameReport&) = delete;

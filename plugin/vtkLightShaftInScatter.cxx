@@ -5,10 +5,14 @@
 
 #include "vtkObject.h"
 #include "vtkProp.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
 #include "vtkTextureObject.h"
 
 #include <algorithm>
 #include <initializer_list>
+#include <utility>
+#include <vector>
 
 //------------------------------------------------------------------------------
 vtkLightShaftInScatter::vtkLightShaftInScatter() = default;
@@ -104,6 +108,26 @@ int vtkLightShaftInScatter::ChooseMethod(const vtkLightShaftFrame& frame)
 void vtkLightShaftInScatter::Begin(vtkLightShaftFrame& frame)
 {
   this->Target.PrepareDepth(frame);
+  // The translucent surfaces in front of the opaque scene, as the camera sees them: what lies
+  // behind them, shafts included, is dimmed by VTK's blending.
+  std::vector<vtkProp*> translucent;
+  const vtkRenderState* s = frame.State;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry())
+    {
+      translucent.push_back(prop);
+    }
+  }
+  frame.CameraLayerCount = this->CameraLayers.RenderCamera(frame,
+    std::move(translucent),
+    frame.Scene.ShaftDepth,
+    frame.Parameters.CameraLayers,
+    frame.Renderer->GetActiveCamera());
+  frame.CameraLayers = frame.CameraLayerCount > 0 ? this->CameraLayers.GetTexture() : nullptr;
+  frame.Statistics.CameraLayers = frame.CameraLayerCount;
+  frame.Statistics.CameraLayerBytes = this->CameraLayers.GetBytes();
   this->TargetCleared = false;
   this->TargetHolds = false;
   this->Pending = nullptr;
@@ -228,5 +252,6 @@ void vtkLightShaftInScatter::ReleaseGraphicsResources(vtkWindow* window)
     method->ReleaseGraphicsResources(window);
   }
   this->Post.ReleaseGraphicsResources(window);
+  this->CameraLayers.ReleaseGraphicsResources(window);
   this->ShaderMethod = nullptr;
 }

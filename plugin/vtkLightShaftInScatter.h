@@ -16,6 +16,7 @@
 #include "vtkLightShaftRayMarchMethod.h"    // For a method held
 #include "vtkLightShaftSlabDrawer.h"        // For the drawer held
 #include "vtkLightShaftSlicesMethod.h"      // For a method held
+#include "vtkLightShaftTranslucentLayers.h" // For the camera leg's layers held
 
 class vtkTextureObject;
 class vtkWindow;
@@ -43,7 +44,8 @@ public:
   int ChooseMethod(const vtkLightShaftFrame& frame);
   /// Whether `method` renders a medium from data (the others give way to RAY_MARCH).
   static bool RendersField(int method);
-  /// Start the frame: the depth the shafts read, no light added.
+  /// Start the frame: the depth the shafts read, the camera leg's translucent layers
+  /// (frame.CameraLayers), no light added.
   void Begin(vtkLightShaftFrame& frame);
 
   /**
@@ -77,6 +79,7 @@ private:
   vtkLightShaftEpipolarMethod Epipolar{ this->Slabs };
   vtkLightShaftLightVolumeMethod LightVolume{ this->Slabs };
   vtkLightShaftPostProcess Post;
+  vtkLightShaftTranslucentLayers CameraLayers;
 
   const vtkLightShaftMethod* ShaderMethod = nullptr;
   bool TargetCleared = false; ///< the accumulation buffer holds this frame's direct lights

@@ -566,6 +566,7 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
   p.LightVolumeResolution = self.LightVolumeResolution;
   p.MediumShadowResolution = medium.GetFieldShadowResolution();
   p.TranslucentLayers = self.TranslucentShadows ? self.TranslucentShadowLayers : 0;
+  p.CameraLayers = self.TranslucentShadowLayers;
   p.Decay = self.Decay;
   p.Density = self.Density;
   p.Weight = self.Weight;

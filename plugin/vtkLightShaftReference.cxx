@@ -354,6 +354,9 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
         {
           tSurface = hit * tFar;
         }
+        // The camera leg: what lies behind each translucent surface in front of the opaque one
+        // reaches the camera dimmed as VTK blends it.
+        const auto crossings = tracer->CameraCrossings(origin, origin + tSurface * dir);
         // Each light's share over the part of the ray it lights.
         bool closed = false;
         for (size_t l = 0; l < models.size(); ++l)
@@ -369,13 +372,26 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
             continue;
           }
           auto transmittance = [&](const Vec& x) { return tracer->Transmittance(x, model); };
-          const Result result = IntegrateRay(
-            model, origin, dir, t0, t1, transmittance, samples, tolerance, closedForms[l] != 0);
-          closed = closed || result.ClosedForm;
-          for (int c = 0; c < 3; ++c)
+          // The lit part in pieces between the crossings, each dimmed by those in front of it.
+          double kept = 1.0;
+          double ta = t0;
+          for (size_t k = 0; k <= crossings.size() && ta < t1 && kept > 0.0; ++k)
           {
-            radianceOut[3 * pixel + c] += result.Radiance[c];
-            errorOut[3 * pixel + c] += result.Error[c];
+            const double tk = k < crossings.size() ? crossings[k].first * tSurface : t1;
+            const double tb = std::min(tk, t1);
+            if (tb > ta)
+            {
+              const Result result = IntegrateRay(
+                model, origin, dir, ta, tb, transmittance, samples, tolerance, closedForms[l] != 0);
+              closed = closed || result.ClosedForm;
+              for (int c = 0; c < 3; ++c)
+              {
+                radianceOut[3 * pixel + c] += kept * result.Radiance[c];
+                errorOut[3 * pixel + c] += kept * result.Error[c];
+              }
+              ta = tb;
+            }
+            kept *= k < crossings.size() ? crossings[k].second : 1.0;
           }
         }
         closedHere += closed ? 1 : 0;

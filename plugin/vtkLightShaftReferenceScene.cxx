@@ -11,6 +11,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkModifiedBSPTree.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
@@ -124,6 +125,7 @@ void vtkLightShaftReferenceScene::Capture(vtkRenderer* renderer)
     occluder.Mesh->GetBounds(occluder.Bounds);
     occluder.Translucent = opacity < 1.0;
     occluder.Transmittance = transmittance;
+    occluder.Kept = 1.0 - opacity;
     this->Occluders.push_back(occluder);
   }
 }
@@ -189,6 +191,7 @@ vtkLightShaftReferenceScene::Tracer::Tracer(const vtkLightShaftReferenceScene& s
   : Scene(scene)
   , Cell(vtkSmartPointer<vtkGenericCell>::New())
   , Hits(vtkSmartPointer<vtkIdList>::New())
+  , HitPoints(vtkSmartPointer<vtkPoints>::New())
 {
   for (const Occluder& occluder : scene.Occluders)
   {
@@ -279,6 +282,37 @@ RGB vtkLightShaftReferenceScene::Tracer::Crossings(const Vec& from, const Vec& t
     }
   }
   return product;
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::pair<double, double>> vtkLightShaftReferenceScene::Tracer::CameraCrossings(
+  const Vec& from,
+  const Vec& to)
+{
+  std::vector<std::pair<double, double>> crossings;
+  const Vec span = to - from;
+  const double length2 = vtkLightShaftRayIntegrator::Dot(span, span);
+  for (size_t k = 0; k < this->Scene.Occluders.size(); ++k)
+  {
+    const Occluder& occluder = this->Scene.Occluders[k];
+    if (!occluder.Translucent || !SegmentMeetsBox(from, to, occluder.Bounds))
+    {
+      continue;
+    }
+    this->HitPoints->Reset();
+    this->Hits->Reset();
+    this->Locators[k]->IntersectWithLine(from.data(), to.data(), 0.0, this->HitPoints, this->Hits);
+    for (vtkIdType hit = 0; hit < this->HitPoints->GetNumberOfPoints(); ++hit)
+    {
+      double x[3];
+      this->HitPoints->GetPoint(hit, x);
+      const Vec offset{ x[0] - from[0], x[1] - from[1], x[2] - from[2] };
+      crossings.emplace_back(
+        vtkLightShaftRayIntegrator::Dot(offset, span) / length2, occluder.Kept);
+    }
+  }
+  std::sort(crossings.begin(), crossings.end());
+  return crossings;
 }
 
 //------------------------------------------------------------------------------

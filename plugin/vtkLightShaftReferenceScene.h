@@ -11,9 +11,10 @@
 #include "vtkNew.h"                     // For the shadow map's copies
 #include "vtkSmartPointer.h"            // For the meshes and locators
 
-#include <memory> // For the pool's tracers
-#include <mutex>  // For the pool
-#include <vector> // For the occluders and locators
+#include <memory>  // For the pool's tracers
+#include <mutex>   // For the pool
+#include <utility> // For the camera leg's crossings
+#include <vector>  // For the occluders and locators
 
 class vtkGenericCell;
 class vtkIdList;
@@ -21,6 +22,7 @@ class vtkImageData;
 class vtkLightShaftPass;
 class vtkMatrix4x4;
 class vtkModifiedBSPTree;
+class vtkPoints;
 class vtkPolyData;
 class vtkRenderer;
 
@@ -35,8 +37,10 @@ class vtkRenderer;
  * nothing): 0 when an opaque actor's surface crosses it, else the product over each crossing
  * of a translucent actor's surface (opacity a in (0, 1), diffuse colour c: Diffuse times the
  * property's colour) of 1 - a (1 - c), per channel. The camera's rays end at the first opaque
- * surface (translucent ones do not stop them, as in the pass). With the shadow map, it is 0 or
- * 1 (translucent actors left out).
+ * surface (translucent ones do not stop them, as in the pass); what lies behind each crossing
+ * of a translucent surface reaches the camera dimmed by 1 - a, as VTK blends it
+ * (CameraCrossings). With the shadow map, the light's transmittance is 0 or 1 (translucent
+ * actors left out).
  *
  * Queries go through a Tracer, one per thread (from a TracerPool): VTK 9.1's vtkModifiedBSPTree
  * keeps a scratch cell per tree (shared trees gave non-deterministic results across threads).
@@ -75,6 +79,12 @@ public:
     /// The nearest hit of an opaque surface by the segment from -> to, as a fraction of it;
     /// false when none.
     bool FirstHit(const Vec& from, const Vec& to, double& nearest);
+    /**
+     * The camera leg: where the segment from -> to crosses translucent surfaces (fractions of
+     * it, in order) and the fraction 1 - a of what lies behind that VTK's blending keeps at
+     * each.
+     */
+    std::vector<std::pair<double, double>> CameraCrossings(const Vec& from, const Vec& to);
     /// The light's transmittance to x (see the class description).
     vtkLightShaftRayIntegrator::RGB Transmittance(const Vec& x,
       const vtkLightShaftRayIntegrator::Model& light);
@@ -88,6 +98,7 @@ public:
     std::vector<vtkSmartPointer<vtkModifiedBSPTree>> Locators;
     vtkSmartPointer<vtkGenericCell> Cell;
     vtkSmartPointer<vtkIdList> Hits;
+    vtkSmartPointer<vtkPoints> HitPoints;
   };
 
   /**
@@ -122,6 +133,7 @@ private:
     double Bounds[6];
     bool Translucent = false;                        ///< else opaque: it blocks the light
     vtkLightShaftRayIntegrator::RGB Transmittance{}; ///< per crossing, when translucent
+    double Kept = 0.0; ///< what VTK's blending keeps of what lies behind it: 1 - opacity
   };
   std::vector<Occluder> Occluders;
 

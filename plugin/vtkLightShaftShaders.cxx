@@ -12,6 +12,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include "vtkLightShaftCameraLayers.h"
 #include "vtkLightShaftCommon.h"
 #include "vtkLightShaftField.h"
 #include "vtkLightShaftIntegrand.h"
@@ -46,6 +47,7 @@ std::string WithFeatures(const char* source, const std::vector<std::string>& def
   vtkShaderProgram::Substitute(out, "//VTK::LightShaft::LightSpace", vtkLightShaftLightSpace);
   vtkShaderProgram::Substitute(out, "//VTK::LightShaft::LightKind", vtkLightShaftLightKind);
   vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Field", vtkLightShaftField);
+  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::CameraLayers", vtkLightShaftCameraLayers);
   return out;
 }
 
@@ -105,6 +107,7 @@ Variant IntegrandVariant(const char* methodName,
   AddLightKind(variant, frame.Light.Model);
   variant.Feature(shadows, "LIGHTSHAFT_SHADOW", "shadow");
   variant.Feature(shadows && frame.Translucency, "LIGHTSHAFT_TRANSLUCENT", "translucent");
+  variant.Feature(frame.CameraLayers != nullptr, "LIGHTSHAFT_CAMERA_LAYERS", "camera-layers");
   variant.Feature(frame.Cookie != nullptr, "LIGHTSHAFT_COOKIE", "cookie");
   variant.Feature(frame.Noise != nullptr, "LIGHTSHAFT_NOISE", "noise");
   variant.Feature(frame.Density != nullptr, "LIGHTSHAFT_FIELD", "field");
@@ -193,6 +196,19 @@ void SetIntegrandUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& f
   {
     SetDensityUniforms(program, frame);
   }
+  if (frame.CameraLayers)
+  {
+    SetCameraLayerUniforms(program, frame);
+  }
+}
+
+void SetCameraLayerUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame)
+{
+  frame.CameraLayers->Activate();
+  program->SetUniformi("cameraLayers", frame.CameraLayers->GetTextureUnit());
+  program->SetUniformi("cameraLayerCount", frame.CameraLayerCount);
+  auto projection = vtkLightShaftGeometry::ToFloatColumnMajor(frame.Camera.ViewToClip);
+  program->SetUniformMatrix4x4("projectionVCDC", projection.data());
 }
 
 int DensitySteps(int viewSteps)

@@ -109,6 +109,9 @@ int DensitySteps(int viewSteps);
 /// The density field's uniforms (LIGHTSHAFT_FIELD) and its texture, activated.
 void SetDensityUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame);
 
+/// The camera leg's translucent layers (LIGHTSHAFT_CAMERA_LAYERS), their texture activated.
+void SetCameraLayerUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame);
+
 /// The light leg's table through the field (LIGHTSHAFT_FIELD_SHADOW) and its texture, activated.
 void SetFieldShadowUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame);
 

@@ -248,6 +248,12 @@ void vtkLightShaftShadowMap::RenderFromLight(vtkLightShaftFrame& frame,
   casterState.SetPropArrayAndCount(casters.data(), static_cast<int>(casters.size()));
   casterState.SetFrameBuffer(target);
   vtkSmartPointer<vtkCamera> sceneCamera = ren->GetActiveCamera();
+  if (camera == sceneCamera)
+  {
+    // The scene's own view (the camera leg's translucent layers): nothing to swap or restore.
+    pass->Render(&casterState);
+    return;
+  }
   const vtkTypeBool automaticLights = ren->GetAutomaticLightCreation();
   ren->SetAutomaticLightCreation(false);
   ren->SetActiveCamera(camera);

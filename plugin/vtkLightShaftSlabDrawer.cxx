@@ -156,6 +156,7 @@ void vtkLightShaftSlabDrawer::Draw(vtkLightShaftFrame& frame,
   slabs.Depth->Deactivate();
   for (vtkTextureObject* t : { slabs.ShadowMap,
          frame.Translucency,
+         frame.CameraLayers,
          frame.Cookie,
          frame.Noise,
          frame.Density,

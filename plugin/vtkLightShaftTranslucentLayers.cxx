@@ -48,7 +48,49 @@ int vtkLightShaftTranslucentLayers::Render(vtkLightShaftFrame& frame,
       }
     }
   }
-  if (!any || maximumLayers < 1 || !opaque)
+  if (!any)
+  {
+    return 0;
+  }
+  this->Peel->SetRule(vtkLightShaftTranslucentPeel::LIGHT);
+  return this->PeelViews(frame, casters, opaque, cube, maximumLayers, setCamera);
+}
+
+//------------------------------------------------------------------------------
+int vtkLightShaftTranslucentLayers::RenderCamera(vtkLightShaftFrame& frame,
+  std::vector<vtkProp*> props,
+  vtkTextureObject* opaque,
+  int maximumLayers,
+  vtkCamera* camera)
+{
+  this->Result = nullptr;
+  this->UsedLayers = 0;
+  if (props.empty())
+  {
+    // (Layers of an earlier frame are not kept for later ones.)
+    for (auto& layer : this->Layers)
+    {
+      layer.Release(frame.Window);
+    }
+    this->Layers.clear();
+    this->Atlas.Release(frame.Window);
+    return 0;
+  }
+  std::vector<std::vector<vtkProp*>> views{ std::move(props) };
+  this->Peel->SetRule(vtkLightShaftTranslucentPeel::CAMERA);
+  return this->PeelViews(
+    frame, views, opaque, false, maximumLayers, [camera](int) { return camera; });
+}
+
+//------------------------------------------------------------------------------
+int vtkLightShaftTranslucentLayers::PeelViews(vtkLightShaftFrame& frame,
+  std::vector<std::vector<vtkProp*>>& casters,
+  vtkTextureObject* opaque,
+  bool cube,
+  int maximumLayers,
+  const CameraSetter& setCamera)
+{
+  if (maximumLayers < 1 || !opaque)
   {
     return 0;
   }

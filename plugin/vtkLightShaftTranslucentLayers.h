@@ -76,6 +76,18 @@ public:
     int maximumLayers,
     const CameraSetter& setCamera);
 
+  /**
+   * Peel the translucent surfaces of `props` that the scene's `camera` sees in front of the
+   * opaque depth `opaque` (the scene's, single-sample), with the camera's rule
+   * (vtkLightShaftTranslucentPeel::CAMERA: per texel 1 - a and the depth), at most
+   * `maximumLayers`. Returns the number of layers that have a surface.
+   */
+  int RenderCamera(vtkLightShaftFrame& frame,
+    std::vector<vtkProp*> props,
+    vtkTextureObject* opaque,
+    int maximumLayers,
+    vtkCamera* camera);
+
   /// The layers side by side (valid after Render returned more than 0): the one layer's own
   /// texture, or an atlas of them (the layers' own textures then freed).
   vtkTextureObject* GetTexture() const { return this->Result; }
@@ -88,6 +100,12 @@ private:
   vtkLightShaftTranslucentLayers(const vtkLightShaftTranslucentLayers&) = delete;
   void operator=(const vtkLightShaftTranslucentLayers&) = delete;
 
+  int PeelViews(vtkLightShaftFrame& frame,
+    std::vector<std::vector<vtkProp*>>& casters,
+    vtkTextureObject* opaque,
+    bool cube,
+    int maximumLayers,
+    const CameraSetter& setCamera);
   bool PeelFace(vtkLightShaftFrame& frame,
     std::vector<vtkProp*>& casters,
     vtkCamera* camera,

@@ -124,9 +124,11 @@ bool vtkLightShaftTranslucentPeel::PostReplaceShaderValues(std::string&,
     "uniform vec4 lightShaftPreviousRect;\n"
     "uniform vec2 lightShaftTargetSize;\n"
     "uniform int lightShaftPeel;\n");
-  // The surface's colour as the mapper computed it before lighting (none: grey, 1 - a).
-  const std::string color =
-    fragmentShader.find("diffuseColor") != std::string::npos ? "diffuseColor" : "vec3(0.0)";
+  // The surface's colour as the mapper computed it before lighting (none: grey, 1 - a); the
+  // camera's rule keeps 1 - a of what lies behind, whatever the colour (VTK's blending).
+  const bool colored =
+    this->Kept == LIGHT && fragmentShader.find("diffuseColor") != std::string::npos;
+  const std::string color = colored ? "diffuseColor" : "vec3(0.0)";
   return declared &&
          vtkShaderProgram::Substitute(fragmentShader,
            "//VTK::DepthPeeling::Impl",

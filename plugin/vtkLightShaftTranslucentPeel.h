@@ -26,6 +26,8 @@ class vtkTranslucentPass;
  * discards such fragments: no layer), opacity 1 is an opaque prop (VTK renders it with the
  * opaque casters).
  *
+ * (With the CAMERA rule it writes 1 - a instead: see SetRule.)
+ *
  * Each fragment writes (transmittance, gl_FragCoord.z) into an RGBA32F target whose depth
  * buffer keeps the nearest; fragments at or behind the opaque casters' depth (OpaqueDepth), and
  * for a layer after the first at or in front of the previous layer's depth (PreviousLayer's
@@ -46,6 +48,18 @@ public:
   void SetOpaqueDepth(vtkTextureObject* depth, const float rect[4]);
   /// The previous layer (nullptr: this is the first) and the rectangle of it the target covers.
   void SetPreviousLayer(vtkTextureObject* layer, const float rect[4]);
+
+  /**
+   * What a fragment writes in rgb. LIGHT (the default): the light it passes, 1 - a (1 - c)
+   * (the casters' rule). CAMERA: what VTK's blending keeps of what lies behind it, 1 - a (the
+   * camera leg of the shafts behind it, as of the scene behind it).
+   */
+  enum Rule
+  {
+    LIGHT,
+    CAMERA
+  };
+  void SetRule(Rule rule) { this->Kept = rule; }
 
   /// Render the translucent step of the state's props into its framebuffer (bound, cleared).
   void Render(const vtkRenderState* s) override;
@@ -76,6 +90,7 @@ private:
   float OpaqueRect[4] = { 0.0f, 0.0f, 1.0f, 1.0f };
   float PreviousRect[4] = { 0.0f, 0.0f, 1.0f, 1.0f };
   float TargetSize[2] = { 1.0f, 1.0f };
+  Rule Kept = LIGHT;
 };
 
 #endif

@@ -4,6 +4,7 @@ set(lightshafts_pass_shaders
   vtkLightShaftAddFS
   vtkLightShaftAnalyticFS
   vtkLightShaftBlurFS
+  vtkLightShaftCameraLayers
   vtkLightShaftCommon
   vtkLightShaftCompositeFS
   vtkLightShaftDepthDownsampleFS

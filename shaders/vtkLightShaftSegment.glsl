@@ -1,7 +1,8 @@
 // Shared by the slab fragment shaders of every method (slices, ray march, analytic): the
 // in-scattered radiance of one segment of a pixel's view ray, with the light-space factors
 // (shadow map, cookie, noise), and the pixel's lit interval. Features (#defines):
-// LIGHTSHAFT_SHADOW, LIGHTSHAFT_COOKIE, LIGHTSHAFT_NOISE, LIGHTSHAFT_LATTICE, the light's kind;
+// LIGHTSHAFT_SHADOW, LIGHTSHAFT_COOKIE, LIGHTSHAFT_NOISE, LIGHTSHAFT_LATTICE,
+// LIGHTSHAFT_CAMERA_LAYERS (the camera leg through translucent surfaces), the light's kind;
 // code for a feature that is off is not compiled.
 //VTK::LightShaft::LightSpace
 //VTK::LightShaft::Field
@@ -71,6 +72,8 @@ float lightShaftAttenuationIntegral(float x0, float x1, float h2)
 uniform float lookupFraction; // where in a piece (of u) its lookups are; 0.5: the midpoint
 #endif
 
+//VTK::LightShaft::CameraLayers
+
 vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, float x1)
 {
   // Product rule: the exact integral of A(r) over the segment times the A-weighted mean of the
@@ -114,6 +117,9 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
 #endif
 #ifdef LIGHTSHAFT_TRANSLUCENT
   modulation *= lightShaftTranslucency(sampleVC, sampleR, shadowBias);
+#endif
+#ifdef LIGHTSHAFT_CAMERA_LAYERS
+  modulation *= lightShaftCameraLeg(originVC, dirVC, b, h2, x0, x1);
 #endif
 #ifdef LIGHTSHAFT_COOKIE
   modulation *= lightShaftCookie(sampleVC, footprintInSquares);
