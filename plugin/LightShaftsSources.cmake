@@ -33,7 +33,9 @@ set(lightshafts_private_classes
   vtkLightShaftSlicesMethod
   vtkLightShaftSurfaceLight
   vtkLightShaftTranslucentLayers
-  vtkLightShaftTranslucentPeel)
+  vtkLightShaftTranslucentPeel
+  vtkLightShaftVolumeField
+  vtkLightShaftVolumeTexture)
 # vtkLightShaftPass's read-backs and its choice of sampling are compiled with it (the public
 # class's second and third source files).
 set(lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassReadouts.cxx"

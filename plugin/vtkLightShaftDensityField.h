@@ -7,6 +7,8 @@
 #ifndef vtkLightShaftDensityField_h
 #define vtkLightShaftDensityField_h
 
+#include <glm/glm.hpp> // For the texture's placement
+
 #include <cstddef> // For std::size_t
 #include <string>  // For the reason an image is refused
 #include <vector>  // For the samples and the breakpoints
@@ -95,6 +97,12 @@ public:
    */
   vtkLightShaftDensityField Resampled(int maximum) const;
 
+  /**
+   * World coordinates to the coordinates of a 3D texture of the samples (texel centres at the
+   * samples), and the field's bounds there (the box of its points; outside it rho is 0).
+   */
+  glm::dmat4 TextureFromWorld() const;
+  void TextureBounds(float low[3], float high[3]) const;
   /// The bounds' eight corners in world coordinates (corner c: index box bit k of c).
   void Corners(double corners[8][3]) const;
 

@@ -21,6 +21,7 @@
 #include <string> // For the shader variant
 #include <vector> // For the per-light statistics
 
+class vtkLightShaftDensityField;
 class vtkLightShaftFieldShadow;
 class vtkLightShaftMediumTexture;
 class vtkLightShaftMethod;
@@ -31,6 +32,7 @@ class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkRenderState;
 class vtkTextureObject;
+class vtkVolume;
 
 /**
  * The pass's parameters for one frame (the presets and setters already applied, clamped),
@@ -95,6 +97,8 @@ struct vtkLightShaftStatistics
   /// The camera leg's translucent layers peeled this frame and the GL memory they hold.
   int CameraLayers = 0;
   double CameraLayerBytes = 0.0;
+  /// The vtkVolume that dims and shadows the shafts (nullptr: none).
+  vtkVolume* Volume = nullptr;
   double SliceDepthRange[2] = { 0.0, 0.0 }; ///< of the first light whose shafts were computed
   double RadialGuardBand = 0.0;
   std::vector<vtkLightShaftLightStatistics> Lights; ///< one per used light, in order
@@ -183,6 +187,12 @@ struct vtkLightShaftFrame
   /// The light's precomputed light leg through the field (nullptr: marched per sample).
   vtkTextureObject* FieldShadow = nullptr;
   const vtkLightShaftFieldShadow* FieldShadowLayout = nullptr;
+  /// The scene's vtkVolume: its extinction (nullptr: none) and placement
+  /// (vtkLightShaftVolumeTexture), and the current light's leg through it, tabulated.
+  vtkTextureObject* Volume = nullptr;
+  const vtkLightShaftDensityField* VolumeField = nullptr;
+  vtkTextureObject* VolumeShadow = nullptr;
+  const vtkLightShaftFieldShadow* VolumeShadowLayout = nullptr;
   /// Progressive refinement's shift of the sampling offsets (steps, slab jitter), in [0, 1),
   /// and where in each piece its light-space lookups are, in (0, 1); 0 and 0.5 (the midpoint)
   /// render the picture without refinement.

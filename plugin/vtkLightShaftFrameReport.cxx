@@ -5,6 +5,8 @@
 #include "vtkLightShaftLights.h"
 #include "vtkLightShaftPass.h"
 #include "vtkObjectFactory.h"
+#include "vtkVolume.h"
+#include "vtkWeakPointer.h"
 
 #include <algorithm>
 #include <string>
@@ -16,6 +18,7 @@ public:
   std::vector<vtkLightShaftLightStatistics> Lights;
   std::string Variant;
   std::string Source;
+  vtkWeakPointer<vtkVolume> Volume;
 
   const vtkLightShaftLightStatistics* Light(int index) const
   {
@@ -61,6 +64,7 @@ void vtkLightShaftFrameReport::Publish(const vtkLightShaftFrame& frame,
   this->InScatterReused = stats.InScatterReused;
   this->CameraTranslucentLayers = stats.CameraLayers;
   this->CameraTranslucentBytes = stats.CameraLayerBytes;
+  this->Impl->Volume = stats.Volume;
   this->TimeBudget = stats.TimeBudget;
   this->PredictedFrameTime = stats.TimeBudget > 0.0 ? stats.PredictedFrameTime : -1.0;
   this->FrameTime = stats.FrameTime;
@@ -172,6 +176,23 @@ double vtkLightShaftFrameReport::GetLightFieldShadowBuildTime(int index)
 {
   const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
   return light ? light->FieldShadowBuildTime : 0.0;
+}
+
+double vtkLightShaftFrameReport::GetLightVolumeShadowBytes(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
+  return light ? light->VolumeShadowBytes : 0.0;
+}
+
+double vtkLightShaftFrameReport::GetLightVolumeShadowBuildTime(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
+  return light ? light->VolumeShadowBuildTime : 0.0;
+}
+
+vtkVolume* vtkLightShaftFrameReport::GetVolume()
+{
+  return this->Impl->Volume;
 }
 
 int vtkLightShaftFrameReport::GetLightTranslucentLayers(int index)

@@ -26,6 +26,7 @@
 #include <memory> // For std::unique_ptr (the per-light values)
 
 class vtkLight;
+class vtkVolume;
 struct vtkLightShaftFrame;
 
 class VTKLIGHTSHAFTS_EXPORT vtkLightShaftFrameReport : public vtkObject
@@ -147,11 +148,13 @@ public:
   /**
    * The camera leg through translucent surfaces: the layers of translucent surfaces in front of
    * the opaque scene that the frame peeled from the camera (0: none in view, or no shafts
-   * computed) and the GL memory they hold, bytes (docs/translucent-and-volumes.md). Defaults
-   * are 0 and 0.
+   * computed) and the GL memory they hold, bytes; the vtkVolume that dimmed the shafts behind
+   * it and the light through it (nullptr: none; docs/translucent-and-volumes.md). Defaults are
+   * 0, 0 and nullptr.
    */
   vtkGetMacro(CameraTranslucentLayers, int);
   vtkGetMacro(CameraTranslucentBytes, double);
+  vtkVolume* GetVolume();
   ///@}
 
   ///@{
@@ -163,8 +166,9 @@ public:
    * because nothing that decides it changed; its casters; the GPU milliseconds its in-scatter
    * took (timer queries of the latest frame whose queries completed; -1: not available); its
    * light-leg table through a density field: bytes (0: none) and build milliseconds (0:
-   * reused); its translucent casters' layers: how many (0: none) and their bytes. Out of range:
-   * nullptr, -1, -1, 0, false, false, 0, -1, 0, 0, 0 and 0.
+   * reused); its translucent casters' layers: how many (0: none) and their bytes; its light-leg
+   * texture through the scene's volume: bytes and build milliseconds. Out of range: nullptr, -1,
+   * -1, 0, false, false, 0, -1, 0, 0, 0, 0, 0 and 0.
    */
   int GetNumberOfUsedLights();
   vtkLight* GetUsedLight(int index = 0);
@@ -179,6 +183,8 @@ public:
   double GetLightFieldShadowBuildTime(int index);
   int GetLightTranslucentLayers(int index);
   double GetLightTranslucentBytes(int index);
+  double GetLightVolumeShadowBytes(int index);
+  double GetLightVolumeShadowBuildTime(int index);
   ///@}
 
 protected:

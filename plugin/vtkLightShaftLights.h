@@ -43,6 +43,9 @@ struct vtkLightShaftLightStatistics
   /// milliseconds its build took this frame (0: reused).
   double FieldShadowBytes = 0.0;
   double FieldShadowBuildTime = 0.0;
+  /// The same for the scene's vtkVolume's light-leg texture.
+  double VolumeShadowBytes = 0.0;
+  double VolumeShadowBuildTime = 0.0;
   /// Its translucent casters' layers (vtkLightShaftTranslucentLayers): how many (0: none),
   /// their bytes, and whether they were peeled this frame (not reused).
   int TranslucentLayers = 0;
@@ -63,7 +66,8 @@ struct vtkLightShaftLightState
 
   vtkWeakPointer<vtkLight> Light;
   vtkLightShaftShadowMap ShadowMap;
-  vtkLightShaftFieldShadow FieldShadow; ///< the light leg through a medium from data
+  vtkLightShaftFieldShadow FieldShadow;  ///< the light leg through a medium from data
+  vtkLightShaftFieldShadow VolumeShadow; ///< the light leg through the scene's vtkVolume
   vtkOpenGLRenderTimer Timer;
 };
 

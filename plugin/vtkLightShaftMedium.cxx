@@ -1,11 +1,17 @@
 #include "vtkLightShaftMedium.h"
 #include "vtkLightShaftMediumInternals.h"
 
+#include "vtkAbstractVolumeMapper.h"
 #include "vtkAlgorithmOutput.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkLightShaftDensityField.h"
 #include "vtkLightShaftSetters.h"
+#include "vtkLightShaftVolumeField.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 
 #include <limits>
 
@@ -139,8 +145,10 @@ void vtkLightShaftMedium::SetDensityField(vtkImageData* density)
     return;
   }
   impl.Keep(density, impl.ArrayName, std::move(field));
-  if (impl.Density != density || impl.Producer)
+  if (impl.Density != density || impl.Producer || impl.Volume)
   {
+    impl.Volume = nullptr;
+    impl.VolumeDensity = nullptr;
     impl.Density = density;
     impl.Producer = nullptr;
     impl.Output = nullptr;
@@ -150,7 +158,9 @@ void vtkLightShaftMedium::SetDensityField(vtkImageData* density)
 
 vtkImageData* vtkLightShaftMedium::GetDensityField()
 {
-  return this->Impl->Producer ? this->Impl->Output.Get() : this->Impl->Density.Get();
+  const Internals& impl = *this->Impl;
+  return impl.Volume ? impl.VolumeDensity.Get()
+                     : (impl.Producer ? impl.Output.Get() : impl.Density.Get());
 }
 
 void vtkLightShaftMedium::SetDensityFieldConnection(vtkAlgorithmOutput* output)
@@ -158,7 +168,7 @@ void vtkLightShaftMedium::SetDensityFieldConnection(vtkAlgorithmOutput* output)
   Internals& impl = *this->Impl;
   vtkAlgorithm* producer = output ? output->GetProducer() : nullptr;
   const int port = output ? output->GetIndex() : 0;
-  if (producer == impl.Producer && port == impl.Port && (producer || !impl.Density))
+  if (producer == impl.Producer && port == impl.Port && (producer || !impl.Density) && !impl.Volume)
   {
     return;
   }
@@ -170,7 +180,31 @@ void vtkLightShaftMedium::SetDensityFieldConnection(vtkAlgorithmOutput* output)
   }
   impl.OutputError.clear();
   impl.Density = nullptr;
+  impl.Volume = nullptr;
+  impl.VolumeDensity = nullptr;
   this->Modified();
+}
+
+void vtkLightShaftMedium::SetDensityVolume(vtkVolume* volume)
+{
+  Internals& impl = *this->Impl;
+  if (volume == impl.Volume && (volume || (!impl.Density && !impl.Producer)))
+  {
+    return;
+  }
+  impl.Volume = volume;
+  impl.VolumeDensity = nullptr;
+  impl.VolumeTime = 0;
+  impl.VolumeError.clear();
+  impl.Density = nullptr;
+  impl.Producer = nullptr;
+  impl.Output = nullptr;
+  this->Modified();
+}
+
+vtkVolume* vtkLightShaftMedium::GetDensityVolume()
+{
+  return this->Impl->Volume;
 }
 
 vtkAlgorithmOutput* vtkLightShaftMedium::GetDensityFieldConnection()
@@ -210,6 +244,10 @@ const char* vtkLightShaftMedium::GetDensityArrayName()
 vtkImageData* vtkLightShaftMedium::UpdateDensityField(vtkObject* caller)
 {
   Internals& impl = *this->Impl;
+  if (impl.Volume)
+  {
+    return impl.UpdateVolumeDensity(caller);
+  }
   if (!impl.Producer)
   {
     return impl.Density;
@@ -258,7 +296,44 @@ void vtkLightShaftMedium::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Time: " << this->Time << "\n";
   os << indent << "DensityField: " << this->Impl->Density.Get() << " (connection "
      << this->Impl->Producer.Get() << ", array \"" << this->Impl->ArrayName << "\")\n";
+  os << indent << "DensityVolume: " << this->Impl->Volume.Get() << "\n";
   os << indent << "DensityScale: " << this->DensityScale << "\n";
   os << indent << "BackgroundDensity: " << this->BackgroundDensity << "\n";
   os << indent << "FieldShadowResolution: " << this->FieldShadowResolution << "\n";
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkLightShaftMedium::Internals::UpdateVolumeDensity(vtkObject* caller)
+{
+  if (vtkAbstractMapper* mapper = this->Volume->GetMapper())
+  {
+    mapper->Update(); // (its input brought up to date, as its render would)
+  }
+  const vtkMTimeType time = vtkLightShaftVolumeField::Time(this->Volume);
+  if (this->VolumeDensity && time <= this->VolumeTime && this->ArrayName == this->VolumeArrayName)
+  {
+    return this->VolumeDensity;
+  }
+  vtkNew<vtkImageData> image;
+  const std::string why = vtkLightShaftVolumeField::Build(
+    this->Volume, vtkLightShaftVolumeField::Quantity::Opacity, image);
+  if (!why.empty())
+  {
+    if (why != this->VolumeError)
+    {
+      vtkErrorWithObjectMacro(
+        caller, "DensityVolume: the volume " << why << "; the last usable density field is kept.");
+      this->VolumeError = why;
+    }
+    return this->VolumeDensity;
+  }
+  // (Named as the medium's array, so that the field is read from it whatever that is.)
+  vtkDataArray* values = image->GetPointData()->GetScalars() ? image->GetPointData()->GetScalars()
+                                                             : image->GetCellData()->GetScalars();
+  values->SetName(this->ArrayName.empty() ? "Opacity" : this->ArrayName.c_str());
+  this->VolumeError.clear();
+  this->VolumeDensity = image;
+  this->VolumeTime = time;
+  this->VolumeArrayName = this->ArrayName;
+  return this->VolumeDensity;
 }

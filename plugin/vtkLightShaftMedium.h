@@ -31,6 +31,7 @@
 class vtkAlgorithmOutput;
 class vtkImageData;
 class vtkTexture;
+class vtkVolume;
 
 class VTKLIGHTSHAFTS_EXPORT vtkLightShaftMedium : public vtkObject
 {
@@ -155,6 +156,21 @@ public:
 
   ///@{
   /**
+   * A volume of the scene as the medium: rho is its opacity alpha = OTF(s) at its image's
+   * samples (its mapper's scalars, first component, through the property's first scalar
+   * opacity function), placed as the volume renders it (its matrix too), read again when the
+   * volume, its mapper, input, property or opacity function change: the smoke the scene renders
+   * is what scatters the light (docs/translucent-and-volumes.md#a-volume-as-the-medium). It
+   * replaces SetDensityField's and SetDensityFieldConnection's source (and they replace it);
+   * the volume then dims the shafts as the medium, not as a volume in the medium. A volume
+   * that gives no field gets one error and the last usable field is kept. Default is nullptr.
+   */
+  void SetDensityVolume(vtkVolume* volume);
+  vtkVolume* GetDensityVolume();
+  ///@}
+
+  ///@{
+  /**
    * The field's scale and the density added everywhere (also outside the field), each in
    * [0, 1e6]. Defaults are 1 and 0.
    */
@@ -176,9 +192,10 @@ public:
   ///@}
 
   /**
-   * The density image of this render: SetDensityField's image, or the pipeline's output
+   * The density image of this render: SetDensityField's image, the pipeline's output
    * brought up to date (an output that is not an image: one error from `caller`, and the last
-   * one that was stays in use). nullptr: a homogeneous medium.
+   * one that was stays in use), or the density volume's opacity image. nullptr: a homogeneous
+   * medium.
    */
   vtkImageData* UpdateDensityField(vtkObject* caller);
 

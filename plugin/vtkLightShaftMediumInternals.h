@@ -14,6 +14,7 @@
 #include "vtkLightShaftDensityField.h" // For the field read by the setter
 #include "vtkSmartPointer.h"           // For vtkSmartPointer
 #include "vtkTexture.h"                // For the noise image
+#include "vtkVolume.h"                 // For the density volume
 
 #include <string> // For the array name and the last error
 
@@ -28,6 +29,16 @@ public:
   vtkSmartPointer<vtkImageData> Output;
   std::string OutputError;
   vtkSmartPointer<vtkTexture> NoiseTexture;
+  /// SetDensityVolume's volume, its opacity image and what it was built from.
+  vtkSmartPointer<vtkVolume> Volume;
+  vtkSmartPointer<vtkImageData> VolumeDensity;
+  vtkMTimeType VolumeTime = 0;
+  std::string VolumeArrayName;
+  std::string VolumeError;
+
+  /// The density volume's opacity image, built again when the volume changed (the last usable
+  /// one kept, with one error from `caller`, when it gives none).
+  vtkImageData* UpdateVolumeDensity(vtkObject* caller);
 
   /// The field a setter read from `image` (as it was then) with `arrayName`.
   void Keep(vtkImageData* image, const std::string& arrayName, vtkLightShaftDensityField&& field)

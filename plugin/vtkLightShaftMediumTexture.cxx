@@ -82,43 +82,12 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
 
 glm::dmat4 vtkLightShaftMediumTexture::TextureFromWorld() const
 {
-  // Point index p = A x + c (the field's placement), then texture coordinate (p + offset) / N:
-  // texel centres sit at the samples (points, or cell centres half a cell on).
-  const double zero[3] = { 0.0, 0.0, 0.0 };
-  double c[3];
-  this->Field.ToIndex(zero, c);
-  const int* samples = this->Field.GetSamples();
-  const double offset = this->Field.GetCellCentred() ? 0.0 : 0.5;
-  glm::dmat4 m(1.0);
-  for (int col = 0; col < 3; ++col)
-  {
-    double unit[3] = { 0.0, 0.0, 0.0 };
-    unit[col] = 1.0;
-    double p[3];
-    this->Field.ToIndex(unit, p);
-    for (int row = 0; row < 3; ++row)
-    {
-      m[col][row] = (p[row] - c[row]) / samples[row];
-    }
-  }
-  for (int row = 0; row < 3; ++row)
-  {
-    m[3][row] = (c[row] + offset) / samples[row];
-  }
-  return m;
+  return this->Field.TextureFromWorld();
 }
 
 void vtkLightShaftMediumTexture::TextureBounds(float low[3], float high[3]) const
 {
-  const int* samples = this->Field.GetSamples();
-  const bool cells = this->Field.GetCellCentred();
-  const double offset = cells ? 0.0 : 0.5;
-  for (int k = 0; k < 3; ++k)
-  {
-    const int points = cells ? samples[k] + 1 : samples[k];
-    low[k] = static_cast<float>(offset / samples[k]);
-    high[k] = static_cast<float>((points - 1 + offset) / samples[k]);
-  }
+  this->Field.TextureBounds(low, high);
 }
 
 void vtkLightShaftMediumTexture::ReleaseGraphicsResources(vtkWindow* window)

@@ -144,6 +144,7 @@ void vtkLightShaftPass::Internals::ReleaseOwnResources(vtkWindow* w)
   this->Scene.ReleaseGraphicsResources(w);
   this->Textures.ReleaseGraphicsResources(w);
   this->DensityTexture.ReleaseGraphicsResources(w);
+  this->VolumeTexture.ReleaseGraphicsResources(w);
   this->InScatter.ReleaseGraphicsResources(w);
   this->SurfaceLight.ReleaseGraphicsResources(w);
   this->Composite.ReleaseGraphicsResources(w);
@@ -687,6 +688,10 @@ vtkTextureObject* vtkLightShaftPass::Internals::ComputeInScatter(vtkLightShaftFr
   bool shadowSurfaces,
   bool& computed)
 {
+  // The scene's volume dims the shafts behind it and the light through it.
+  frame.Volume = this->VolumeTexture.Ready(frame, this->Medium->GetDensityVolume());
+  frame.VolumeField = frame.Volume ? &this->VolumeTexture.GetField() : nullptr;
+  frame.Statistics.Volume = frame.Volume ? this->VolumeTexture.GetVolume() : nullptr;
   // Each light: its in-scatter added to the others', its surface light corrected.
   this->InScatter.Begin(frame);
   frame.Statistics.Lights.resize(lights.size());
@@ -743,6 +748,7 @@ void vtkLightShaftPass::Internals::RenderLight(vtkLightShaftFrame& frame,
   if (frame.Medium.Scatters())
   {
     this->ReadyFieldShadow(frame, state.FieldShadow);
+    this->ReadyVolumeShadow(frame, state.VolumeShadow);
     this->InScatter.Add(frame, this->InScatter.ChooseMethod(frame));
   }
   if (shadowSurfaces || frame.Cookie)
@@ -760,6 +766,7 @@ void vtkLightShaftPass::Internals::RenderLight(vtkLightShaftFrame& frame,
   frame.Translucency = nullptr;
   frame.TranslucentLayers = 0;
   frame.FieldShadow = nullptr;
+  frame.VolumeShadow = nullptr;
   frame.FieldShadowLayout = nullptr;
 }
 

@@ -164,8 +164,10 @@ public:
    * Translucent casters (opacity below 1) dim and tint the light that passes them: a surface
    * of opacity a and diffuse colour c passes 1 - a (1 - c) per channel, and surfaces multiply.
    * They are peeled into at most TranslucentShadowLayers layers per light, in [1, 8] (fewer
-   * when no surface is left; at most 512 MiB a light), kept with its shadow map
-   * (docs/translucent-and-volumes.md). Off, they cast nothing. Defaults are on and 4.
+   * when no surface is left; at most 512 MiB a light), kept with its shadow map, and as many
+   * from the camera: the shafts behind a surface are dimmed by 1 - a, as VTK blends the scene
+   * behind it (docs/translucent-and-volumes.md). Off, they cast nothing (the camera leg
+   * stays). Defaults are on and 4.
    */
   vtkSetMacro(TranslucentShadows, bool);
   vtkGetMacro(TranslucentShadows, bool);

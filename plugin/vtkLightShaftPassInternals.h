@@ -24,6 +24,7 @@
 #include "vtkLightShaftSceneCheck.h"    // For what of the scene cannot be used
 #include "vtkLightShaftSceneRenderer.h" // For the scene
 #include "vtkLightShaftSurfaceLight.h"  // For the surface light
+#include "vtkLightShaftVolumeTexture.h" // For the scene's volume
 
 #include "vtkCallbackCommand.h"         // For the window's deletion
 #include "vtkNew.h"                     // For vtkNew
@@ -58,6 +59,7 @@ public:
   vtkLightShaftSceneRenderer Scene;
   vtkLightShaftLightTextures Textures;
   vtkLightShaftMediumTexture DensityTexture;
+  vtkLightShaftVolumeTexture VolumeTexture;
   vtkLightShaftInScatter InScatter;
   vtkLightShaftSurfaceLight SurfaceLight;
   vtkLightShaftComposite Composite;
@@ -87,6 +89,8 @@ public:
   /// Cookie and noise readied, the sampling chosen, refinement begun (and its shadow-map
   /// shift applied to `lightFrames`); returns the cookie texture (vtkLightShaftPassSampling.cxx).
   void ReadyFieldShadow(vtkLightShaftFrame& frame, vtkLightShaftFieldShadow& shadow);
+  /// The light's leg through the scene's vtkVolume, tabulated (vtkLightShaftPassSampling.cxx).
+  void ReadyVolumeShadow(vtkLightShaftFrame& frame, vtkLightShaftFieldShadow& shadow);
   vtkTextureObject* ChooseSampling(vtkLightShaftFrame& frame,
     const std::vector<vtkLight*>& lights,
     std::vector<vtkLightShaftGeometry::LightFrame>& lightFrames);

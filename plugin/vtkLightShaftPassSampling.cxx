@@ -267,3 +267,28 @@ void vtkLightShaftPass::Internals::ReadyFieldShadow(vtkLightShaftFrame& frame,
   frame.LightStatistics->FieldShadowBytes = static_cast<double>(shadow.GetBytes());
   frame.LightStatistics->FieldShadowBuildTime = shadow.GetBuildTime();
 }
+
+//------------------------------------------------------------------------------
+// The light's leg through the scene's volume, tabulated as the field's is (at the medium's
+// FieldShadowResolution; 64 where that is 0: a volume's leg is not marched).
+void vtkLightShaftPass::Internals::ReadyVolumeShadow(vtkLightShaftFrame& frame,
+  vtkLightShaftFieldShadow& shadow)
+{
+  frame.VolumeShadow = nullptr;
+  frame.VolumeShadowLayout = nullptr;
+  if (!frame.Volume)
+  {
+    shadow.ReleaseGraphicsResources(frame.Window);
+    return;
+  }
+  const int resolution =
+    frame.Parameters.MediumShadowResolution > 0 ? frame.Parameters.MediumShadowResolution : 64;
+  frame.VolumeShadow = shadow.Ready(frame.Window,
+    this->VolumeTexture.GetField(),
+    this->VolumeTexture.GetVersion(),
+    frame.Light.Model,
+    resolution);
+  frame.VolumeShadowLayout = &shadow;
+  frame.LightStatistics->VolumeShadowBytes = static_cast<double>(shadow.GetBytes());
+  frame.LightStatistics->VolumeShadowBuildTime = shadow.GetBuildTime();
+}

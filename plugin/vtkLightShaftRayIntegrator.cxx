@@ -300,7 +300,7 @@ double Model::OpticalDepth(const Vec& a, const Vec& b) const
 
 bool Model::ClosedFormsHold() const
 {
-  if (!this->Cookie.empty() || !this->Noise.empty() || this->Field)
+  if (!this->Cookie.empty() || !this->Noise.empty() || this->Field || this->Extinction)
   {
     return false;
   }
@@ -361,6 +361,13 @@ RGB Model::Integrand(const Vec& origin, const Vec& dir, double t) const
     }
     const Vec source = this->Directional() ? x - r * this->Axis : this->Light;
     depth = this->OpticalDepth(origin, x) + this->OpticalDepth(x, source);
+  }
+  if (this->Extinction)
+  {
+    // Both legs through the volume: the eye to x, x to the light (or its plane).
+    const Vec source = this->Directional() ? x - r * this->Axis : this->Light;
+    scalar *= std::exp(-(this->Extinction->Integral(origin.data(), x.data()) +
+                         this->Extinction->Integral(x.data(), source.data())));
   }
   const RGB modulation = this->Modulation(x);
   for (int c = 0; c < 3; ++c)
@@ -746,15 +753,23 @@ Result IntegrateRay(const Model& model,
 
   std::vector<Piece> lit =
     FindLitPieces(transmittance, toT, origin, dir, toU(t0), toU(t1), samples);
-  if (model.Field)
+  if (model.Field || model.Extinction)
   {
-    // Split where the density stops being one cubic along the ray (its sample planes).
+    // Split where the density (or the volume's extinction) stops being one cubic along the ray
+    // (its sample planes).
     std::vector<Piece> split;
     for (const Piece& piece : lit)
     {
       std::vector<double> breaks;
-      model.Field->Breakpoints(
-        origin.data(), dir.data(), toT(piece.First), toT(piece.Second), breaks);
+      for (const auto* field : { model.Field.get(), model.Extinction.get() })
+      {
+        if (field)
+        {
+          field->Breakpoints(
+            origin.data(), dir.data(), toT(piece.First), toT(piece.Second), breaks);
+        }
+      }
+      std::sort(breaks.begin(), breaks.end());
       double start = piece.First;
       for (double t : breaks)
       {

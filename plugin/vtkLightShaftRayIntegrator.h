@@ -111,6 +111,10 @@ struct Model
   std::shared_ptr<const vtkLightShaftDensityField> Field;
   double DensityScale = 1.0;
   double BackgroundDensity = 0.0;
+  /// The scene's vtkVolume (null: none): its extinction kappa per world unit
+  /// (vtkLightShaftVolumeField) dims both legs by exp(-its exact integral along them), every
+  /// channel alike.
+  std::shared_ptr<const vtkLightShaftDensityField> Extinction;
 
   bool Directional() const { return this->Kind == vtkLightShaftModel::LightKind::Directional; }
   /// r at x: the distance from the light, or from a directional light's plane (signed).

@@ -1,5 +1,6 @@
 #include "vtkLightShaftReference.h"
 
+#include "vtkAbstractVolumeMapper.h"
 #include "vtkCamera.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
@@ -14,6 +15,7 @@
 #include "vtkLightShaftPass.h"
 #include "vtkLightShaftRayIntegrator.h"
 #include "vtkLightShaftReferenceScene.h"
+#include "vtkLightShaftVolumeField.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -22,6 +24,7 @@
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkVolume.h"
 
 #include <algorithm>
 #include <atomic>
@@ -154,6 +157,38 @@ namespace
 /**
  * The camera's pixel-centre rays, from VTK's camera parameters (independent of its matrices).
  */
+// The extinction of the renderer's first visible vtkVolume but the medium's
+// (vtkLightShaftVolumeField's rule; nullptr: none, or one that gives no field).
+std::shared_ptr<const vtkLightShaftDensityField> VolumeExtinction(vtkRenderer* renderer,
+  vtkVolume* medium)
+{
+  vtkCollectionSimpleIterator it;
+  renderer->GetViewProps()->InitTraversal(it);
+  while (vtkProp* prop = renderer->GetViewProps()->GetNextProp(it))
+  {
+    auto* volume = vtkVolume::SafeDownCast(prop);
+    if (!volume || volume == medium || !volume->GetVisibility())
+    {
+      continue;
+    }
+    if (vtkAbstractMapper* mapper = volume->GetMapper())
+    {
+      mapper->Update();
+    }
+    vtkNew<vtkImageData> image;
+    auto field = std::make_shared<vtkLightShaftDensityField>();
+    if (!vtkLightShaftVolumeField::Build(
+          volume, vtkLightShaftVolumeField::Quantity::Extinction, image)
+           .empty() ||
+        !field->Read(image, nullptr).empty())
+    {
+      return nullptr;
+    }
+    return field;
+  }
+  return nullptr;
+}
+
 struct CameraRays
 {
   Vec Eye{};
@@ -286,7 +321,7 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
     given.push_back(pass->GetLight(i));
   }
   std::shared_ptr<vtkLightShaftDensityField> field;
-  if (vtkImageData* density = pass->GetMedium()->GetDensityField())
+  if (vtkImageData* density = pass->GetMedium()->UpdateDensityField(this))
   {
     field = std::make_shared<vtkLightShaftDensityField>();
     const std::string why = field->Read(density, pass->GetMedium()->GetDensityArrayName());
@@ -296,11 +331,16 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
       return 0;
     }
   }
+  // The scene's volume (the first visible vtkVolume, as the pass takes it): its extinction
+  // dims both legs.
+  std::shared_ptr<const vtkLightShaftDensityField> extinction =
+    VolumeExtinction(ren, pass->GetMedium()->GetDensityVolume());
   std::vector<Model> models;
   std::vector<vtkLight*> used;
   for (vtkLight* light : vtkLightShaftModel::FindLights(given, ren))
   {
     models.push_back(MakeModel(light, pass, field));
+    models.back().Extinction = extinction;
     used.push_back(light);
   }
   this->LastNumberOfLights = static_cast<int>(models.size());

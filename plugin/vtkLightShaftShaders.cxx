@@ -19,6 +19,7 @@
 #include "vtkLightShaftLightKind.h"
 #include "vtkLightShaftLightSpace.h"
 #include "vtkLightShaftSegment.h"
+#include "vtkLightShaftVolume.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,6 +48,7 @@ std::string WithFeatures(const char* source, const std::vector<std::string>& def
   vtkShaderProgram::Substitute(out, "//VTK::LightShaft::LightSpace", vtkLightShaftLightSpace);
   vtkShaderProgram::Substitute(out, "//VTK::LightShaft::LightKind", vtkLightShaftLightKind);
   vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Field", vtkLightShaftField);
+  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Volume", vtkLightShaftVolume);
   vtkShaderProgram::Substitute(out, "//VTK::LightShaft::CameraLayers", vtkLightShaftCameraLayers);
   return out;
 }
@@ -112,6 +114,7 @@ Variant IntegrandVariant(const char* methodName,
   variant.Feature(frame.Noise != nullptr, "LIGHTSHAFT_NOISE", "noise");
   variant.Feature(frame.Density != nullptr, "LIGHTSHAFT_FIELD", "field");
   variant.Feature(frame.FieldShadow != nullptr, "LIGHTSHAFT_FIELD_SHADOW", "field-shadow");
+  variant.Feature(frame.VolumeShadow != nullptr, "LIGHTSHAFT_VOLUME", "volume");
   // Progressive refinement moves the lookups within each piece (none: nothing to move).
   const bool lookups = shadows || frame.Cookie != nullptr || frame.Noise != nullptr;
   variant.Feature(lookups && frame.LookupFraction != 0.5, "LIGHTSHAFT_REFINE", "refine");
@@ -200,6 +203,29 @@ void SetIntegrandUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& f
   {
     SetCameraLayerUniforms(program, frame);
   }
+  if (frame.VolumeShadow)
+  {
+    SetVolumeUniforms(program, frame);
+  }
+}
+
+void SetVolumeUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame)
+{
+  const glm::dmat4 tcFromVC =
+    frame.VolumeField->TextureFromWorld() * glm::inverse(frame.Camera.WorldToView);
+  program->SetUniformMatrix4x4(
+    "volumeTCFromVC", vtkLightShaftGeometry::ToFloatColumnMajor(tcFromVC).data());
+  float low[3];
+  float high[3];
+  frame.VolumeField->TextureBounds(low, high);
+  program->SetUniform3f("volumeLowTC", low);
+  program->SetUniform3f("volumeHighTC", high);
+  program->SetUniformi("volumeSteps", DensitySteps(frame.Parameters.NumberOfSteps));
+  frame.Volume->Activate();
+  program->SetUniformi("volumeTexture", frame.Volume->GetTextureUnit());
+  SetTableUniforms(program, "volumeShadow", *frame.VolumeShadowLayout, frame);
+  frame.VolumeShadow->Activate();
+  program->SetUniformi("volumeShadowTexture", frame.VolumeShadow->GetTextureUnit());
 }
 
 void SetCameraLayerUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame)
@@ -246,16 +272,19 @@ void SetDensityUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& fra
   }
 }
 
-void SetFieldShadowUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame)
+void SetTableUniforms(vtkShaderProgram* program,
+  const std::string& name,
+  const vtkLightShaftFieldShadow& table,
+  const vtkLightShaftFrame& frame)
 {
-  const vtkLightShaftFieldShadow::Layout& layout = frame.FieldShadowLayout->GetLayout();
+  const vtkLightShaftFieldShadow::Layout& layout = table.GetLayout();
   // View coordinates -> world -> the face's frame (origin at the light).
   glm::dmat4 toFace(glm::dmat3(layout.ToFace));
   toFace[3] = glm::dvec4(-(layout.ToFace * layout.Origin), 1.0);
   const glm::dmat4 fromVC = toFace * glm::inverse(frame.Camera.WorldToView);
   program->SetUniformMatrix4x4(
-    "fieldShadowFromVC", vtkLightShaftGeometry::ToFloatColumnMajor(fromVC).data());
-  program->SetUniformi("fieldShadowFaces", layout.Faces);
+    (name + ".fromVC").c_str(), vtkLightShaftGeometry::ToFloatColumnMajor(fromVC).data());
+  program->SetUniformi((name + ".faces").c_str(), layout.Faces);
   // Texel centres at the range's ends: tc = (0.5 + (x - low) / (high - low) * (n - 1)) / n.
   float scale[3];
   float offset[3];
@@ -266,14 +295,19 @@ void SetFieldShadowUniforms(vtkShaderProgram* program, const vtkLightShaftFrame&
     scale[k] = static_cast<float>(s);
     offset[k] = static_cast<float>(0.5 / n - layout.Low[k] * s);
   }
-  program->SetUniform3f("fieldShadowScale", scale);
-  program->SetUniform3f("fieldShadowOffset", offset);
+  program->SetUniform3f((name + ".scale").c_str(), scale);
+  program->SetUniform3f((name + ".offset").c_str(), offset);
   const float lateral[4] = { static_cast<float>(layout.Low[0]),
     static_cast<float>(layout.Low[1]),
     static_cast<float>(layout.High[0]),
     static_cast<float>(layout.High[1]) };
-  program->SetUniform4f("fieldShadowLateral", lateral);
-  program->SetUniformf("fieldShadowDepth", static_cast<float>(layout.Depth));
+  program->SetUniform4f((name + ".lateral").c_str(), lateral);
+  program->SetUniformf((name + ".depth").c_str(), static_cast<float>(layout.Depth));
+}
+
+void SetFieldShadowUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame)
+{
+  SetTableUniforms(program, "fieldShadow", *frame.FieldShadowLayout, frame);
   frame.FieldShadow->Activate();
   program->SetUniformi("fieldShadowTexture", frame.FieldShadow->GetTextureUnit());
 }

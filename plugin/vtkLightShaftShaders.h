@@ -11,6 +11,7 @@
 #include <string> // For sources, keys and descriptions
 #include <vector> // For the defines
 
+class vtkLightShaftFieldShadow;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -111,6 +112,15 @@ void SetDensityUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& fra
 
 /// The camera leg's translucent layers (LIGHTSHAFT_CAMERA_LAYERS), their texture activated.
 void SetCameraLayerUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame);
+
+/// The scene's volume's uniforms (LIGHTSHAFT_VOLUME), its textures activated.
+void SetVolumeUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame);
+
+/// A light leg's table (a GLSL LightShaftTable uniform named `name`): its layout's uniforms.
+void SetTableUniforms(vtkShaderProgram* program,
+  const std::string& name,
+  const vtkLightShaftFieldShadow& table,
+  const vtkLightShaftFrame& frame);
 
 /// The light leg's table through the field (LIGHTSHAFT_FIELD_SHADOW) and its texture, activated.
 void SetFieldShadowUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& frame);

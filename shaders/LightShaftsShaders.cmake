@@ -26,7 +26,8 @@ set(lightshafts_pass_shaders
   vtkLightShaftSlabVS
   vtkLightShaftSliceFS
   vtkLightShaftSurfaceLightFS
-  vtkLightShaftUpsampleFS)
+  vtkLightShaftUpsampleFS
+  vtkLightShaftVolume)
 set(lightshafts_shader_dir "${CMAKE_CURRENT_LIST_DIR}")
 
 # Embed shaders/<name>.glsl for each name as C strings; the generated sources and headers are

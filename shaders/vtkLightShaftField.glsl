@@ -63,24 +63,28 @@ float lightShaftOpticalDepth(vec3 aVC, vec3 bVC)
 }
 #endif
 
-#ifdef LIGHTSHAFT_FIELD_SHADOW
-// The light leg's field part, precomputed per light (vtkLightShaftFieldShadow): the integral of
-// rho from the light to the point, tabulated in the light's frame. One face (orthographic for a
+#if defined(LIGHTSHAFT_FIELD_SHADOW) || defined(LIGHTSHAFT_VOLUME)
+#ifndef LIGHTSHAFT_TABLE_CHUNK
+#define LIGHTSHAFT_TABLE_CHUNK
+// A light leg precomputed per light (vtkLightShaftFieldShadow): the integral of a field from
+// the light to the point, tabulated in the light's frame. One face (orthographic for a
 // directional light, else perspective) or six (a cube around the light, world-axis aligned).
-uniform sampler3D fieldShadowTexture;
-uniform mat4 fieldShadowFromVC; // view coordinates to the face's frame (the cube's: world axes)
-uniform int fieldShadowFaces;   // 1 or 6
-uniform vec3 fieldShadowScale;  // (u, v, w) to texture coordinates: offset + scale * (u, v, w)
-uniform vec3 fieldShadowOffset;
-uniform vec4 fieldShadowLateral; // a single face's (u, v) range: rays outside it miss the field
-uniform float fieldShadowDepth;  // texels along w per face
-
-float lightShaftFieldShadow(vec3 pointVC)
+struct LightShaftTable
 {
-  vec3 q = (fieldShadowFromVC * vec4(pointVC, 1.0)).xyz;
+  mat4 fromVC;  // view coordinates to the face's frame (the cube's: world axes)
+  int faces;    // 1 or 6
+  vec3 scale;   // (u, v, w) to texture coordinates: offset + scale * (u, v, w)
+  vec3 offset;
+  vec4 lateral; // a single face's (u, v) range: rays outside it miss the field
+  float depth;  // texels along w per face
+};
+
+float lightShaftTableLookup(sampler3D table, LightShaftTable t, vec3 pointVC)
+{
+  vec3 q = (t.fromVC * vec4(pointVC, 1.0)).xyz;
   vec3 uvw;
   float face = 0.0;
-  if (fieldShadowFaces == 6)
+  if (t.faces == 6)
   {
     vec3 a = abs(q);
     int k = (a.x >= a.y && a.x >= a.z) ? 0 : ((a.y >= a.z) ? 1 : 2);
@@ -99,17 +103,27 @@ float lightShaftFieldShadow(vec3 pointVC)
     }
     uvw = vec3(q.xy / q.z, length(q));
 #endif
-    if (any(lessThan(uvw.xy, fieldShadowLateral.xy)) ||
-      any(greaterThan(uvw.xy, fieldShadowLateral.zw)))
+    if (any(lessThan(uvw.xy, t.lateral.xy)) || any(greaterThan(uvw.xy, t.lateral.zw)))
     {
       return 0.0;
     }
   }
-  vec3 tc = fieldShadowOffset + fieldShadowScale * uvw;
+  vec3 tc = t.offset + t.scale * uvw;
   // Within the face's own layers: before the first texel centre tau is 0 (the field starts
   // later), past the last it stays the box's total.
-  tc.z = (clamp(tc.z, 0.5 / fieldShadowDepth, 1.0 - 0.5 / fieldShadowDepth) + face) /
-    float(fieldShadowFaces);
-  return texture(fieldShadowTexture, tc).r;
+  tc.z = (clamp(tc.z, 0.5 / t.depth, 1.0 - 0.5 / t.depth) + face) / float(t.faces);
+  return texture(table, tc).r;
+}
+#endif
+#endif
+
+#ifdef LIGHTSHAFT_FIELD_SHADOW
+// The light leg's field part: the integral of rho from the light to the point.
+uniform sampler3D fieldShadowTexture;
+uniform LightShaftTable fieldShadow;
+
+float lightShaftFieldShadow(vec3 pointVC)
+{
+  return lightShaftTableLookup(fieldShadowTexture, fieldShadow, pointVC);
 }
 #endif

@@ -2,10 +2,12 @@
 // in-scattered radiance of one segment of a pixel's view ray, with the light-space factors
 // (shadow map, cookie, noise), and the pixel's lit interval. Features (#defines):
 // LIGHTSHAFT_SHADOW, LIGHTSHAFT_COOKIE, LIGHTSHAFT_NOISE, LIGHTSHAFT_LATTICE,
-// LIGHTSHAFT_CAMERA_LAYERS (the camera leg through translucent surfaces), the light's kind;
+// LIGHTSHAFT_CAMERA_LAYERS (the camera leg through translucent surfaces), LIGHTSHAFT_VOLUME
+// (both legs through the scene's vtkVolume), the light's kind;
 // code for a feature that is off is not compiled.
 //VTK::LightShaft::LightSpace
 //VTK::LightShaft::Field
+//VTK::LightShaft::Volume
 
 #ifdef LIGHTSHAFT_FIELD
 // The optical depth of the view ray from its origin to the start of the segment being
@@ -120,6 +122,9 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
 #endif
 #ifdef LIGHTSHAFT_CAMERA_LAYERS
   modulation *= lightShaftCameraLeg(originVC, dirVC, b, h2, x0, x1);
+#endif
+#ifdef LIGHTSHAFT_VOLUME
+  modulation *= lightShaftVolumeLegs(originVC, dirVC, b, x0, x1, sampleVC);
 #endif
 #ifdef LIGHTSHAFT_COOKIE
   modulation *= lightShaftCookie(sampleVC, footprintInSquares);

@@ -298,21 +298,29 @@ class Fuzzer:
         return f"SetMedium(media[{index}])"
 
     def translucent(self):
-        # Translucent casters: a pane across the spot's beam, a sphere shell around the scene's
-        # sphere (two surfaces a ray crosses), or a red cube: opacity anywhere in [0, 1] (0 and
-        # 1 included), any colour; or one taken out.
+        # Translucent props: a pane across the spot's beam, a vertical pane between the camera
+        # and the beam or behind it (the camera leg), a sphere shell around the scene's sphere
+        # (two surfaces a ray crosses), or a cube: opacity anywhere in [0, 1] (0 and 1
+        # included), any colour; or one taken out.
         rng = self.rng
         if self.translucent_actors and rng.random() < 0.3:
             actor = self.translucent_actors.pop(rng.randrange(len(self.translucent_actors)))
             self.renderer.RemoveActor(actor)
             return "translucent prop removed"
-        kind = rng.choice(["pane", "shell", "cube"])
+        kind = rng.choice(["pane", "front pane", "back pane", "shell", "cube"])
         if kind == "pane":
             source = vtkPlaneSource()
             y = rng.uniform(1.0, 5.5)
             source.SetOrigin(-2.0, y, -2.0)
             source.SetPoint1(2.0, y, -2.0)
             source.SetPoint2(-2.0, y, 2.0)
+        elif kind in ("front pane", "back pane"):
+            source = vtkPlaneSource()
+            z = rng.uniform(2.5, 9.0) if kind == "front pane" else rng.uniform(-6.0, -2.5)
+            x = rng.uniform(-3.0, 1.0)
+            source.SetOrigin(x, -1.0, z)
+            source.SetPoint1(x + rng.uniform(0.5, 6.0), -1.0, z)
+            source.SetPoint2(x, 8.0, z)
         elif kind == "shell":
             source = vtkSphereSource()
             source.SetCenter(0.0, 1.5, 0.0)

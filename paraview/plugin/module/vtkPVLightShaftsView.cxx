@@ -1,5 +1,6 @@
 #include "vtkPVLightShaftsView.h"
 
+#include "vtkAlgorithmOutput.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommunicator.h"
 #include "vtkImageData.h"
@@ -14,11 +15,13 @@
 #include "vtkObjectFactory.h"
 #include "vtkPVImageProcessingChain.h"
 #include "vtkPVSynchronizedRenderer.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkTexture.h"
 #include "vtkTextureObject.h"
 #include "vtkToneMappingPass.h"
+#include "vtkVolume.h"
 #include "vtkWeakPointer.h"
 
 #include <algorithm>
@@ -49,6 +52,8 @@ public:
   int BlurRadius = this->Shafts->GetBlurRadius();
   int DownsampleFactor = this->Shafts->GetDownsampleFactor();
   int AccumulationPrecision = this->Shafts->GetAccumulationPrecision();
+  // The MediumDensity property's pipeline output, set aside while a volume is the medium.
+  vtkSmartPointer<vtkAlgorithmOutput> DensityConnection;
   // A preset may choose the method (the ray march's steps and interleaving) too.
   int Method = this->Shafts->GetMethod();
   int NumberOfSteps = this->Shafts->GetNumberOfSteps();
@@ -141,6 +146,7 @@ void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
     renderer->SetUseFXAA(false);
     this->Impl->RestoreRendererFXAA = true;
   }
+  this->UpdateMediumVolume();
   vtkLightShaftPass* shafts = this->Impl->Shafts;
   if (this->DistributedShadowMap && DistributedController() && this->GeometryBounds.IsValid())
   {
@@ -694,7 +700,59 @@ void vtkPVLightShaftsView::SetNoiseVelocity2(double u, double v)
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetMediumDensityConnection(vtkAlgorithmOutput* output)
 {
-  this->Impl->Shafts->GetMedium()->SetDensityFieldConnection(output);
+  this->Impl->DensityConnection = output;
+  if (!this->MediumFromVolume)
+  {
+    this->Impl->Shafts->GetMedium()->SetDensityFieldConnection(output);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetMediumFromVolume(bool on)
+{
+  if (on == this->MediumFromVolume)
+  {
+    return;
+  }
+  this->MediumFromVolume = on;
+  if (!on)
+  {
+    this->Impl->Shafts->GetMedium()->SetDensityFieldConnection(this->Impl->DensityConnection);
+  }
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+// With MediumFromVolume, the first visible volume of the renderer is the medium (the volume
+// representations' props change as their data and visibility do: chosen at each render).
+void vtkPVLightShaftsView::UpdateMediumVolume()
+{
+  if (!this->MediumFromVolume)
+  {
+    return;
+  }
+  vtkVolume* chosen = nullptr;
+  vtkCollectionSimpleIterator it;
+  vtkPropCollection* props = this->GetRenderer()->GetViewProps();
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    auto* volume = vtkVolume::SafeDownCast(prop);
+    if (volume && volume->GetVisibility())
+    {
+      chosen = volume;
+      break;
+    }
+  }
+  vtkLightShaftMedium* medium = this->Impl->Shafts->GetMedium();
+  if (chosen)
+  {
+    medium->SetDensityVolume(chosen);
+  }
+  else if (medium->GetDensityVolume())
+  {
+    medium->SetDensityFieldConnection(nullptr); // (no volume: the homogeneous medium)
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -233,6 +233,17 @@ public:
 
   ///@{
   /**
+   * A volume representation as the medium (vtkLightShaftMedium::SetDensityVolume): on, the
+   * first visible volume the view renders scatters the light, its opacity transfer function as
+   * the density (the MediumDensity property is set aside meanwhile); off, every volume dims and
+   * shadows the shafts (docs/paraview.md). Default is off.
+   */
+  void SetMediumFromVolume(bool on);
+  vtkGetMacro(MediumFromVolume, bool);
+  ///@}
+
+  ///@{
+  /**
    * The noise's time: with LinkShaftTimeToAnimation on (default), the view time (ParaView's
    * animation time); off, ShaftTime (default 0).
    */
@@ -271,12 +282,14 @@ protected:
   void AboutToRenderOnLocalProcess(bool interactive) override;
   // ShadowMapRenderedEvent: the minimum of the processes' depth maps (distributed).
   void CombineShadowMaps();
+  void UpdateMediumVolume();
 
   bool DistributedShadowMap = true;
 
   bool LightShafts = true;
   int ShaftQuality = CUSTOM;
   bool LinkShaftTimeToAnimation = true;
+  bool MediumFromVolume = false;
   double ShaftTime = 0.0;
 
 private:

@@ -1,0 +1,79 @@
+// The scene's vtkVolume (LIGHTSHAFT_VOLUME): its extinction kappa per world unit
+// (vtkLightShaftVolumeField's rule), a 3D texture (trilinear) over the volume's box, 0 outside.
+// It dims what lies behind it for the camera, shafts included, by exp(-integral of kappa)
+// along the view ray, and the light that reaches a sample through it by the light leg's
+// integral, tabulated per light (LightShaftTable, vtkLightShaftFieldShadow). Included once.
+#ifdef LIGHTSHAFT_VOLUME
+#ifndef LIGHTSHAFT_VOLUME_CHUNK
+#define LIGHTSHAFT_VOLUME_CHUNK
+uniform sampler3D volumeTexture;
+uniform mat4 volumeTCFromVC; // view coordinates to the texture's coordinates
+uniform vec3 volumeLowTC;    // the volume's box in texture coordinates
+uniform vec3 volumeHighTC;
+uniform int volumeSteps;     // samples of the camera leg from the eye to a segment
+uniform sampler3D volumeShadowTexture;
+uniform LightShaftTable volumeShadow;
+
+// The integral of kappa along aVC -> bVC by `steps` midpoint samples over the part inside the
+// volume's box.
+float lightShaftVolumeDepth(vec3 aVC, vec3 bVC, int steps)
+{
+  vec3 ta = (volumeTCFromVC * vec4(aVC, 1.0)).xyz;
+  vec3 delta = (volumeTCFromVC * vec4(bVC, 1.0)).xyz - ta;
+  float s0 = 0.0;
+  float s1 = 1.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (abs(delta[k]) < 1e-30)
+    {
+      if (ta[k] < volumeLowTC[k] || ta[k] > volumeHighTC[k])
+      {
+        s1 = -1.0;
+      }
+      continue;
+    }
+    float enter = (volumeLowTC[k] - ta[k]) / delta[k];
+    float leave = (volumeHighTC[k] - ta[k]) / delta[k];
+    s0 = max(s0, min(enter, leave));
+    s1 = min(s1, max(enter, leave));
+  }
+  if (!(s1 > s0))
+  {
+    return 0.0;
+  }
+  float ds = (s1 - s0) / float(steps);
+  float sum = 0.0;
+  for (int i = 0; i < steps; ++i)
+  {
+    sum += texture(volumeTexture, ta + (s0 + (float(i) + 0.5) * ds) * delta).r;
+  }
+  return sum * ds * length(bVC - aVC);
+}
+
+// The camera leg's integral up to the last point asked (x along the ray), carried from one
+// segment to the next along a march: a segment further along the same ray adds its stretch.
+float lightShaftVolumeSoFar = 0.0;
+float lightShaftVolumeSoFarX = -3.0e38;
+
+// What of the in-scatter at the piece x in [x0, x1] of the ray reaches the camera through the
+// volume, and what of the light reaches the piece's sample through it.
+float lightShaftVolumeLegs(vec3 originVC, vec3 dirVC, float b, float x0, float x1,
+  vec3 sampleVC)
+{
+  float x = 0.5 * (x0 + x1);
+  vec3 pointVC = originVC + (x - b) * dirVC;
+  if (x >= lightShaftVolumeSoFarX && lightShaftVolumeSoFarX > -1.0e38)
+  {
+    lightShaftVolumeSoFar += lightShaftVolumeDepth(
+      originVC + (lightShaftVolumeSoFarX - b) * dirVC, pointVC, 2);
+  }
+  else
+  {
+    lightShaftVolumeSoFar = lightShaftVolumeDepth(originVC, pointVC, volumeSteps);
+  }
+  lightShaftVolumeSoFarX = x;
+  float lightLeg = lightShaftTableLookup(volumeShadowTexture, volumeShadow, sampleVC);
+  return exp(-(lightShaftVolumeSoFar + lightLeg));
+}
+#endif
+#endif
