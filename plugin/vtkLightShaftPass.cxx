@@ -464,6 +464,13 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
     publish(frame);
     return;
   }
+  if (frame.Size[0] < 1 || frame.Size[1] < 1)
+  {
+    // A viewport with no pixel shows nothing (and VTK's volume mappers raise GL errors when
+    // asked to draw into one).
+    publish(frame);
+    return;
+  }
   impl.Track(frame.Window);
   vtkRenderPass* delegate = impl.Scene.ChooseDelegate(this->DelegatePass);
   const std::vector<vtkLight*> lights = impl.Lights.Choose(this, frame.Renderer);
@@ -472,8 +479,7 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   const bool cameraUsable = impl.Check.CheckCamera(this, frame);
   impl.Check.CheckProps(this, frame);
   impl.Scene.HoldOverlay(delegate);
-  if (lights.empty() || !(medium || this->ShadowSurfaces) || frame.Size[0] < 1 ||
-      frame.Size[1] < 1 || !cameraUsable)
+  if (lights.empty() || !(medium || this->ShadowSurfaces) || !cameraUsable)
   {
     impl.Scene.RenderUnchanged(frame, delegate); // nothing to add: the delegate's image
   }
@@ -745,10 +751,10 @@ void vtkLightShaftPass::Internals::RenderLight(vtkLightShaftFrame& frame,
   {
     state.Timer.ReusableStart();
   }
+  this->ReadyVolumeShadow(frame, state.VolumeShadow); // (the shafts' and the surfaces')
   if (frame.Medium.Scatters())
   {
     this->ReadyFieldShadow(frame, state.FieldShadow);
-    this->ReadyVolumeShadow(frame, state.VolumeShadow);
     this->InScatter.Add(frame, this->InScatter.ChooseMethod(frame));
   }
   if (shadowSurfaces || frame.Cookie)

@@ -74,6 +74,7 @@ void vtkLightShaftSurfaceLight::Add(vtkLightShaftFrame& frame,
   variant.Feature(shadowMap != nullptr, "LIGHTSHAFT_SHADOW", "shadow");
   variant.Feature(
     shadowMap != nullptr && frame.Translucency, "LIGHTSHAFT_TRANSLUCENT", "translucent");
+  variant.Feature(frame.VolumeShadow != nullptr, "LIGHTSHAFT_VOLUME_SHADOW", "volume");
   variant.Feature(frame.Cookie != nullptr, "LIGHTSHAFT_COOKIE", "cookie");
   variant.Feature(multisample, "LIGHTSHAFT_MULTISAMPLE", "multisample");
   vtkLightShaftResources::FullScreenPass& pass =
@@ -111,6 +112,14 @@ void vtkLightShaftSurfaceLight::Add(vtkLightShaftFrame& frame,
     program->SetUniformf("shadowTexel", static_cast<float>(lightFrame.MapExtent / texels));
     program->SetUniformf("shadowFloor",
       static_cast<float>(directional ? 1e-4 * (lightFrame.Far - lightFrame.Near) : 1e-4));
+  }
+  if (frame.VolumeShadow)
+  {
+    active.push_back(frame.VolumeShadow);
+    vtkLightShaftShaders::SetTableUniforms(
+      program, "volumeShadow", *frame.VolumeShadowLayout, frame);
+    frame.VolumeShadow->Activate();
+    program->SetUniformi("volumeShadowTexture", frame.VolumeShadow->GetTextureUnit());
   }
   if (frame.Cookie)
   {

@@ -63,7 +63,7 @@ float lightShaftOpticalDepth(vec3 aVC, vec3 bVC)
 }
 #endif
 
-#if defined(LIGHTSHAFT_FIELD_SHADOW) || defined(LIGHTSHAFT_VOLUME)
+#if defined(LIGHTSHAFT_FIELD_SHADOW) || defined(LIGHTSHAFT_VOLUME) || defined(LIGHTSHAFT_VOLUME_SHADOW)
 #ifndef LIGHTSHAFT_TABLE_CHUNK
 #define LIGHTSHAFT_TABLE_CHUNK
 // A light leg precomputed per light (vtkLightShaftFieldShadow): the integral of a field from

@@ -5,6 +5,7 @@
 // the correction the composite subtracts from the scene. The visibility is the shafts' own
 // shadow map, with a depth tolerance that grows with the surface's slope to the light (its
 // normal from the depth of the neighbouring pixels). Features (#defines): LIGHTSHAFT_SHADOW,
+// LIGHTSHAFT_TRANSLUCENT, LIGHTSHAFT_VOLUME_SHADOW (the light's leg through the scene's volume),
 // LIGHTSHAFT_COOKIE, LIGHTSHAFT_MULTISAMPLE (per sample), the light's kind.
 //VTK::LightShaft::Features
 #ifdef LIGHTSHAFT_MULTISAMPLE
@@ -16,6 +17,12 @@ in vec2 texCoord;
 
 //VTK::LightShaft::Common
 //VTK::LightShaft::LightSpace
+//VTK::LightShaft::Field
+
+#ifdef LIGHTSHAFT_VOLUME_SHADOW
+uniform sampler3D volumeShadowTexture;
+uniform LightShaftTable volumeShadow;
+#endif
 
 #ifdef LIGHTSHAFT_SHADOW
 uniform float shadowTexel; // a texel's extent: at unit distance (spot, point), or world units
@@ -88,9 +95,12 @@ void main()
   cookie *= lightShaftTranslucency(surfaceVC, r, bias);
 #endif
 #endif
+#ifdef LIGHTSHAFT_VOLUME_SHADOW
+  cookie *= exp(-lightShaftTableLookup(volumeShadowTexture, volumeShadow, surfaceVC));
+#endif
 #ifdef LIGHTSHAFT_COOKIE
   float footprint = pixelFootprint.x * (-surfaceVC.z) + pixelFootprint.y;
-  cookie = lightShaftCookie(surfaceVC,
+  cookie *= lightShaftCookie(surfaceVC,
     footprint / max(lightSquareWidth.x * r + lightSquareWidth.y, 1e-30));
 #endif
   gl_FragData[0] = vec4((vec3(1.0) - visibility * cookie) * share, 0.0);

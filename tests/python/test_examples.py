@@ -32,7 +32,7 @@ def read_png(path):
                                     "stained_glass.py", "sun_through_window.py",
                                     "lamp_over_table.py", "crossing_spotlights.py",
                                     "pyvista_shafts.py", "smoke_plume.py", "ct_phantom.py",
-                                    "glass_window.py"])
+                                    "glass_window.py", "smoke_in_beam.py"])
 def test_example_renders(tmp_path, script):
     output = tmp_path / "out.png"
     if script == "pyvista_shafts.py":

@@ -26,7 +26,9 @@ import numpy as np
 import pytest
 
 from lightshafts import parameter_owner, scenes, vtkLightShaftMedium, vtkLightShaftPass
-from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkImageData
+from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkImageData, vtkPiecewiseFunction
+from vtkmodules.vtkRenderingCore import vtkVolume, vtkVolumeProperty
+from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkOpenGLGPUVolumeRayCastMapper
 from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkPlaneSource, vtkSphereSource
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkHardwareSelector, vtkLight,
                                          vtkPolyDataMapper, vtkTexture)
@@ -84,7 +86,9 @@ DOCUMENTED_WARNINGS = ["No spot or point light in the renderer", "given to the p
                        "has no feature for a medium from data",
                        # junk on the VTK objects the pass reads (junk_vtk)
                        "is left out of the shafts", "The camera cannot be used for the shafts",
-                       "casts no shadow in the shafts", "image cannot be used (texel"]
+                       "casts no shadow in the shafts", "image cannot be used (texel",
+                       # several volumes: the first dims the shafts (volumes)
+                       "The shafts are dimmed and shadowed by one vtkVolume"]
 INT_PROBE = 2 ** 31 - 1
 FLOAT_PROBE = 1e300
 
@@ -204,6 +208,7 @@ class Fuzzer:
         self.frame_times = []
         self.shafted = 0  # frames that computed shafts
         self.translucent_actors = []
+        self.volumes = []
 
     def value(self, name, integer, log):
         low, high = self.ranges[name]
@@ -338,6 +343,63 @@ class Fuzzer:
         self.renderer.AddActor(actor)
         self.translucent_actors.append(actor)
         return f"translucent {kind} (opacity {opacity:.3f})"
+
+    def volume(self):
+        # Volumes: a slab or a puff of smoke, in front of, behind or across the beams, with an
+        # opacity function anywhere in [0, 1] per unit distance in [0.01, 10]; one taken out,
+        # made the medium (SetDensityVolume) or given back; its opacity changed.
+        rng = self.rng
+        medium = self.shafts.GetMedium()
+        if self.volumes and rng.random() < 0.4:
+            volume = rng.choice(self.volumes)
+            choice = rng.choice(["remove", "medium", "opacity", "hide"])
+            if choice == "remove":
+                self.volumes.remove(volume)
+                self.renderer.RemoveVolume(volume)
+                return "volume removed"
+            if choice == "medium":
+                medium.SetDensityVolume(volume if medium.GetDensityVolume() is None else None)
+                return f"SetDensityVolume({medium.GetDensityVolume() is not None})"
+            if choice == "hide":
+                volume.SetVisibility(not volume.GetVisibility())
+                return f"volume visibility {volume.GetVisibility()}"
+            opacity = volume.GetProperty().GetScalarOpacity()
+            opacity.RemoveAllPoints()
+            opacity.AddPoint(0.0, rng.choice([0.0, 1.0, rng.random()]))
+            opacity.AddPoint(1.0, rng.choice([0.0, 1.0, rng.random()]))
+            return "volume opacity changed"
+        n = rng.randint(2, 12)
+        image = vtkImageData()
+        image.SetDimensions(n, rng.randint(2, 6), n)
+        kind = rng.choice(["slab", "front", "puff"])
+        if kind == "slab":
+            image.SetOrigin(-4.0, rng.uniform(0.5, 5.0), -4.0)
+            image.SetSpacing(8.0 / (n - 1), rng.uniform(0.02, 0.5), 8.0 / (n - 1))
+        elif kind == "front":
+            image.SetOrigin(rng.uniform(-3.0, 1.0), -1.0, rng.uniform(2.5, 9.0))
+            image.SetSpacing(rng.uniform(0.1, 1.0), 2.0, rng.uniform(0.01, 0.2))
+        else:
+            image.SetOrigin(rng.uniform(-2, 1), rng.uniform(0.5, 3.0), rng.uniform(-2, 1))
+            image.SetSpacing(*[rng.uniform(0.05, 0.5) for _ in range(3)])
+        dims = image.GetDimensions()
+        values = np.array([rng.random() for _ in range(dims[0] * dims[1] * dims[2])])
+        scalars = numpy_to_vtk(values.astype(np.float32), deep=True)
+        scalars.SetName("s")
+        image.GetPointData().SetScalars(scalars)
+        mapper = vtkOpenGLGPUVolumeRayCastMapper()
+        mapper.SetInputData(image)
+        opacity = vtkPiecewiseFunction()
+        opacity.AddPoint(0.0, rng.choice([0.0, rng.random()]))
+        opacity.AddPoint(1.0, rng.choice([1.0, rng.random()]))
+        prop = vtkVolumeProperty()
+        prop.SetScalarOpacity(opacity)
+        prop.SetScalarOpacityUnitDistance(math.exp(rng.uniform(math.log(0.01), math.log(10.0))))
+        volume = vtkVolume()
+        volume.SetMapper(mapper)
+        volume.SetProperty(prop)
+        self.renderer.AddVolume(volume)
+        self.volumes.append(volume)
+        return f"volume {kind} {dims}"
 
     def light(self):
         rng, spot = self.rng, self.spot
@@ -520,7 +582,7 @@ class Fuzzer:
     ACTIONS = [(set_scalar, 30), (set_vector, 8), (set_boolean, 6), (preset, 2), (textures, 5),
                (light, 10), (several_lights, 8), (usable_light, 5), (camera, 10), (window_size, 6), (viewport, 4), (multisamples, 3),
                (delegate, 2), (selection, 2), (still, 6), (update_rate, 3), (junk_vtk, 6),
-               (medium, 3), (medium_object, 2), (translucent, 4)]
+               (medium, 3), (medium_object, 2), (translucent, 4), (volume, 3)]
 
     # --- one frame --------------------------------------------------------------------------
     def step(self, index):
