@@ -233,8 +233,6 @@ void SetCameraLayerUniforms(vtkShaderProgram* program, const vtkLightShaftFrame&
   frame.CameraLayers->Activate();
   program->SetUniformi("cameraLayers", frame.CameraLayers->GetTextureUnit());
   program->SetUniformi("cameraLayerCount", frame.CameraLayerCount);
-  auto projection = vtkLightShaftGeometry::ToFloatColumnMajor(frame.Camera.ViewToClip);
-  program->SetUniformMatrix4x4("projectionVCDC", projection.data());
 }
 
 int DensitySteps(int viewSteps)

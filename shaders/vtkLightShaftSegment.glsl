@@ -121,7 +121,7 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
   modulation *= lightShaftTranslucency(sampleVC, sampleR, shadowBias);
 #endif
 #ifdef LIGHTSHAFT_CAMERA_LAYERS
-  modulation *= lightShaftCameraLeg(originVC, dirVC, b, h2, x0, x1);
+  modulation *= lightShaftCameraLeg(b, x0, x1);
 #endif
 #ifdef LIGHTSHAFT_VOLUME
   modulation *= lightShaftVolumeLegs(originVC, dirVC, b, x0, x1, sampleVC);
@@ -189,6 +189,9 @@ bool lightShaftLitIntervalAt(vec2 fragCoord, float depth, float nearDepth, float
 {
   vec2 ndc;
   lightShaftViewRay(fragCoord, ray.originVC, ray.dirVC, ndc);
+#ifdef LIGHTSHAFT_CAMERA_LAYERS
+  lightShaftReadCameraLayers(ndc, ray.dirVC);
+#endif
   float tPerDepth = -1.0 / ray.dirVC.z;
   float ta = nearDepth * tPerDepth;
   float tb = farDepth * tPerDepth;
@@ -204,6 +207,9 @@ bool lightShaftLitIntervalAt(vec2 fragCoord, float depth, float nearDepth, float
   }
   ray.x0 = max(ta + ray.b, litIn);
   ray.x1 = min(tb + ray.b, litOut);
+#ifdef LIGHTSHAFT_VOLUME
+  lightShaftVolumeStart(ray.originVC, ray.dirVC, ray.b, ray.x0);
+#endif
   return ray.x1 > ray.x0;
 }
 

@@ -50,27 +50,40 @@ float lightShaftVolumeDepth(vec3 aVC, vec3 bVC, int steps)
   return sum * ds * length(bVC - aVC);
 }
 
-// The camera leg's integral up to the last point asked (x along the ray), carried from one
-// segment to the next along a march: a segment further along the same ray adds its stretch.
+// The camera leg's integral from the eye to the ray parameter x (x = t + b, lightShaftSegment),
+// started when the ray is set up (lightShaftVolumeStart, in lightShaftLitIntervalAt: outside the
+// march's loop, where llvmpipe would pay for the full march at every step) and carried from one
+// piece to the next: each adds the stretch from the last point to its own midpoint.
 float lightShaftVolumeSoFar = 0.0;
-float lightShaftVolumeSoFarX = -3.0e38;
+float lightShaftVolumeSoFarX = 0.0;
+
+void lightShaftVolumeStart(vec3 originVC, vec3 dirVC, float b, float x)
+{
+  lightShaftVolumeSoFar = lightShaftVolumeDepth(originVC, originVC + (x - b) * dirVC, volumeSteps);
+  lightShaftVolumeSoFarX = x;
+}
+
+// kappa at pointVC (0 outside the volume's box), without a branch.
+float lightShaftVolumeKappa(vec3 pointVC)
+{
+  vec3 tc = (volumeTCFromVC * vec4(pointVC, 1.0)).xyz;
+  vec3 inside = step(volumeLowTC, tc) * step(tc, volumeHighTC);
+  return inside.x * inside.y * inside.z * texture(volumeTexture, tc).r;
+}
 
 // What of the in-scatter at the piece x in [x0, x1] of the ray reaches the camera through the
-// volume, and what of the light reaches the piece's sample through it.
+// volume, and what of the light reaches the piece's sample through it. The camera leg's stretch
+// from the last point to this piece's midpoint by one midpoint sample, without a branch: the
+// march runs it at every step (measured on llvmpipe: the clipped two-sample stretch cost 65% of a
+// RAY_MARCH frame, this one ...).
 float lightShaftVolumeLegs(vec3 originVC, vec3 dirVC, float b, float x0, float x1,
   vec3 sampleVC)
 {
   float x = 0.5 * (x0 + x1);
-  vec3 pointVC = originVC + (x - b) * dirVC;
-  if (x >= lightShaftVolumeSoFarX && lightShaftVolumeSoFarX > -1.0e38)
-  {
-    lightShaftVolumeSoFar += lightShaftVolumeDepth(
-      originVC + (lightShaftVolumeSoFarX - b) * dirVC, pointVC, 2);
-  }
-  else
-  {
-    lightShaftVolumeSoFar = lightShaftVolumeDepth(originVC, pointVC, volumeSteps);
-  }
+  // (Signed: a piece before the last point takes its stretch back.)
+  float middle = 0.5 * (x + lightShaftVolumeSoFarX) - b;
+  lightShaftVolumeSoFar +=
+    (x - lightShaftVolumeSoFarX) * lightShaftVolumeKappa(originVC + middle * dirVC);
   lightShaftVolumeSoFarX = x;
   float lightLeg = lightShaftTableLookup(volumeShadowTexture, volumeShadow, sampleVC);
   return exp(-(lightShaftVolumeSoFar + lightLeg));

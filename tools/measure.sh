@@ -19,6 +19,10 @@
 #                                      # error (docs/medium-field.md; about 2 min)
 #   tools/measure.sh translucent       # translucent casters' cost per layer
 #                                      # (docs/translucent-cost.md; about 3 min)
+#   tools/measure.sh camera-leg        # translucent props in view per layer, and a volume
+#                                      # (docs/translucent-cost.md; about 5 min)
+#   tools/measure.sh volume-figures    # the camera leg's and volumes' figures against the
+#                                      # reference (docs/translucent-and-volumes.md; 1 min)
 #   tools/measure.sh worst-corners     # the slider corners (docs/robustness.md)
 #   tools/measure.sh random-scenes     # 50 random scenes: presets, methods, targets, the
 #                                      # fitted ladder (TargetError's cost against the oracle)
@@ -63,6 +67,8 @@ case "$what" in
   medium-field) run tests/benchmarks/medium_field_cost.py "$@" ;;
   medium-field-pareto) run tests/benchmarks/medium_field_pareto.py "$@" ;;
   translucent) run tests/benchmarks/translucent_cost.py "$@" ;;
+  camera-leg) run tests/benchmarks/camera_leg_cost.py "$@" ;;
+  volume-figures) run tests/benchmarks/volume_figures.py "$@" ;;
   worst-corners) run tests/benchmarks/worst_corners.py "$@" ;;
   random-scenes)
     run tests/benchmarks/random_scenes.py --validation --seed 0 --scenes 50 --max-height 720 \

@@ -303,3 +303,64 @@ def test_a_volume_as_the_medium_scatters_as_the_reference():
     window.Render()
     assert shafts.GetLastFrame().GetVolume() is None
     assert np.array_equal(image, rh.in_scatter(shafts))
+
+
+def box_outline_masks(renderer, bounds):
+    """Pixels within 1.5 pixels of the outline of the box `bounds` as projected, and pixels
+    inside it at least 3 pixels from it."""
+    corners = []
+    for i in range(8):
+        renderer.SetWorldPoint(bounds[i & 1], bounds[2 + ((i >> 1) & 1)], bounds[4 + (i >> 2)],
+                               1.0)
+        renderer.WorldToDisplay()
+        corners.append(renderer.GetDisplayPoint()[:2])
+    # The outline: the convex hull of the corners (monotone chain).
+    points = sorted(set(corners))
+
+    def half(sequence):
+        hull = []
+        for p in sequence:
+            while len(hull) >= 2 and ((hull[-1][0] - hull[-2][0]) * (p[1] - hull[-2][1]) -
+                                      (hull[-1][1] - hull[-2][1]) * (p[0] - hull[-2][0])) <= 0:
+                hull.pop()
+            hull.append(p)
+        return hull
+    hull = half(points)[:-1] + half(points[::-1])[:-1]
+    y, x = np.mgrid[0:HEIGHT, 0:WIDTH] + 0.5
+    distance = np.full((HEIGHT, WIDTH), np.inf)
+    inside = np.ones((HEIGHT, WIDTH), dtype=bool)
+    for (ax, ay), (bx, by) in zip(hull, hull[1:] + hull[:1]):
+        ex, ey = bx - ax, by - ay
+        t = np.clip(((x - ax) * ex + (y - ay) * ey) / (ex * ex + ey * ey), 0.0, 1.0)
+        distance = np.minimum(distance, np.hypot(x - ax - t * ex, y - ay - t * ey))
+        inside &= (ex * (y - ay) - ey * (x - ax)) >= 0.0  # (counter-clockwise hull)
+    return distance <= 1.5, inside & (distance >= 3.0)
+
+
+def test_the_wavelets_box_faces_show_no_edge():
+    """What the wavelet does to the in-scatter (its ratio to the scene's without it, where the
+    beam's own edges cancel) changes no faster across its box's faces as projected than inside
+    the box (its opacity is 0 on the faces)."""
+    volumes = []
+
+    def build(renderer):
+        volumes.append(wavelet(renderer, [(160.0, 0.0), (277.0, 0.9)]))
+
+    renderer, _, shafts = render("spot", build)
+    image = rh.in_scatter(shafts).sum(axis=-1)
+    edge, inside = box_outline_masks(renderer, volumes[0].GetBounds())
+    _, _, shafts = render("spot")
+    clear = rh.in_scatter(shafts).sum(axis=-1)
+    lit = clear > 0.05 * clear.max()
+    ratio = image / np.maximum(clear, 1e-30)
+    gradient = np.zeros_like(ratio)
+    gradient[1:-1, 1:-1] = np.hypot(ratio[1:-1, 2:] - ratio[1:-1, :-2],
+                                    ratio[2:, 1:-1] - ratio[:-2, 1:-1])
+    # (Both neighbours lit: the beam's edge itself is left out.)
+    both = lit.copy()
+    both[1:-1, 1:-1] &= lit[1:-1, 2:] & lit[1:-1, :-2] & lit[2:, 1:-1] & lit[:-2, 1:-1]
+    assert (edge & both).sum() > 50 and (inside & both).sum() > 200
+    assert ratio[inside & both].min() < 0.9  # (the volume dims the shafts inside its box)
+    across = gradient[edge & both].max()
+    within = gradient[inside & both].max()
+    assert across <= within, (across, within)
