@@ -11,7 +11,8 @@ beam (its opacity 0 up to 160, rising to 0.9 at 277):
   3. MediumFromVolume on: the volume is the medium (a field, no volume filter); off again: the
      first picture back, exactly;
   4. no scattering: the picture is the view's with its light shafts off (a render view's),
-     with FXAA off.
+     with FXAA off;
+  5. examples/paraview/volume_in_beam.py runs silently, with and without --as-medium.
 Any VTK error or warning fails the test (ctest's FAIL_REGULAR_EXPRESSION).
 """
 
@@ -83,6 +84,20 @@ def main():
     print(f"max |no scattering - shafts off| {difference:.0f} (8-bit levels)")
     if difference > 1.0:
         failures.append("with no scattering the picture is not the plain view's")
+
+    # The example runs as a user runs it, silently, both ways, and draws its scene.
+    import shutil
+    import subprocess
+    example = os.path.join(scene.ROOT, "examples", "paraview", "volume_in_beam.py")
+    for extra in ([], ["--as-medium"]):
+        picture = os.path.join(out, f"example{''.join(extra)}.png")
+        run = subprocess.run([shutil.which("pvbatch"), example, "-o", picture, *extra],
+                             capture_output=True, text=True, timeout=300)
+        if run.returncode != 0 or "ERR|" in run.stderr or "Warning" in run.stderr:
+            failures.append(f"examples/paraview/volume_in_beam.py {extra}: {run.returncode} "
+                            f"{run.stderr}")
+        elif scene.read_png(picture).mean() < 5.0:
+            failures.append(f"examples/paraview/volume_in_beam.py {extra} drew a black picture")
     return scene.report(failures)
 
 
