@@ -189,6 +189,44 @@ std::shared_ptr<const vtkLightShaftDensityField> VolumeExtinction(vtkRenderer* r
   return nullptr;
 }
 
+// The light's share over [t0, t1] of the ray, in pieces between the camera leg's crossings
+// (fractions of tSurface, in order, with what each keeps), each dimmed by those in front of it.
+Result IntegrateBehindCrossings(const Model& model,
+  const Vec& origin,
+  const Vec& dir,
+  double t0,
+  double t1,
+  const std::vector<std::pair<double, double>>& crossings,
+  double tSurface,
+  const vtkLightShaftRayIntegrator::Transmittance& transmittance,
+  int samples,
+  double tolerance,
+  bool closedForms)
+{
+  Result sum;
+  double kept = 1.0;
+  double ta = t0;
+  for (size_t k = 0; k <= crossings.size() && ta < t1 && kept > 0.0; ++k)
+  {
+    const double tk = k < crossings.size() ? crossings[k].first * tSurface : t1;
+    const double tb = std::min(tk, t1);
+    if (tb > ta)
+    {
+      const Result piece =
+        IntegrateRay(model, origin, dir, ta, tb, transmittance, samples, tolerance, closedForms);
+      sum.ClosedForm = sum.ClosedForm || piece.ClosedForm;
+      for (int c = 0; c < 3; ++c)
+      {
+        sum.Radiance[c] += kept * piece.Radiance[c];
+        sum.Error[c] += kept * piece.Error[c];
+      }
+      ta = tb;
+    }
+    kept *= k < crossings.size() ? crossings[k].second : 1.0;
+  }
+  return sum;
+}
+
 struct CameraRays
 {
   Vec Eye{};
@@ -412,26 +450,22 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
             continue;
           }
           auto transmittance = [&](const Vec& x) { return tracer->Transmittance(x, model); };
-          // The lit part in pieces between the crossings, each dimmed by those in front of it.
-          double kept = 1.0;
-          double ta = t0;
-          for (size_t k = 0; k <= crossings.size() && ta < t1 && kept > 0.0; ++k)
+          const Result result = IntegrateBehindCrossings(model,
+            origin,
+            dir,
+            t0,
+            t1,
+            crossings,
+            tSurface,
+            transmittance,
+            samples,
+            tolerance,
+            closedForms[l] != 0);
+          closed = closed || result.ClosedForm;
+          for (int c = 0; c < 3; ++c)
           {
-            const double tk = k < crossings.size() ? crossings[k].first * tSurface : t1;
-            const double tb = std::min(tk, t1);
-            if (tb > ta)
-            {
-              const Result result = IntegrateRay(
-                model, origin, dir, ta, tb, transmittance, samples, tolerance, closedForms[l] != 0);
-              closed = closed || result.ClosedForm;
-              for (int c = 0; c < 3; ++c)
-              {
-                radianceOut[3 * pixel + c] += kept * result.Radiance[c];
-                errorOut[3 * pixel + c] += kept * result.Error[c];
-              }
-              ta = tb;
-            }
-            kept *= k < crossings.size() ? crossings[k].second : 1.0;
+            radianceOut[3 * pixel + c] += result.Radiance[c];
+            errorOut[3 * pixel + c] += result.Error[c];
           }
         }
         closedHere += closed ? 1 : 0;
