@@ -14,8 +14,10 @@ light or a directional light (a sun) from straight above. Checks:
   4. examples/paraview/sun_through_window.py runs and draws the sun's shafts and the window's
      pattern on the floor (a lit pane and the dark cross between panes, by projection);
   5. a translucent representation (a red plane at opacity 0.5 between the spot and the medium
-     point): with TranslucentShadows (the default) the in-scatter beyond it keeps its red and
-     loses half its green and blue; off, it is the in-scatter without the plane.
+     point, and between the camera and it): with TranslucentShadows (the default) the
+     in-scatter beyond it keeps its red and loses half its green and blue; off, it is the
+     in-scatter without the plane, dimmed by half as the camera sees it through the plane (the
+     camera leg: what lies behind a surface of opacity a keeps 1 - a, as VTK blends it).
 Usage: pvbatch test_light_kinds.py OUTPUT_DIR
 """
 
@@ -233,11 +235,12 @@ def check_translucent(out, failures):
     print(f"translucent plane: in-scatter at the medium point {tinted.round(1)} levels, "
           f"{through.round(1)} with TranslucentShadows off, {clear.round(1)} without it: "
           f"ratio {ratio.round(3)}")
-    if not (through.min() > 20.0 and abs(ratio[0] - 1.0) < 0.1 and
+    if not (through.min() > 10.0 and abs(ratio[0] - 1.0) < 0.1 and
             np.all(np.abs(ratio[1:] - 0.5) < 0.1)):
         failures.append("a red plane at opacity 0.5 does not halve the green and blue beyond it")
-    if float(np.abs(through - clear).max()) > 1.5:
-        failures.append("with TranslucentShadows off a translucent plane still casts")
+    if float(np.abs(through - 0.5 * clear).max()) > 1.5:
+        failures.append("with TranslucentShadows off a translucent plane still casts (or the "
+                        "camera's view through it is not dimmed by half)")
     simple.Delete(view)
 
 
