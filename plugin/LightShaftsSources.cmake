@@ -21,7 +21,10 @@ set(lightshafts_private_classes
   vtkLightShaftNoise
   vtkLightShaftPostProcess
   vtkLightShaftRadialBlurMethod
+  vtkLightShaftRayIntegrator
   vtkLightShaftRayMarchMethod
+  vtkLightShaftReferenceJob
+  vtkLightShaftReferenceScene
   vtkLightShaftRefinement
   vtkLightShaftResources
   vtkLightShaftSceneCheck

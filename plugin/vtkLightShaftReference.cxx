@@ -1,6 +1,5 @@
 #include "vtkLightShaftReference.h"
 
-#include "vtkAbstractVolumeMapper.h"
 #include "vtkCamera.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
@@ -8,15 +7,10 @@
 #include "vtkInformationVector.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
-#include "vtkLightShaftDensityField.h"
-#include "vtkLightShaftFrameReport.h"
 #include "vtkLightShaftMedium.h"
 #include "vtkLightShaftModel.h"
 #include "vtkLightShaftPass.h"
-#include "vtkLightShaftRayIntegrator.h"
-#include "vtkLightShaftReferenceScene.h"
-#include "vtkLightShaftVolumeField.h"
-#include "vtkMath.h"
+#include "vtkLightShaftReferenceJob.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -24,19 +18,13 @@
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkVolume.h"
 
 #include <algorithm>
 #include <atomic>
-#include <cmath>
-#include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkLightShaftReference);
-
-using namespace vtkLightShaftRayIntegrator;
 
 //------------------------------------------------------------------------------
 vtkLightShaftReference::vtkLightShaftReference()
@@ -152,176 +140,6 @@ int vtkLightShaftReference::RequestInformation(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
-namespace
-{
-/**
- * The camera's pixel-centre rays, from VTK's camera parameters (independent of its matrices).
- */
-// The extinction of the renderer's first visible vtkVolume but the medium's
-// (vtkLightShaftVolumeField's rule; nullptr: none, or one that gives no field).
-std::shared_ptr<const vtkLightShaftDensityField> VolumeExtinction(vtkRenderer* renderer,
-  vtkVolume* medium)
-{
-  vtkCollectionSimpleIterator it;
-  renderer->GetViewProps()->InitTraversal(it);
-  while (vtkProp* prop = renderer->GetViewProps()->GetNextProp(it))
-  {
-    auto* volume = vtkVolume::SafeDownCast(prop);
-    if (!volume || volume == medium || !volume->GetVisibility())
-    {
-      continue;
-    }
-    if (vtkAbstractMapper* mapper = volume->GetMapper())
-    {
-      mapper->Update();
-    }
-    vtkNew<vtkImageData> image;
-    auto field = std::make_shared<vtkLightShaftDensityField>();
-    if (!vtkLightShaftVolumeField::Build(
-          volume, vtkLightShaftVolumeField::Quantity::Extinction, image)
-           .empty() ||
-        !field->Read(image, nullptr).empty())
-    {
-      return nullptr;
-    }
-    return field;
-  }
-  return nullptr;
-}
-
-// The light's share over [t0, t1] of the ray, in pieces between the camera leg's crossings
-// (fractions of tSurface, in order, with what each keeps), each dimmed by those in front of it.
-Result IntegrateBehindCrossings(const Model& model,
-  const Vec& origin,
-  const Vec& dir,
-  double t0,
-  double t1,
-  const std::vector<std::pair<double, double>>& crossings,
-  double tSurface,
-  const vtkLightShaftRayIntegrator::Transmittance& transmittance,
-  int samples,
-  double tolerance,
-  bool closedForms)
-{
-  Result sum;
-  double kept = 1.0;
-  double ta = t0;
-  for (size_t k = 0; k <= crossings.size() && ta < t1 && kept > 0.0; ++k)
-  {
-    const double tk = k < crossings.size() ? crossings[k].first * tSurface : t1;
-    const double tb = std::min(tk, t1);
-    if (tb > ta)
-    {
-      const Result piece =
-        IntegrateRay(model, origin, dir, ta, tb, transmittance, samples, tolerance, closedForms);
-      sum.ClosedForm = sum.ClosedForm || piece.ClosedForm;
-      for (int c = 0; c < 3; ++c)
-      {
-        sum.Radiance[c] += kept * piece.Radiance[c];
-        sum.Error[c] += kept * piece.Error[c];
-      }
-      ta = tb;
-    }
-    kept *= k < crossings.size() ? crossings[k].second : 1.0;
-  }
-  return sum;
-}
-
-struct CameraRays
-{
-  Vec Eye{};
-  Vec Forward{};
-  Vec Right{};
-  Vec Up{};
-  double FarDistance = 1.0;
-  bool Parallel = false;
-  double HalfHeight = 1.0;
-  double Aspect = 1.0;
-  int Width = 1;
-  int Height = 1;
-
-  CameraRays(vtkCamera* camera, int width, int height)
-    : Width(width)
-    , Height(height)
-  {
-    const double* eye = camera->GetPosition();
-    const double* focal = camera->GetFocalPoint();
-    const double* viewUp = camera->GetViewUp();
-    this->Eye = { eye[0], eye[1], eye[2] };
-    this->Forward = Normalized(Vec{ focal[0], focal[1], focal[2] } - this->Eye);
-    this->Right = Normalized(Cross(this->Forward, Vec{ viewUp[0], viewUp[1], viewUp[2] }));
-    this->Up = Cross(this->Right, this->Forward);
-    this->FarDistance = camera->GetClippingRange()[1];
-    this->Parallel = camera->GetParallelProjection() != 0;
-    this->HalfHeight = this->Parallel
-                         ? camera->GetParallelScale()
-                         : std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0);
-    this->Aspect = static_cast<double>(width) / height;
-  }
-
-  /// The ray of pixel (i, j): origin, unit direction, and the far plane's parameter.
-  void Ray(int i, int j, Vec& origin, Vec& dir, double& tFar) const
-  {
-    const double sx = (2.0 * (i + 0.5) / this->Width - 1.0) * this->HalfHeight * this->Aspect;
-    const double sy = (2.0 * (j + 0.5) / this->Height - 1.0) * this->HalfHeight;
-    origin = this->Eye;
-    dir = this->Forward;
-    tFar = this->FarDistance;
-    if (this->Parallel)
-    {
-      origin = this->Eye + sx * this->Right + sy * this->Up;
-    }
-    else
-    {
-      dir = Normalized(this->Forward + sx * this->Right + sy * this->Up);
-      tFar = this->FarDistance / Dot(dir, this->Forward);
-    }
-  }
-};
-
-/**
- * Set `scene` to decide visibility with the pass's shadow map of the one light used; what is
- * wrong otherwise (empty: nothing). One light only: the pass publishes the depth range and
- * bias of its first mapped light; a point light's cube map is not read back.
- */
-std::string UseShadowMap(vtkLightShaftPass* pass,
-  vtkLightShaftReferenceScene& scene,
-  const std::vector<vtkLight*>& lights,
-  const std::vector<Model>& models)
-{
-  std::ostringstream problem;
-  if (lights.size() != 1)
-  {
-    problem << "SHADOW_MAP visibility supports exactly one light; " << lights.size()
-            << " lights are used (use EXACT visibility).";
-    return problem.str();
-  }
-  if (models[0].Kind == vtkLightShaftModel::LightKind::Point)
-  {
-    problem << "SHADOW_MAP visibility: point light " << lights[0]
-            << " has a cube shadow map, which the pass does not read back (use EXACT"
-               " visibility).";
-    return problem.str();
-  }
-  int index = -1;
-  vtkLightShaftFrameReport* last = pass->GetLastFrame();
-  for (int i = 0; i < last->GetNumberOfUsedLights(); ++i)
-  {
-    if (last->GetUsedLight(i) == lights[0])
-    {
-      index = i;
-    }
-  }
-  if (index < 0 || !scene.UseShadowMap(pass, index, models[0]))
-  {
-    problem << "SHADOW_MAP visibility: the pass rendered no shadow map for light " << lights[0]
-            << " in its last frame.";
-  }
-  return problem.str();
-}
-}
-
-//------------------------------------------------------------------------------
 int vtkLightShaftReference::RequestData(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputVector)
@@ -352,126 +170,26 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
   output->GetPointData()->SetScalars(radiance);
   output->GetPointData()->AddArray(errors);
 
-  // The lights, chosen as the pass chooses them, and the model of each with the medium.
-  std::vector<vtkLight*> given;
-  for (int i = 0; i < pass->GetNumberOfLights(); ++i)
+  vtkLightShaftReferenceJob::Options options;
+  options.ShadowMapVisibility = this->VisibilityMode == SHADOW_MAP;
+  options.RelativeTolerance = this->RelativeTolerance;
+  options.VisibilitySamples = this->VisibilitySamples;
+  options.UseClosedForms = this->UseClosedForms;
+  vtkLightShaftReferenceJob job;
+  const std::string problem = job.Prepare(ren, pass, this, width, height, options);
+  this->LastNumberOfLights = job.GetNumberOfLights();
+  if (!problem.empty())
   {
-    given.push_back(pass->GetLight(i));
-  }
-  std::shared_ptr<vtkLightShaftDensityField> field;
-  if (vtkImageData* density = pass->GetMedium()->UpdateDensityField(this))
-  {
-    field = std::make_shared<vtkLightShaftDensityField>();
-    const std::string why = field->Read(density, pass->GetMedium()->GetDensityArrayName());
-    if (!why.empty())
-    {
-      vtkErrorMacro("DensityField: the image " << why << ".");
-      return 0;
-    }
-  }
-  // The scene's volume (the first visible vtkVolume, as the pass takes it): its extinction
-  // dims both legs.
-  std::shared_ptr<const vtkLightShaftDensityField> extinction =
-    VolumeExtinction(ren, pass->GetMedium()->GetDensityVolume());
-  std::vector<Model> models;
-  std::vector<vtkLight*> used;
-  for (vtkLight* light : vtkLightShaftModel::FindLights(given, ren))
-  {
-    models.push_back(MakeModel(light, pass, field));
-    models.back().Extinction = extinction;
-    used.push_back(light);
-  }
-  this->LastNumberOfLights = static_cast<int>(models.size());
-  if (models.empty())
-  {
-    return 1; // no usable light: no in-scatter
-  }
-
-  // The opaque polygonal props for surfaces and exact shadows; or the pass's shadow map.
-  vtkLightShaftReferenceScene scene;
-  scene.Capture(ren);
-  if (this->VisibilityMode == SHADOW_MAP)
-  {
-    const std::string problem = UseShadowMap(pass, scene, used, models);
-    if (!problem.empty())
-    {
-      vtkErrorMacro(<< problem);
-      return 0;
-    }
-  }
-
-  const CameraRays rays(ren->GetActiveCamera(), width, height);
-  const double tolerance = this->RelativeTolerance;
-  const int samples = this->VisibilitySamples;
-  std::vector<char> closedForms;
-  for (const Model& model : models)
-  {
-    closedForms.push_back(this->UseClosedForms && model.ClosedFormsHold());
+    vtkErrorMacro(<< problem);
+    return 0;
   }
   std::atomic<vtkIdType> closedFormPixels(0);
-  vtkLightShaftReferenceScene::TracerPool tracers(scene);
   double* radianceOut = radiance->GetPointer(0);
   double* errorOut = errors->GetPointer(0);
   vtkSMPTools::For(0,
     vtkIdType(width) * height,
-    [&](vtkIdType first, vtkIdType last)
-    {
-      std::unique_ptr<vtkLightShaftReferenceScene::Tracer> tracer = tracers.Take();
-      vtkIdType closedHere = 0;
-      for (vtkIdType pixel = first; pixel < last; ++pixel)
-      {
-        Vec origin;
-        Vec dir;
-        double tFar;
-        rays.Ray(
-          static_cast<int>(pixel % width), static_cast<int>(pixel / width), origin, dir, tFar);
-        // The first surface along the ray, else the far plane.
-        double tSurface = tFar;
-        double hit;
-        if (tracer->FirstHit(origin, origin + tFar * dir, hit))
-        {
-          tSurface = hit * tFar;
-        }
-        // The camera leg: what lies behind each translucent surface in front of the opaque one
-        // reaches the camera dimmed as VTK blends it.
-        const auto crossings = tracer->CameraCrossings(origin, origin + tSurface * dir);
-        // Each light's share over the part of the ray it lights.
-        bool closed = false;
-        for (size_t l = 0; l < models.size(); ++l)
-        {
-          const Model& model = models[l];
-          double t0;
-          double t1;
-          LitInterval(model, origin, dir, t0, t1);
-          t0 = std::max(t0, 0.0);
-          t1 = std::min(t1, tSurface);
-          if (!(t1 > t0))
-          {
-            continue;
-          }
-          auto transmittance = [&](const Vec& x) { return tracer->Transmittance(x, model); };
-          const Result result = IntegrateBehindCrossings(model,
-            origin,
-            dir,
-            t0,
-            t1,
-            crossings,
-            tSurface,
-            transmittance,
-            samples,
-            tolerance,
-            closedForms[l] != 0);
-          closed = closed || result.ClosedForm;
-          for (int c = 0; c < 3; ++c)
-          {
-            radianceOut[3 * pixel + c] += result.Radiance[c];
-            errorOut[3 * pixel + c] += result.Error[c];
-          }
-        }
-        closedHere += closed ? 1 : 0;
-      }
-      closedFormPixels += closedHere;
-      tracers.Give(std::move(tracer));
+    [&](vtkIdType first, vtkIdType last) {
+      closedFormPixels += job.Integrate(first, last, radianceOut + 3 * first, errorOut + 3 * first);
     });
   this->LastClosedFormPixels = closedFormPixels;
   return 1;

@@ -1,0 +1,359 @@
+#include "vtkLightShaftReferenceJob.h"
+
+#include "vtkAbstractVolumeMapper.h"
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkLightShaftDensityField.h"
+#include "vtkLightShaftFrameReport.h"
+#include "vtkLightShaftMedium.h"
+#include "vtkLightShaftModel.h"
+#include "vtkLightShaftPass.h"
+#include "vtkLightShaftVolumeField.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace vtkLightShaftRayIntegrator;
+
+//------------------------------------------------------------------------------
+namespace
+{
+// The extinction of the renderer's first visible vtkVolume but the medium's
+// (vtkLightShaftVolumeField's rule; nullptr: none, or one that gives no field).
+std::shared_ptr<const vtkLightShaftDensityField> VolumeExtinction(vtkRenderer* renderer,
+  vtkVolume* medium)
+{
+  vtkCollectionSimpleIterator it;
+  renderer->GetViewProps()->InitTraversal(it);
+  while (vtkProp* prop = renderer->GetViewProps()->GetNextProp(it))
+  {
+    auto* volume = vtkVolume::SafeDownCast(prop);
+    if (!volume || volume == medium || !volume->GetVisibility())
+    {
+      continue;
+    }
+    if (vtkAbstractMapper* mapper = volume->GetMapper())
+    {
+      mapper->Update();
+    }
+    vtkNew<vtkImageData> image;
+    auto field = std::make_shared<vtkLightShaftDensityField>();
+    if (!vtkLightShaftVolumeField::Build(
+          volume, vtkLightShaftVolumeField::Quantity::Extinction, image)
+           .empty() ||
+        !field->Read(image, nullptr).empty())
+    {
+      return nullptr;
+    }
+    return field;
+  }
+  return nullptr;
+}
+
+// The light's share over [t0, t1] of the ray, in pieces between the camera leg's crossings
+// (fractions of tSurface, in order, with what each keeps), each dimmed by those in front of it.
+Result IntegrateBehindCrossings(const Model& model,
+  const Vec& origin,
+  const Vec& dir,
+  double t0,
+  double t1,
+  const std::vector<std::pair<double, double>>& crossings,
+  double tSurface,
+  const vtkLightShaftRayIntegrator::Transmittance& transmittance,
+  int samples,
+  double tolerance,
+  bool closedForms)
+{
+  Result sum;
+  double kept = 1.0;
+  double ta = t0;
+  for (size_t k = 0; k <= crossings.size() && ta < t1 && kept > 0.0; ++k)
+  {
+    const double tk = k < crossings.size() ? crossings[k].first * tSurface : t1;
+    const double tb = std::min(tk, t1);
+    if (tb > ta)
+    {
+      const Result piece =
+        IntegrateRay(model, origin, dir, ta, tb, transmittance, samples, tolerance, closedForms);
+      sum.ClosedForm = sum.ClosedForm || piece.ClosedForm;
+      for (int c = 0; c < 3; ++c)
+      {
+        sum.Radiance[c] += kept * piece.Radiance[c];
+        sum.Error[c] += kept * piece.Error[c];
+      }
+      ta = tb;
+    }
+    kept *= k < crossings.size() ? crossings[k].second : 1.0;
+  }
+  return sum;
+}
+
+/// The camera's pixel-centre rays, from VTK's camera parameters (independent of its matrices).
+struct CameraRays
+{
+  Vec Eye{};
+  Vec Forward{};
+  Vec Right{};
+  Vec Up{};
+  double FarDistance = 1.0;
+  bool Parallel = false;
+  double HalfHeight = 1.0;
+  double Aspect = 1.0;
+  int Width = 1;
+  int Height = 1;
+
+  CameraRays(vtkCamera* camera, int width, int height)
+    : Width(width)
+    , Height(height)
+  {
+    const double* eye = camera->GetPosition();
+    const double* focal = camera->GetFocalPoint();
+    const double* viewUp = camera->GetViewUp();
+    this->Eye = { eye[0], eye[1], eye[2] };
+    this->Forward = Normalized(Vec{ focal[0], focal[1], focal[2] } - this->Eye);
+    this->Right = Normalized(Cross(this->Forward, Vec{ viewUp[0], viewUp[1], viewUp[2] }));
+    this->Up = Cross(this->Right, this->Forward);
+    this->FarDistance = camera->GetClippingRange()[1];
+    this->Parallel = camera->GetParallelProjection() != 0;
+    this->HalfHeight = this->Parallel
+                         ? camera->GetParallelScale()
+                         : std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0);
+    this->Aspect = static_cast<double>(width) / height;
+  }
+
+  /// The ray of pixel (i, j): origin, unit direction, and the far plane's parameter.
+  void Ray(int i, int j, Vec& origin, Vec& dir, double& tFar) const
+  {
+    const double sx = (2.0 * (i + 0.5) / this->Width - 1.0) * this->HalfHeight * this->Aspect;
+    const double sy = (2.0 * (j + 0.5) / this->Height - 1.0) * this->HalfHeight;
+    origin = this->Eye;
+    dir = this->Forward;
+    tFar = this->FarDistance;
+    if (this->Parallel)
+    {
+      origin = this->Eye + sx * this->Right + sy * this->Up;
+    }
+    else
+    {
+      dir = Normalized(this->Forward + sx * this->Right + sy * this->Up);
+      tFar = this->FarDistance / Dot(dir, this->Forward);
+    }
+  }
+};
+
+/**
+ * Set `scene` to decide visibility with the pass's shadow map of the one light used; what is
+ * wrong otherwise (empty: nothing). One light only: the pass publishes the depth range and
+ * bias of its first mapped light; a point light's cube map is not read back.
+ */
+std::string UseShadowMap(vtkLightShaftPass* pass,
+  vtkLightShaftReferenceScene& scene,
+  const std::vector<vtkLight*>& lights,
+  const std::vector<Model>& models)
+{
+  std::ostringstream problem;
+  if (lights.size() != 1)
+  {
+    problem << "SHADOW_MAP visibility supports exactly one light; " << lights.size()
+            << " lights are used (use EXACT visibility).";
+    return problem.str();
+  }
+  if (models[0].Kind == vtkLightShaftModel::LightKind::Point)
+  {
+    problem << "SHADOW_MAP visibility: point light " << lights[0]
+            << " has a cube shadow map, which the pass does not read back (use EXACT"
+               " visibility).";
+    return problem.str();
+  }
+  int index = -1;
+  vtkLightShaftFrameReport* last = pass->GetLastFrame();
+  for (int i = 0; i < last->GetNumberOfUsedLights(); ++i)
+  {
+    if (last->GetUsedLight(i) == lights[0])
+    {
+      index = i;
+    }
+  }
+  if (index < 0 || !scene.UseShadowMap(pass, index, models[0]))
+  {
+    problem << "SHADOW_MAP visibility: the pass rendered no shadow map for light " << lights[0]
+            << " in its last frame.";
+  }
+  return problem.str();
+}
+}
+
+struct vtkLightShaftReferenceJob::Rays : CameraRays
+{
+  using CameraRays::CameraRays;
+};
+
+vtkLightShaftReferenceJob::vtkLightShaftReferenceJob() = default;
+vtkLightShaftReferenceJob::~vtkLightShaftReferenceJob() = default;
+
+//------------------------------------------------------------------------------
+std::string vtkLightShaftReferenceJob::Prepare(vtkRenderer* renderer,
+  vtkLightShaftPass* pass,
+  vtkObject* caller,
+  int width,
+  int height,
+  const Options& options)
+{
+  this->Settings = options;
+  this->Width = std::max(width, 1);
+  this->Height = std::max(height, 1);
+  this->Models.clear();
+  this->ClosedForms.clear();
+  this->Tracers.reset();
+  this->Camera.reset(new Rays(renderer->GetActiveCamera(), this->Width, this->Height));
+
+  // The lights, chosen as the pass chooses them, and the model of each with the medium.
+  std::vector<vtkLight*> given;
+  for (int i = 0; i < pass->GetNumberOfLights(); ++i)
+  {
+    given.push_back(pass->GetLight(i));
+  }
+  std::shared_ptr<vtkLightShaftDensityField> field;
+  if (vtkImageData* density = pass->GetMedium()->UpdateDensityField(caller))
+  {
+    field = std::make_shared<vtkLightShaftDensityField>();
+    const std::string why = field->Read(density, pass->GetMedium()->GetDensityArrayName());
+    if (!why.empty())
+    {
+      return "DensityField: the image " + why + ".";
+    }
+  }
+  // The scene's volume (the first visible vtkVolume, as the pass takes it): its extinction
+  // dims both legs.
+  std::shared_ptr<const vtkLightShaftDensityField> extinction =
+    VolumeExtinction(renderer, pass->GetMedium()->GetDensityVolume());
+  std::vector<vtkLight*> used;
+  for (vtkLight* light : vtkLightShaftModel::FindLights(given, renderer))
+  {
+    this->Models.push_back(MakeModel(light, pass, field));
+    this->Models.back().Extinction = extinction;
+    used.push_back(light);
+  }
+  for (const Model& model : this->Models)
+  {
+    this->ClosedForms.push_back(options.UseClosedForms && model.ClosedFormsHold());
+  }
+  if (this->Models.empty())
+  {
+    return std::string(); // no usable light: no in-scatter
+  }
+
+  // The opaque polygonal props for surfaces and exact shadows; or the pass's shadow map.
+  this->Scene.Capture(renderer);
+  if (options.ShadowMapVisibility)
+  {
+    const std::string problem = UseShadowMap(pass, this->Scene, used, this->Models);
+    if (!problem.empty())
+    {
+      this->Models.clear();
+      return problem;
+    }
+  }
+  this->Tracers.reset(new vtkLightShaftReferenceScene::TracerPool(this->Scene));
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkLightShaftReferenceJob::Integrate(vtkIdType first,
+  vtkIdType last,
+  double* radiance,
+  double* error) const
+{
+  if (this->Models.empty() || !this->Tracers)
+  {
+    return 0;
+  }
+  std::unique_ptr<vtkLightShaftReferenceScene::Tracer> tracer = this->Tracers->Take();
+  vtkIdType closedPixels = 0;
+  for (vtkIdType pixel = first; pixel < last; ++pixel)
+  {
+    Vec origin;
+    Vec dir;
+    double tFar;
+    this->Camera->Ray(static_cast<int>(pixel % this->Width),
+      static_cast<int>(pixel / this->Width),
+      origin,
+      dir,
+      tFar);
+    // The first surface along the ray, else the far plane.
+    double tSurface = tFar;
+    double hit;
+    if (tracer->FirstHit(origin, origin + tFar * dir, hit))
+    {
+      tSurface = hit * tFar;
+    }
+    // The camera leg: what lies behind each translucent surface in front of the opaque one
+    // reaches the camera dimmed as VTK blends it.
+    const auto crossings = tracer->CameraCrossings(origin, origin + tSurface * dir);
+    // Each light's share over the part of the ray it lights.
+    bool closed = false;
+    double* out = radiance + 3 * (pixel - first);
+    double* outError = error ? error + 3 * (pixel - first) : nullptr;
+    for (size_t l = 0; l < this->Models.size(); ++l)
+    {
+      const Model& model = this->Models[l];
+      double t0;
+      double t1;
+      LitInterval(model, origin, dir, t0, t1);
+      t0 = std::max(t0, 0.0);
+      t1 = std::min(t1, tSurface);
+      if (!(t1 > t0))
+      {
+        continue;
+      }
+      auto transmittance = [&](const Vec& x) { return tracer->Transmittance(x, model); };
+      const Result result = IntegrateBehindCrossings(model,
+        origin,
+        dir,
+        t0,
+        t1,
+        crossings,
+        tSurface,
+        transmittance,
+        this->Settings.VisibilitySamples,
+        this->Settings.RelativeTolerance,
+        this->ClosedForms[l] != 0);
+      closed = closed || result.ClosedForm;
+      for (int c = 0; c < 3; ++c)
+      {
+        out[c] += result.Radiance[c];
+        if (outError)
+        {
+          outError[c] += result.Error[c];
+        }
+      }
+    }
+    closedPixels += closed ? 1 : 0;
+  }
+  this->Tracers->Give(std::move(tracer));
+  return closedPixels;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftReferenceJob::IntegrateRectangle(int x,
+  int y,
+  int w,
+  int h,
+  double* radiance) const
+{
+  for (int row = 0; row < h; ++row)
+  {
+    const vtkIdType first = vtkIdType(y + row) * this->Width + x;
+    this->Integrate(first, first + w, radiance + 3 * vtkIdType(row) * w, nullptr);
+  }
+}

@@ -1,0 +1,92 @@
+/**
+ * @file   vtkLightShaftReferenceJob.h
+ * @brief  The float64 reference's work, prepared once and integrated per pixel (private).
+ */
+
+#ifndef vtkLightShaftReferenceJob_h
+#define vtkLightShaftReferenceJob_h
+
+#include "vtkLightShaftRayIntegrator.h"  // For the lights' models
+#include "vtkLightShaftReferenceScene.h" // For the captured surfaces and the tracers
+#include "vtkType.h"                     // For vtkIdType
+
+#include <memory> // For the tracer pool
+#include <string> // For what went wrong
+#include <vector> // For the models
+
+class vtkLight;
+class vtkLightShaftPass;
+class vtkObject;
+class vtkRenderer;
+
+/**
+ * @class   vtkLightShaftReferenceJob
+ * @brief   What vtkLightShaftReference integrates, captured from a renderer and a pass on the
+ *          main thread (Prepare: lights, medium, density field, the scene's volume, the opaque
+ *          and translucent surfaces, the camera's rays), then integrated for any range of
+ *          pixels from any thread (Integrate). The capture holds copies only: the scene may
+ *          change while threads integrate, and they keep integrating what was captured.
+ *
+ * vtkLightShaftReference runs it over the whole image with vtkSMPTools; the pass's exact
+ * finish (vtkLightShaftExactFinish) tile by tile on its worker threads.
+ */
+class vtkLightShaftReferenceJob
+{
+public:
+  vtkLightShaftReferenceJob();
+  ~vtkLightShaftReferenceJob();
+
+  /// How the job integrates (vtkLightShaftReference's parameters).
+  struct Options
+  {
+    bool ShadowMapVisibility = false;
+    double RelativeTolerance = 1e-9;
+    int VisibilitySamples = 32;
+    bool UseClosedForms = true;
+  };
+
+  /**
+   * Capture `renderer`'s scene as `pass` sees it, for a `width` x `height` image of its active
+   * camera. `caller` updates the medium's density pipeline. Returns what is wrong (empty:
+   * ready; a job with no usable light integrates zeros).
+   */
+  std::string Prepare(vtkRenderer* renderer,
+    vtkLightShaftPass* pass,
+    vtkObject* caller,
+    int width,
+    int height,
+    const Options& options);
+
+  /// The lights captured (the pass's choice).
+  int GetNumberOfLights() const { return static_cast<int>(this->Models.size()); }
+  int GetWidth() const { return this->Width; }
+  int GetHeight() const { return this->Height; }
+
+  /**
+   * Add the in-scatter (and the quadrature's error estimate, when `error` is not null) of the
+   * pixels [first, last) (row-major, row 0 at the bottom) into `radiance` and `error`, three
+   * doubles per pixel, the first pixel's at index 0. Thread-safe. Returns how many pixels a
+   * closed form computed.
+   */
+  vtkIdType Integrate(vtkIdType first, vtkIdType last, double* radiance, double* error) const;
+
+  /// Integrate the pixels of the rectangle (x, y, w, h) into `radiance` (w * h * 3, row 0 at
+  /// the bottom). Thread-safe.
+  void IntegrateRectangle(int x, int y, int w, int h, double* radiance) const;
+
+private:
+  vtkLightShaftReferenceJob(const vtkLightShaftReferenceJob&) = delete;
+  void operator=(const vtkLightShaftReferenceJob&) = delete;
+
+  struct Rays;
+  std::unique_ptr<Rays> Camera;
+  std::vector<vtkLightShaftRayIntegrator::Model> Models;
+  std::vector<char> ClosedForms;
+  vtkLightShaftReferenceScene Scene;
+  std::unique_ptr<vtkLightShaftReferenceScene::TracerPool> Tracers;
+  Options Settings;
+  int Width = 1;
+  int Height = 1;
+};
+
+#endif
