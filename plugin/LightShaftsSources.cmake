@@ -8,6 +8,7 @@ set(lightshafts_private_classes
   vtkLightShaftEpipolar
   vtkLightShaftEpipolarMethod
   vtkLightShaftErrorModel
+  vtkLightShaftExactFinish
   vtkLightShaftFieldShadow
   vtkLightShaftGeometry
   vtkLightShaftInScatter

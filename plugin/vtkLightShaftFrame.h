@@ -74,6 +74,7 @@ struct vtkLightShaftParameters
   const double* ShadowCasterBounds = nullptr; ///< set for distributed rendering, else nullptr
   bool ProgressiveRefinement{};
   int RefinementFrames{};
+  bool ExactFinish{};
   double TimeBudget{};
   bool UseAllocatedRenderTime{};
   double TargetError{}; ///< 0: off; else the SLICES parameters above are the ladder's choice
@@ -112,6 +113,12 @@ struct vtkLightShaftStatistics
   int RefinementEstimates = 0;
   bool RefinementConverged = false;
   bool InScatterReused = false;
+  /// The exact finish: its state (vtkLightShaftExactFinish::State as an int: 0 off, 1
+  /// running, 2 complete, 3 unsupported, 4 failed), the share of pixels shown exact, and why
+  /// it does not run (empty: nothing).
+  int ExactFinishState = 0;
+  double ExactFinishFraction = 0.0;
+  std::string ExactFinishProblem;
   /// The frame budget (seconds; 0: none), the frame time the cost model predicted for the
   /// choice (-1: none), the measured time of the shafts' part of the frame (-1: not measured,
   /// measured only under a budget), and the lit lights the budget counted.
@@ -157,6 +164,8 @@ struct vtkLightShaftFrame
   vtkLightShaftModel::Medium Medium;
   vtkLightShaftGeometry::CameraFrame Camera;
   vtkLightShaftSceneImage Scene;
+  /// Whether the frame shows the scene of the last frame, the same way (its sampling aside).
+  bool ViewStill = false;
 
   /// The light being worked on (the components handle one light at a time), its shadow map and
   /// what the frame records of it.

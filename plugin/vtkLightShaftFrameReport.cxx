@@ -18,6 +18,7 @@ public:
   std::vector<vtkLightShaftLightStatistics> Lights;
   std::string Variant;
   std::string Source;
+  std::string ExactFinishProblem;
   vtkWeakPointer<vtkVolume> Volume;
 
   const vtkLightShaftLightStatistics* Light(int index) const
@@ -62,6 +63,9 @@ void vtkLightShaftFrameReport::Publish(const vtkLightShaftFrame& frame,
   this->RefinementEstimates = stats.RefinementEstimates;
   this->RefinementConverged = stats.RefinementConverged;
   this->InScatterReused = stats.InScatterReused;
+  this->ExactFinishState = stats.ExactFinishState;
+  this->ExactFinishFraction = stats.ExactFinishFraction;
+  this->Impl->ExactFinishProblem = stats.ExactFinishProblem;
   this->CameraTranslucentLayers = stats.CameraLayers;
   this->CameraTranslucentBytes = stats.CameraLayerBytes;
   this->Impl->Volume = stats.Volume;
@@ -99,6 +103,11 @@ void vtkLightShaftFrameReport::Publish(const vtkLightShaftFrame& frame,
   this->Impl->Variant = variant ? variant : "";
   this->Impl->Source = source ? source : "";
   this->Modified();
+}
+
+const char* vtkLightShaftFrameReport::GetExactFinishProblem()
+{
+  return this->Impl->ExactFinishProblem.c_str();
 }
 
 const char* vtkLightShaftFrameReport::GetShaderVariant()
@@ -227,6 +236,9 @@ void vtkLightShaftFrameReport::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FrameTime: " << this->FrameTime << "\n";
   os << indent << "RefinementEstimates: " << this->RefinementEstimates << "\n";
   os << indent << "RefinementConverged: " << this->RefinementConverged << "\n";
+  os << indent << "ExactFinishState: " << this->ExactFinishState << "\n";
+  os << indent << "ExactFinishFraction: " << this->ExactFinishFraction << "\n";
+  os << indent << "ExactFinishProblem: " << this->Impl->ExactFinishProblem << "\n";
   os << indent << "UsedLights: " << this->Impl->Lights.size() << "\n";
   os << indent << "ShaderVariant: " << this->Impl->Variant << "\n";
 }

@@ -144,6 +144,27 @@ public:
   vtkGetMacro(InScatterReused, bool);
   ///@}
 
+  /// The exact finish's states (vtkLightShaftPass::SetExactFinish).
+  enum ExactFinishStates
+  {
+    EXACT_FINISH_OFF = 0,         ///< not running: the view moves, or the finish is off
+    EXACT_FINISH_RUNNING = 1,     ///< tiles are being integrated in the background
+    EXACT_FINISH_COMPLETE = 2,    ///< the picture's in-scatter is the reference's
+    EXACT_FINISH_UNSUPPORTED = 3, ///< the scene has what the reference cannot model
+    EXACT_FINISH_FAILED = 4       ///< the reference could not capture the scene
+  };
+  ///@{
+  /**
+   * The exact finish: its state (ExactFinishStates), the share of the picture's pixels whose
+   * in-scatter is the reference's, in [0, 1], and why it does not run (UNSUPPORTED, FAILED;
+   * else empty). The predicted error of a complete picture is 0. Defaults are
+   * EXACT_FINISH_OFF, 0 and empty.
+   */
+  vtkGetMacro(ExactFinishState, int);
+  vtkGetMacro(ExactFinishFraction, double);
+  const char* GetExactFinishProblem();
+  ///@}
+
   ///@{
   /**
    * The camera leg through translucent surfaces: the layers of translucent surfaces in front of
@@ -223,6 +244,8 @@ protected:
   int RefinementEstimates = 0;
   bool RefinementConverged = false;
   bool InScatterReused = false;
+  int ExactFinishState = EXACT_FINISH_OFF;
+  double ExactFinishFraction = 0.0;
   int CameraTranslucentLayers = 0;
   double CameraTranslucentBytes = 0.0;
 

@@ -149,6 +149,7 @@ void vtkLightShaftPass::Internals::ReleaseOwnResources(vtkWindow* w)
   this->SurfaceLight.ReleaseGraphicsResources(w);
   this->Composite.ReleaseGraphicsResources(w);
   this->Refinement.ReleaseGraphicsResources(w);
+  this->Finish.ReleaseGraphicsResources(w);
   vtkLightShaftResources::ReleaseFramebuffer(this->ReadFramebuffer, w);
   this->FinalInScatter = nullptr;
   this->InScatterValid = false;
@@ -583,6 +584,7 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
   p.TargetError = self.TargetError;
   p.ProgressiveRefinement = self.ProgressiveRefinement;
   p.RefinementFrames = self.RefinementFrames;
+  p.ExactFinish = self.ExactFinish;
   p.TimeBudget = self.TimeBudget;
   p.UseAllocatedRenderTime = self.UseAllocatedRenderTime;
   return p;
@@ -643,7 +645,16 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   bool computed = false;
   vtkTextureObject* inScatter = nullptr;
   double shafts = 0.0;
-  if (this->Refinement.IsConverged() && !shadowSurfaces && !cookie)
+  // A still view's exact finish starts from the picture it has; while it runs, no estimate is
+  // computed (it supersedes them).
+  const vtkLightShaftParameters& p = frame.Parameters;
+  if (frame.ViewStill && p.ExactFinish && p.ProgressiveRefinement &&
+      this->Refinement.GetEstimates() > 0)
+  {
+    this->Finish.Start(
+      frame, static_cast<vtkLightShaftPass*>(frame.Owner), this->Refinement.GetHistory());
+  }
+  if ((this->Refinement.IsConverged() || this->Finish.IsActive()) && !shadowSurfaces && !cookie)
   {
     inScatter = this->Refinement.GetHistory();
     computed = true;
@@ -665,8 +676,8 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
     }
     shafts = std::chrono::duration<double>(Clock::now() - shaftsStart).count();
   }
-  frame.Statistics.RefinementEstimates = this->Refinement.GetEstimates();
-  frame.Statistics.RefinementConverged = this->Refinement.IsConverged();
+  inScatter = this->Finish.Apply(frame, inScatter);
+  this->PublishRefinement(frame);
   this->FinalInScatter = inScatter;
   this->InScatterValid = computed;
   frame.Scene.SurfaceCorrection = this->SurfaceLight.GetCorrection();
@@ -682,6 +693,25 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
     glFinish();
     this->ObserveFrameTime(
       frame, shafts, std::chrono::duration<double>(Clock::now() - start).count());
+  }
+}
+
+//------------------------------------------------------------------------------
+// The still view's state: converged once nothing more will change it (the exact finish done,
+// or the estimates done with no finish running).
+void vtkLightShaftPass::Internals::PublishRefinement(vtkLightShaftFrame& frame)
+{
+  using State = vtkLightShaftExactFinish::State;
+  const State finish = this->Finish.GetState();
+  frame.Statistics.RefinementEstimates = this->Refinement.GetEstimates();
+  frame.Statistics.RefinementConverged =
+    finish == State::Complete || (this->Refinement.IsConverged() && finish != State::Running);
+  frame.Statistics.ExactFinishState = static_cast<int>(finish);
+  frame.Statistics.ExactFinishFraction = this->Finish.GetFinishedFraction();
+  frame.Statistics.ExactFinishProblem = this->Finish.GetProblem();
+  if (finish == State::Complete)
+  {
+    frame.Statistics.PredictedError = 0.0; // the reference's, to float rounding
   }
 }
 
@@ -811,6 +841,7 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TargetError: " << this->TargetError << "\n";
   os << indent << "ProgressiveRefinement: " << this->ProgressiveRefinement << "\n";
   os << indent << "RefinementFrames: " << this->RefinementFrames << "\n";
+  os << indent << "ExactFinish: " << this->ExactFinish << "\n";
   os << indent << "TimeBudget: " << this->TimeBudget << "\n";
   os << indent << "UseAllocatedRenderTime: " << this->UseAllocatedRenderTime << "\n";
   os << indent << "BlurRadius: " << this->BlurRadius << "\n";

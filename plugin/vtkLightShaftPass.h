@@ -406,6 +406,24 @@ public:
 
   ///@{
   /**
+   * The exact finish of a still view (with ProgressiveRefinement): from the second frame of
+   * the same view, worker threads at idle priority integrate the float64 reference
+   * (vtkLightShaftReference) tile by tile, brightest first, and each frame shows the tiles
+   * finished so far in place of the estimate; the picture ends at the reference. While it
+   * runs no further estimate is computed (the view keeps its last one, so it is never worse
+   * than the last moving frame, and frames cost only the scene and the composite), and each
+   * frame ends with RefinementNeededEvent; any change stops it and discards what it computed.
+   * A scene the reference cannot model (a visible prop other than a polygonal vtkActor drawn
+   * as a surface or a vtkVolume, or an off-axis camera) is refined as without it; the frame
+   * report says why (GetExactFinishProblem). Default is off.
+   */
+  vtkSetMacro(ExactFinish, bool);
+  vtkGetMacro(ExactFinish, bool);
+  vtkBooleanMacro(ExactFinish, bool);
+  ///@}
+
+  ///@{
+  /**
    * Frame budget in seconds, in [0, 3600] (0: off): each frame renders the most accurate
    * setting of the error model's ladder that a cost model, learnt from the frames rendered
    * under a budget, predicts will fit it (at full resolution if any fits, else half, else
@@ -482,6 +500,7 @@ protected:
   double TargetError = 0.0;
   bool ProgressiveRefinement = false;
   int RefinementFrames = 16;
+  bool ExactFinish = false;
   double TimeBudget = 0.0;
   bool UseAllocatedRenderTime = true;
 

@@ -13,6 +13,7 @@
 #include "vtkLightShaftComposite.h"     // For the composite
 #include "vtkLightShaftCostModel.h"     // For the frame budget's cost model
 #include "vtkLightShaftErrorModel.h"    // For the error model's features
+#include "vtkLightShaftExactFinish.h"   // For the exact finish
 #include "vtkLightShaftFrame.h"         // For the frame
 #include "vtkLightShaftFrameReport.h"   // For the last frame's read-outs
 #include "vtkLightShaftInScatter.h"     // For the in-scatter
@@ -64,6 +65,7 @@ public:
   vtkLightShaftSurfaceLight SurfaceLight;
   vtkLightShaftComposite Composite;
   vtkLightShaftRefinement Refinement;
+  vtkLightShaftExactFinish Finish;
   vtkLightShaftCostModel Costs;
   vtkLightShaftCostModel::Choice BudgetChoice; ///< kept while the view is still
   double BudgetOfChoice = 0.0;                 ///< the budget BudgetChoice was made for
@@ -101,6 +103,8 @@ public:
     const std::vector<vtkLightShaftGeometry::LightFrame>& lights,
     bool noLightVolume,
     bool still);
+  /// The frame's refinement and exact-finish read-outs.
+  void PublishRefinement(vtkLightShaftFrame& frame);
   /// A measured frame: `shafts` seconds of in-scatter of `total` (the cost model learns).
   void ObserveFrameTime(vtkLightShaftFrame& frame, double shafts, double total);
   /// Every light's in-scatter added up, post-processed, refined (each light's surface light

@@ -114,11 +114,27 @@ vtkTextureObject* vtkLightShaftPass::Internals::ChooseSampling(vtkLightShaftFram
               lights,
               std::max(this->Textures.GetImagesTime(), this->DensityTexture.GetUploadTime()))
           : vtkLightShaftRefinement::Signature();
+  frame.ViewStill = signs && this->Refinement.IsStill(signature);
   this->ApplyErrorModel(frame,
     lightFrames,
     cookie != nullptr || frame.Noise != nullptr || frame.Density != nullptr,
-    signs && this->Refinement.IsStill(signature));
+    frame.ViewStill);
   vtkLightShaftRefinement::SetSampling(signature, frame);
+  // The exact finish of a still view: any change stops it. While it can run, the view keeps
+  // the picture it has (the last moving frame's sampling): never worse, and no long frame.
+  const vtkLightShaftParameters& p = frame.Parameters;
+  if (frame.ViewStill && p.ExactFinish && p.ProgressiveRefinement)
+  {
+    this->Finish.Check(frame.Renderer);
+    if (this->Finish.GetState() != vtkLightShaftExactFinish::State::Unsupported)
+    {
+      this->Refinement.KeepSampling(signature);
+    }
+  }
+  else
+  {
+    this->Finish.Stop();
+  }
   this->Refinement.Begin(frame, std::move(signature));
   if (frame.ShadowMapOffset[0] != 0.0 || frame.ShadowMapOffset[1] != 0.0)
   {

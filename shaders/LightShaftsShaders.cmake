@@ -11,6 +11,7 @@ set(lightshafts_pass_shaders
   vtkLightShaftDepthResolveFS
   vtkLightShaftEpipolarFS
   vtkLightShaftEpipolarMarkFS
+  vtkLightShaftExactFinishFS
   vtkLightShaftField
   vtkLightShaftIntegrand
   vtkLightShaftLightKind

@@ -1,0 +1,403 @@
+#include "vtkLightShaftExactFinish.h"
+
+#include "vtkLightShaftFrame.h"
+#include "vtkLightShaftOpenGL.h"
+#include "vtkLightShaftPass.h"
+#include "vtkLightShaftReferenceJob.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkMapper.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkPolyData.h"
+#include "vtkProp3D.h"
+#include "vtkPropCollection.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkVolume.h"
+
+#include "vtkLightShaftExactFinishFS.h"
+
+#include <algorithm>
+#include <atomic>
+#include <mutex>
+#include <numeric>
+#include <utility>
+
+#if defined(__linux__)
+#include <pthread.h>
+#include <sched.h>
+#endif
+
+using vtkLightShaftResources::TextureKind;
+
+namespace
+{
+/// Tiles of this many pixels a side: a few milliseconds of a worker each.
+constexpr int TileSide = 32;
+
+/// The calling thread takes only the processor time others leave (Linux: SCHED_IDLE); where
+/// the system has no such class it keeps its priority.
+void YieldToRendering()
+{
+#if defined(__linux__) && defined(SCHED_IDLE)
+  sched_param parameters{};
+  parameters.sched_priority = 0;
+  pthread_setschedparam(pthread_self(), SCHED_IDLE, &parameters);
+#endif
+}
+}
+
+/// What the workers share with the render thread.
+struct vtkLightShaftExactFinish::Work
+{
+  vtkLightShaftReferenceJob Job;
+  std::vector<Tile> Tiles;
+  std::atomic<int> Next{ 0 };
+  std::atomic<bool> Cancel{ false };
+  std::mutex Mutex;
+  /// Tiles finished and not yet shown: (index, RGB doubles row by row).
+  std::vector<std::pair<int, std::vector<double>>> Done;
+
+  void Run()
+  {
+    YieldToRendering();
+    for (;;)
+    {
+      const int index = this->Next++;
+      if (this->Cancel || index >= static_cast<int>(this->Tiles.size()))
+      {
+        return;
+      }
+      const Tile& tile = this->Tiles[index];
+      std::vector<double> rgb(3 * static_cast<size_t>(tile.W) * tile.H, 0.0);
+      for (int row = 0; row < tile.H; ++row)
+      {
+        if (this->Cancel)
+        {
+          return; // a change of the view: within a row of pixels
+        }
+        const vtkIdType first = vtkIdType(tile.Y + row) * this->Job.GetWidth() + tile.X;
+        this->Job.Integrate(first, first + tile.W, rgb.data() + 3 * size_t(row) * tile.W, nullptr);
+      }
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      this->Done.emplace_back(index, std::move(rgb));
+    }
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkLightShaftExactFinish::vtkLightShaftExactFinish() = default;
+
+vtkLightShaftExactFinish::~vtkLightShaftExactFinish()
+{
+  this->Stop();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkLightShaftExactFinish::Unmodelled(vtkRenderer* renderer)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double* center = camera->GetWindowCenter();
+  if (camera->GetUseOffAxisProjection() || center[0] != 0.0 || center[1] != 0.0 ||
+      camera->GetUserTransform() || camera->GetUserViewTransform() ||
+      camera->GetUseExplicitProjectionTransformMatrix())
+  {
+    return "the camera's projection (off-axis, a window centre or a user transform)";
+  }
+  vtkCollectionSimpleIterator it;
+  renderer->GetViewProps()->InitTraversal(it);
+  while (vtkProp* prop = renderer->GetViewProps()->GetNextProp(it))
+  {
+    if (!prop->GetVisibility() || !vtkProp3D::SafeDownCast(prop) || vtkVolume::SafeDownCast(prop))
+    {
+      continue; // overlays are not in the medium; the reference models a volume
+    }
+    auto* actor = vtkActor::SafeDownCast(prop);
+    auto* polydata = actor && actor->GetMapper()
+                       ? vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0))
+                       : nullptr;
+    if (!polydata)
+    {
+      return std::string("a ") + prop->GetClassName() + " without polygonal input";
+    }
+    if (actor->GetProperty()->GetOpacity() > 0.0 &&
+        (actor->GetProperty()->GetRepresentation() != VTK_SURFACE ||
+          polydata->GetNumberOfVerts() > 0 || polydata->GetNumberOfLines() > 0))
+    {
+      return "an actor drawn with points or lines";
+    }
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftExactFinish::Check(vtkRenderer* renderer)
+{
+  if (this->Current == State::Off)
+  {
+    this->Problem = Unmodelled(renderer);
+    this->Current = this->Problem.empty() ? State::Off : State::Unsupported;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftExactFinish::Start(vtkLightShaftFrame& frame,
+  vtkLightShaftPass* pass,
+  vtkTextureObject* estimate)
+{
+  if (this->Current != State::Off)
+  {
+    return;
+  }
+  this->Check(frame.Renderer);
+  if (this->Current != State::Off)
+  {
+    return;
+  }
+  auto work = std::make_shared<Work>();
+  this->Problem = work->Job.Prepare(
+    frame.Renderer, pass, pass, frame.Size[0], frame.Size[1], vtkLightShaftReferenceJob::Options());
+  if (!this->Problem.empty())
+  {
+    this->Current = State::Failed;
+    return;
+  }
+  this->Size[0] = frame.Size[0];
+  this->Size[1] = frame.Size[1];
+  this->OrderTiles(frame, estimate);
+  work->Tiles = this->Tiles;
+
+  // Nothing exact yet: alpha 0 everywhere.
+  vtkTextureObject* exact =
+    this->Exact.Ensure(frame.Window, TextureKind::RGBA32F, this->Size[0], this->Size[1]);
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  ostate->PushFramebufferBindings();
+  vtkLightShaftResources::BindTargets(
+    vtkLightShaftResources::EnsureFramebuffer(this->Framebuffer, frame.Window),
+    { exact },
+    nullptr,
+    this->Size[0],
+    this->Size[1]);
+  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  ostate->PopFramebufferBindings();
+
+  this->Shared = work;
+  const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+  for (unsigned i = 0; i < threads; ++i)
+  {
+    this->Workers.emplace_back([work]() { work->Run(); });
+  }
+  this->Current = State::Running;
+}
+
+//------------------------------------------------------------------------------
+// The tiles, brightest first: the error of a picture is mostly where its in-scatter is
+// large (the relative RMS weighs each pixel by its square).
+void vtkLightShaftExactFinish::OrderTiles(vtkLightShaftFrame& frame, vtkTextureObject* estimate)
+{
+  const int w = this->Size[0];
+  const int h = this->Size[1];
+  const int columns = (w + TileSide - 1) / TileSide;
+  const int rows = (h + TileSide - 1) / TileSide;
+  std::vector<Tile> tiles;
+  for (int j = 0; j < rows; ++j)
+  {
+    for (int i = 0; i < columns; ++i)
+    {
+      const int x = i * TileSide;
+      const int y = j * TileSide;
+      tiles.push_back({ x, y, std::min(TileSide, w - x), std::min(TileSide, h - y) });
+    }
+  }
+  std::vector<double> weight(tiles.size(), 0.0);
+  if (estimate && static_cast<int>(estimate->GetWidth()) == w &&
+      static_cast<int>(estimate->GetHeight()) == h)
+  {
+    std::vector<float> rgb(3 * static_cast<size_t>(w) * h);
+    vtkOpenGLState* ostate = frame.Window->GetState();
+    ostate->PushFramebufferBindings();
+    vtkLightShaftResources::BindTargets(
+      vtkLightShaftResources::EnsureFramebuffer(this->Framebuffer, frame.Window),
+      { estimate },
+      nullptr,
+      w,
+      h);
+    this->Framebuffer->ActivateReadBuffer(0);
+    GLint packAlignment = 4;
+    glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, rgb.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
+    ostate->PopFramebufferBindings();
+    for (int y = 0; y < h; ++y)
+    {
+      for (int x = 0; x < w; ++x)
+      {
+        const float* p = &rgb[3 * (size_t(y) * w + x)];
+        const double luminance = (double(p[0]) + p[1] + p[2]) / 3.0;
+        weight[size_t(y / TileSide) * columns + x / TileSide] += luminance * luminance;
+      }
+    }
+  }
+  std::vector<size_t> order(tiles.size());
+  std::iota(order.begin(), order.end(), size_t(0));
+  std::stable_sort(
+    order.begin(), order.end(), [&](size_t a, size_t b) { return weight[a] > weight[b]; });
+  this->Tiles.clear();
+  for (size_t index : order)
+  {
+    this->Tiles.push_back(tiles[index]);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftExactFinish::Stop()
+{
+  if (this->Shared)
+  {
+    this->Shared->Cancel = true;
+  }
+  for (std::thread& worker : this->Workers)
+  {
+    worker.join();
+  }
+  this->Workers.clear();
+  this->Shared.reset();
+  this->Tiles.clear();
+  this->Shown = 0;
+  this->FinishedPixels = 0;
+  this->Current = State::Off;
+  this->Problem.clear();
+}
+
+//------------------------------------------------------------------------------
+// The tiles finished since the last frame into the exact texture (alpha 1 marks them).
+void vtkLightShaftExactFinish::Upload(vtkLightShaftFrame& frame)
+{
+  std::vector<std::pair<int, std::vector<double>>> done;
+  {
+    std::lock_guard<std::mutex> lock(this->Shared->Mutex);
+    done.swap(this->Shared->Done);
+  }
+  if (done.empty())
+  {
+    return;
+  }
+  vtkTextureObject* exact =
+    this->Exact.Ensure(frame.Window, TextureKind::RGBA32F, this->Size[0], this->Size[1]);
+  exact->Bind();
+  GLint unpackAlignment = 4;
+  GLint unpackRowLength = 0;
+  glGetIntegerv(GL_UNPACK_ALIGNMENT, &unpackAlignment);
+  glGetIntegerv(GL_UNPACK_ROW_LENGTH, &unpackRowLength);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  for (const auto& finished : done)
+  {
+    const Tile& tile = this->Tiles[finished.first];
+    const size_t pixels = static_cast<size_t>(tile.W) * tile.H;
+    this->Texels.resize(4 * pixels);
+    for (size_t p = 0; p < pixels; ++p)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        this->Texels[4 * p + c] = static_cast<float>(finished.second[3 * p + c]);
+      }
+      this->Texels[4 * p + 3] = 1.0f;
+    }
+    glTexSubImage2D(
+      GL_TEXTURE_2D, 0, tile.X, tile.Y, tile.W, tile.H, GL_RGBA, GL_FLOAT, this->Texels.data());
+    this->FinishedPixels += static_cast<long long>(pixels);
+    ++this->Shown;
+  }
+  glPixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, unpackRowLength);
+  exact->Deactivate();
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkLightShaftExactFinish::Apply(vtkLightShaftFrame& frame,
+  vtkTextureObject* estimate)
+{
+  if (!this->IsActive() || frame.Size[0] != this->Size[0] || frame.Size[1] != this->Size[1])
+  {
+    return estimate;
+  }
+  if (this->Current == State::Running)
+  {
+    this->Upload(frame);
+    if (this->Shown == static_cast<int>(this->Tiles.size()))
+    {
+      for (std::thread& worker : this->Workers)
+      {
+        worker.join(); // they have no tile left: they are returning
+      }
+      this->Workers.clear();
+      this->Shared.reset();
+      this->Current = State::Complete;
+    }
+  }
+  if (this->Current == State::Complete)
+  {
+    return this->Exact.Object;
+  }
+  if (this->Shown == 0 || !estimate || static_cast<int>(estimate->GetWidth()) != this->Size[0] ||
+      static_cast<int>(estimate->GetHeight()) != this->Size[1])
+  {
+    return estimate;
+  }
+  vtkTextureObject* mixed =
+    this->Mixed.Ensure(frame.Window, TextureKind::RGBA32F, this->Size[0], this->Size[1]);
+  vtkLightShaftResources::BindTargets(
+    vtkLightShaftResources::EnsureFramebuffer(this->Framebuffer, frame.Window),
+    { mixed },
+    nullptr,
+    this->Size[0],
+    this->Size[1]);
+  // Whatever the scene's render left on (the caller restores it).
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_CULL_FACE);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  vtkShaderProgram* program = this->Mix.Ready(frame.Window, vtkLightShaftExactFinishFS);
+  if (!program)
+  {
+    return estimate;
+  }
+  vtkTextureObject* exact = this->Exact.Object;
+  estimate->Activate();
+  exact->Activate();
+  program->SetUniformi("estimate", estimate->GetTextureUnit());
+  program->SetUniformi("exact", exact->GetTextureUnit());
+  this->Mix.Render();
+  ++frame.Statistics.PostPasses;
+  exact->Deactivate();
+  estimate->Deactivate();
+  return mixed;
+}
+
+//------------------------------------------------------------------------------
+double vtkLightShaftExactFinish::GetFinishedFraction() const
+{
+  const double pixels = double(this->Size[0]) * this->Size[1];
+  return this->Current == State::Complete ? 1.0
+         : pixels > 0.0                   ? double(this->FinishedPixels) / pixels
+                                          : 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftExactFinish::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Stop();
+  this->Exact.Release(window);
+  this->Mixed.Release(window);
+  this->Mix.Release(window);
+  vtkLightShaftResources::ReleaseFramebuffer(this->Framebuffer, window);
+}
