@@ -38,6 +38,7 @@ set(lightshafts_private_classes
   vtkLightShaftSurfaceLight
   vtkLightShaftTranslucentLayers
   vtkLightShaftTranslucentPeel
+  vtkLightShaftTriangleTree
   vtkLightShaftVolumeField
   vtkLightShaftVolumeTexture)
 # vtkLightShaftPass's read-backs and its choice of sampling are compiled with it (the public

@@ -1,15 +1,15 @@
 #include "vtkLightShaftReferenceScene.h"
 
 #include "vtkActor.h"
+#include "vtkCellArray.h"
 #include "vtkFloatArray.h"
-#include "vtkGenericCell.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkLightShaftFrameReport.h"
 #include "vtkLightShaftPass.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
-#include "vtkModifiedBSPTree.h"
+#include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -25,44 +25,6 @@
 
 using namespace vtkLightShaftRayIntegrator;
 
-namespace
-{
-// Whether the segment from -> to meets an axis-aligned box (slab test, slightly padded).
-bool SegmentMeetsBox(const Vec& from, const Vec& to, const double bounds[6])
-{
-  double lo = 0.0;
-  double hi = 1.0;
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    const double pad = 1e-9 * (std::abs(bounds[2 * axis]) + std::abs(bounds[2 * axis + 1]) + 1.0);
-    const double d = to[axis] - from[axis];
-    const double a = bounds[2 * axis] - pad - from[axis];
-    const double b = bounds[2 * axis + 1] + pad - from[axis];
-    if (d == 0.0)
-    {
-      if (a > 0.0 || b < 0.0)
-      {
-        return false;
-      }
-      continue;
-    }
-    double t0 = a / d;
-    double t1 = b / d;
-    if (t0 > t1)
-    {
-      std::swap(t0, t1);
-    }
-    lo = std::max(lo, t0);
-    hi = std::min(hi, t1);
-    if (lo > hi)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-}
-
 //------------------------------------------------------------------------------
 vtkLightShaftReferenceScene::vtkLightShaftReferenceScene() = default;
 vtkLightShaftReferenceScene::~vtkLightShaftReferenceScene() = default;
@@ -71,6 +33,8 @@ vtkLightShaftReferenceScene::~vtkLightShaftReferenceScene() = default;
 void vtkLightShaftReferenceScene::Capture(vtkRenderer* renderer)
 {
   this->Occluders.clear();
+  this->Opaque.Clear();
+  this->Translucent.Clear();
   vtkCollectionSimpleIterator it;
   renderer->GetViewProps()->InitTraversal(it);
   while (vtkProp* prop = renderer->GetViewProps()->GetNextProp(it))
@@ -119,15 +83,31 @@ void vtkLightShaftReferenceScene::Capture(vtkRenderer* renderer)
       continue;
     }
     Occluder occluder;
-    occluder.Mesh = vtkSmartPointer<vtkPolyData>::New();
-    occluder.Mesh->DeepCopy(triangles->GetOutput());
-    occluder.Mesh->BuildCells(); // read-only from the threads afterwards
-    occluder.Mesh->GetBounds(occluder.Bounds);
-    occluder.Translucent = opacity < 1.0;
     occluder.Transmittance = transmittance;
     occluder.Kept = 1.0 - opacity;
+    const int owner = static_cast<int>(this->Occluders.size());
     this->Occluders.push_back(occluder);
+    vtkLightShaftTriangleTree& tree = opacity < 1.0 ? this->Translucent : this->Opaque;
+    vtkPolyData* mesh = triangles->GetOutput();
+    vtkCellArray* polys = mesh->GetPolys();
+    vtkNew<vtkIdList> ids;
+    polys->InitTraversal();
+    while (polys->GetNextCell(ids))
+    {
+      if (ids->GetNumberOfIds() != 3)
+      {
+        continue;
+      }
+      Vec corners[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        mesh->GetPoint(ids->GetId(k), corners[k].data());
+      }
+      tree.Add(corners[0], corners[1], corners[2], owner);
+    }
   }
+  this->Opaque.Build();
+  this->Translucent.Build();
 }
 
 //------------------------------------------------------------------------------
@@ -189,17 +169,7 @@ bool vtkLightShaftReferenceScene::ShadowMapVisible(const Vec& x,
 //------------------------------------------------------------------------------
 vtkLightShaftReferenceScene::Tracer::Tracer(const vtkLightShaftReferenceScene& scene)
   : Scene(scene)
-  , Cell(vtkSmartPointer<vtkGenericCell>::New())
-  , Hits(vtkSmartPointer<vtkIdList>::New())
-  , HitPoints(vtkSmartPointer<vtkPoints>::New())
 {
-  for (const Occluder& occluder : scene.Occluders)
-  {
-    auto locator = vtkSmartPointer<vtkModifiedBSPTree>::New();
-    locator->SetDataSet(occluder.Mesh);
-    locator->BuildLocator();
-    this->Locators.push_back(locator);
-  }
 }
 
 vtkLightShaftReferenceScene::Tracer::~Tracer() = default;
@@ -235,50 +205,20 @@ void vtkLightShaftReferenceScene::TracerPool::Give(std::unique_ptr<Tracer> trace
 //------------------------------------------------------------------------------
 bool vtkLightShaftReferenceScene::Tracer::FirstHit(const Vec& from, const Vec& to, double& nearest)
 {
-  bool any = false;
-  nearest = 1.0;
-  for (size_t k = 0; k < this->Scene.Occluders.size(); ++k)
-  {
-    if (this->Scene.Occluders[k].Translucent ||
-        !SegmentMeetsBox(from, to, this->Scene.Occluders[k].Bounds))
-    {
-      continue;
-    }
-    double t;
-    double x[3];
-    double pcoords[3];
-    int subId;
-    vtkIdType cellId;
-    if (this->Locators[k]->IntersectWithLine(
-          from.data(), to.data(), 0.0, t, x, pcoords, subId, cellId, this->Cell) &&
-        t < nearest)
-    {
-      nearest = t;
-      any = true;
-    }
-  }
-  return any;
+  int owner;
+  return this->Scene.Opaque.Nearest(from, to, nearest, owner);
 }
 
 //------------------------------------------------------------------------------
 RGB vtkLightShaftReferenceScene::Tracer::Crossings(const Vec& from, const Vec& to)
 {
   RGB product{ 1.0, 1.0, 1.0 };
-  for (size_t k = 0; k < this->Scene.Occluders.size(); ++k)
+  this->Scene.Translucent.All(from, to, this->Hits);
+  for (const std::pair<double, int>& hit : this->Hits)
   {
-    const Occluder& occluder = this->Scene.Occluders[k];
-    if (!occluder.Translucent || !SegmentMeetsBox(from, to, occluder.Bounds))
+    for (int c = 0; c < 3; ++c)
     {
-      continue;
-    }
-    this->Hits->Reset();
-    this->Locators[k]->IntersectWithLine(from.data(), to.data(), 0.0, nullptr, this->Hits);
-    for (vtkIdType hit = 0; hit < this->Hits->GetNumberOfIds(); ++hit)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        product[c] *= occluder.Transmittance[c];
-      }
+      product[c] *= this->Scene.Occluders[hit.second].Transmittance[c];
     }
   }
   return product;
@@ -290,28 +230,11 @@ std::vector<std::pair<double, double>> vtkLightShaftReferenceScene::Tracer::Came
   const Vec& to)
 {
   std::vector<std::pair<double, double>> crossings;
-  const Vec span = to - from;
-  const double length2 = vtkLightShaftRayIntegrator::Dot(span, span);
-  for (size_t k = 0; k < this->Scene.Occluders.size(); ++k)
+  this->Scene.Translucent.All(from, to, this->Hits);
+  for (const std::pair<double, int>& hit : this->Hits)
   {
-    const Occluder& occluder = this->Scene.Occluders[k];
-    if (!occluder.Translucent || !SegmentMeetsBox(from, to, occluder.Bounds))
-    {
-      continue;
-    }
-    this->HitPoints->Reset();
-    this->Hits->Reset();
-    this->Locators[k]->IntersectWithLine(from.data(), to.data(), 0.0, this->HitPoints, this->Hits);
-    for (vtkIdType hit = 0; hit < this->HitPoints->GetNumberOfPoints(); ++hit)
-    {
-      double x[3];
-      this->HitPoints->GetPoint(hit, x);
-      const Vec offset{ x[0] - from[0], x[1] - from[1], x[2] - from[2] };
-      crossings.emplace_back(
-        vtkLightShaftRayIntegrator::Dot(offset, span) / length2, occluder.Kept);
-    }
+    crossings.emplace_back(hit.first, this->Scene.Occluders[hit.second].Kept);
   }
-  std::sort(crossings.begin(), crossings.end());
   return crossings;
 }
 
@@ -338,8 +261,7 @@ RGB vtkLightShaftReferenceScene::Tracer::Transmittance(const Vec& x,
   const Vec toLight = light - x;
   const double distance = Norm(toLight);
   const Vec step = (1e-9 * (distance + 1.0) / std::max(distance, 1e-300)) * toLight;
-  double t;
-  if (this->FirstHit(x + step, light - step, t))
+  if (this->Scene.Opaque.Any(x + step, light - step))
   {
     return { 0.0, 0.0, 0.0 };
   }

@@ -8,29 +8,24 @@
 #define vtkLightShaftReferenceScene_h
 
 #include "vtkLightShaftRayIntegrator.h" // For Vec
+#include "vtkLightShaftTriangleTree.h"  // For the surfaces' triangles
 #include "vtkNew.h"                     // For the shadow map's copies
-#include "vtkSmartPointer.h"            // For the meshes and locators
 
 #include <memory>  // For the pool's tracers
 #include <mutex>   // For the pool
 #include <utility> // For the camera leg's crossings
-#include <vector>  // For the occluders and locators
+#include <vector>  // For the occluders and crossings
 
-class vtkGenericCell;
-class vtkIdList;
 class vtkImageData;
 class vtkLightShaftPass;
 class vtkMatrix4x4;
-class vtkModifiedBSPTree;
-class vtkPoints;
-class vtkPolyData;
 class vtkRenderer;
 
 /**
  * @class   vtkLightShaftReferenceScene
- * @brief   The polygonal props of a renderer in world coordinates (one triangle mesh and
- *          bounding box per actor), for the reference's surfaces and exact shadows; or the
- *          pass's last shadow map of one light, looked up as the pass looks it up.
+ * @brief   The polygonal props of a renderer in world coordinates (their triangles in two
+ *          bounding-volume hierarchies, opaque and translucent), for the reference's surfaces and
+ * exact shadows; or the pass's last shadow map of one light, looked up as the pass looks it up.
  *
  * The light's transmittance to a point x, over the segment from x to the light (for a
  * directional light, back along its direction to its plane: geometry before the plane casts
@@ -42,8 +37,9 @@ class vtkRenderer;
  * (CameraCrossings). With the shadow map, the light's transmittance is 0 or 1 (translucent
  * actors left out).
  *
- * Queries go through a Tracer, one per thread (from a TracerPool): VTK 9.1's vtkModifiedBSPTree
- * keeps a scratch cell per tree (shared trees gave non-deterministic results across threads).
+ * Queries go through a Tracer, one per thread (from a TracerPool), which holds the thread's
+ * scratch; the hierarchies are shared, read-only. (They replaced one vtkModifiedBSPTree per
+ * actor and tracer: VTK's cell-by-cell tests took most of the reference's time.)
  */
 class vtkLightShaftReferenceScene
 {
@@ -95,10 +91,7 @@ public:
     /// segment from -> to.
     vtkLightShaftRayIntegrator::RGB Crossings(const Vec& from, const Vec& to);
 
-    std::vector<vtkSmartPointer<vtkModifiedBSPTree>> Locators;
-    vtkSmartPointer<vtkGenericCell> Cell;
-    vtkSmartPointer<vtkIdList> Hits;
-    vtkSmartPointer<vtkPoints> HitPoints;
+    std::vector<std::pair<double, int>> Hits; ///< scratch: the translucent crossings
   };
 
   /**
@@ -129,13 +122,12 @@ private:
 
   struct Occluder
   {
-    vtkSmartPointer<vtkPolyData> Mesh;
-    double Bounds[6];
-    bool Translucent = false;                        ///< else opaque: it blocks the light
     vtkLightShaftRayIntegrator::RGB Transmittance{}; ///< per crossing, when translucent
     double Kept = 0.0; ///< what VTK's blending keeps of what lies behind it: 1 - opacity
   };
-  std::vector<Occluder> Occluders;
+  std::vector<Occluder> Occluders; ///< per actor, indexed by its triangles' owner
+  vtkLightShaftTriangleTree Opaque;
+  vtkLightShaftTriangleTree Translucent;
 
   // The shadow map, when visibility comes from it.
   bool ShadowMap = false;
