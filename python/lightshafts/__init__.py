@@ -133,7 +133,11 @@ def refine_while_still(interactor, shafts):
 
     def on_refinement_needed(caller, event):
         if not pending:
-            pending.append(interactor.CreateOneShotTimer(1))
+            # While only the exact finish runs, its threads need the processor time: look
+            # for finished tiles ten times a second.
+            finishing = (shafts.GetLastFrame().GetExactFinishState()
+                         == vtkLightShaftFrameReport.EXACT_FINISH_RUNNING)
+            pending.append(interactor.CreateOneShotTimer(100 if finishing else 1))
 
     def on_timer(caller, event):
         if pending:
