@@ -597,11 +597,13 @@ bool Dark(const RGB& transmittance)
   return transmittance[0] == 0.0 && transmittance[1] == 0.0 && transmittance[2] == 0.0;
 }
 
-// The lit pieces of [u0, u1] (in the integration variable; toT maps it to the ray's t): the
-// transmittance sampled at `samples` points, every change bisected to 1e-12 of the interval;
-// the pieces it is zero on left out.
+// The lit pieces of [u0, u1] (in the integration variable; toT maps it to the ray's t, toU
+// back): the transmittance sampled at `samples` points, every change placed by `transition` or
+// else bisected to 1e-12 of the interval; the pieces it is zero on left out.
 std::vector<Piece> FindLitPieces(const Transmittance& transmittance,
+  const Transition& transition,
   const std::function<double(double)>& toT,
+  const std::function<double(double)>& toU,
   const Vec& origin,
   const Vec& dir,
   double u0,
@@ -624,6 +626,14 @@ std::vector<Piece> FindLitPieces(const Transmittance& transmittance,
     const double u = u0 + (u1 - u0) * k / samples;
     const RGB now = transmittance(origin + toT(u) * dir);
     double lo = uPrevious;
+    double tChange;
+    if (now != previous && transition && transition(origin, dir, toT(lo), toT(u), tChange))
+    {
+      const double change = std::min(std::max(toU(tChange), lo), u);
+      close(change);
+      start = change;
+      previous = now;
+    }
     while (now != previous)
     {
       // The first change in (lo, u] (a sample may step over more than one).
@@ -737,7 +747,8 @@ Result IntegrateRay(const Model& model,
   const Transmittance& transmittance,
   int samples,
   double tolerance,
-  bool closedForms)
+  bool closedForms,
+  const Transition& transition)
 {
   // Integration variable: the equiangular angle about the light when A falls off, else t. A
   // ray through the light (h tiny) with a finite A there goes in t: the angle would put the
@@ -747,12 +758,13 @@ Result IntegrateRay(const Model& model,
   const double h = std::max(std::sqrt(std::max(Dot(m, m) - b * b, 0.0)), 1e-300);
   const double extent = std::max({ std::abs(t0 + b), std::abs(t1 + b), h });
   const bool angle = model.Equiangular() && !(model.Attenuation[0] > 0.0 && h < 1e-6 * extent);
-  auto toU = [&](double t) { return angle ? std::atan2(t + b, h) : t; };
+  const std::function<double(double)> toU = [&](double t)
+  { return angle ? std::atan2(t + b, h) : t; };
   const std::function<double(double)> toT = [&](double u)
   { return angle ? h * std::tan(u) - b : u; };
 
   std::vector<Piece> lit =
-    FindLitPieces(transmittance, toT, origin, dir, toU(t0), toU(t1), samples);
+    FindLitPieces(transmittance, transition, toT, toU, origin, dir, toU(t0), toU(t1), samples);
   if (model.Field || model.Extinction)
   {
     // Split where the density (or the volume's extinction) stops being one cubic along the ray

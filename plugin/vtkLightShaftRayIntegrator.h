@@ -178,9 +178,19 @@ struct Result
 using Transmittance = std::function<RGB(const Vec&)>;
 
 /**
+ * Where the transmittance changes along the ray origin + t dir between tFrom and tTo, where it
+ * differs: a t in (tFrom, tTo) just before which it is as at tFrom and just after which it is as
+ * at tTo, computed exactly (the ray clipped by the occluders' shadow volumes); false where it
+ * cannot say, and the change is then bisected.
+ */
+using Transition =
+  std::function<bool(const Vec& origin, const Vec& dir, double tFrom, double tTo, double& t)>;
+
+/**
  * The integral along origin + t dir over [t0, t1] (inside the lit interval, in front of the
  * surface): the transmittance sampled at `samples` points (in the equiangular angle when A
- * falls off, else in t) and every change bisected to 1e-12 of the interval; each piece where
+ * falls off, else in t) and every change placed by `transition` (when given and it can) or
+ * bisected to 1e-12 of the interval; each piece where
  * it is not zero integrated by the closed forms (when `closedForms`) or adaptive Gauss-Kronrod
  * to `tolerance`, times the piece's transmittance. In t, the
  * pieces of a spot or point light are split where the ray passes closest to the light (the
@@ -195,7 +205,8 @@ Result IntegrateRay(const Model& model,
   const Transmittance& transmittance,
   int samples,
   double tolerance,
-  bool closedForms);
+  bool closedForms,
+  const Transition& transition = nullptr);
 }
 
 #endif

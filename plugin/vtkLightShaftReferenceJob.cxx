@@ -70,6 +70,7 @@ Result IntegrateBehindCrossings(const Model& model,
   const std::vector<std::pair<double, double>>& crossings,
   double tSurface,
   const vtkLightShaftRayIntegrator::Transmittance& transmittance,
+  const vtkLightShaftRayIntegrator::Transition& transition,
   int samples,
   double tolerance,
   bool closedForms)
@@ -83,8 +84,8 @@ Result IntegrateBehindCrossings(const Model& model,
     const double tb = std::min(tk, t1);
     if (tb > ta)
     {
-      const Result piece =
-        IntegrateRay(model, origin, dir, ta, tb, transmittance, samples, tolerance, closedForms);
+      const Result piece = IntegrateRay(
+        model, origin, dir, ta, tb, transmittance, samples, tolerance, closedForms, transition);
       sum.ClosedForm = sum.ClosedForm || piece.ClosedForm;
       for (int c = 0; c < 3; ++c)
       {
@@ -317,6 +318,8 @@ vtkIdType vtkLightShaftReferenceJob::Integrate(vtkIdType first,
         continue;
       }
       auto transmittance = [&](const Vec& x) { return tracer->Transmittance(x, model); };
+      auto transition = [&](const Vec& o, const Vec& d, double tFrom, double tTo, double& t)
+      { return tracer->Transition(model, o, d, tFrom, tTo, t); };
       const Result result = IntegrateBehindCrossings(model,
         origin,
         dir,
@@ -325,6 +328,7 @@ vtkIdType vtkLightShaftReferenceJob::Integrate(vtkIdType first,
         crossings,
         tSurface,
         transmittance,
+        transition,
         this->Settings.VisibilitySamples,
         this->Settings.RelativeTolerance,
         this->ClosedForms[l] != 0);

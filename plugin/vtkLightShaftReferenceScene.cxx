@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 using namespace vtkLightShaftRayIntegrator;
 
@@ -247,23 +248,207 @@ RGB vtkLightShaftReferenceScene::Tracer::Transmittance(const Vec& x,
     const double visible = this->Scene.ShadowMapVisible(x, model) ? 1.0 : 0.0;
     return { visible, visible, visible };
   }
-  // The segment to the light, or back to a directional light's plane.
+  Vec from;
+  Vec to;
+  if (!ToLight(x, model, from, to))
+  {
+    return { 1.0, 1.0, 1.0 }; // on (or before) a directional light's plane: nothing between
+  }
+  if (this->Scene.Opaque.Any(from, to))
+  {
+    return { 0.0, 0.0, 0.0 };
+  }
+  return this->Crossings(from, to);
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightShaftReferenceScene::Tracer::ToLight(const Vec& x,
+  const vtkLightShaftRayIntegrator::Model& model,
+  Vec& from,
+  Vec& to)
+{
   Vec light = model.Light;
   if (model.Directional())
   {
     const double r = model.Distance(x);
     if (!(r > 0.0))
     {
-      return { 1.0, 1.0, 1.0 }; // on (or before) the plane: nothing lies between
+      return false;
     }
     light = x - r * model.Axis;
   }
   const Vec toLight = light - x;
   const double distance = Norm(toLight);
   const Vec step = (1e-9 * (distance + 1.0) / std::max(distance, 1e-300)) * toLight;
-  if (this->Scene.Opaque.Any(x + step, light - step))
+  from = x + step;
+  to = light - step;
+  return true;
+}
+
+bool vtkLightShaftReferenceScene::Tracer::Shadowed(const Vec& x,
+  const vtkLightShaftRayIntegrator::Model& model)
+{
+  Vec from;
+  Vec to;
+  return ToLight(x, model, from, to) && this->Scene.Opaque.Any(from, to);
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+/// The interval [first, last] of t where triangle p shadows origin + t dir from the light: the
+/// ray clipped by the triangle's shadow volume (the half-spaces through each edge and the light,
+/// or the light's direction, and beyond the triangle's plane). False where the volume is
+/// degenerate: the light in the triangle's plane, a directional light along it, or part of the
+/// triangle behind a directional light's plane (it shadows only part of its volume).
+bool ShadowVolumeInterval(const Model& light,
+  const std::array<Vec, 3>& p,
+  const Vec& origin,
+  const Vec& dir,
+  double& first,
+  double& last)
+{
+  first = -std::numeric_limits<double>::infinity();
+  last = std::numeric_limits<double>::infinity();
+  // Keep alpha + beta t >= 0.
+  auto keep = [&](double alpha, double beta)
   {
-    return { 0.0, 0.0, 0.0 };
+    if (beta > 0.0)
+    {
+      first = std::max(first, -alpha / beta);
+    }
+    else if (beta < 0.0)
+    {
+      last = std::min(last, -alpha / beta);
+    }
+    else if (alpha < 0.0)
+    {
+      first = std::numeric_limits<double>::infinity();
+    }
+  };
+  const Vec normal = Cross(p[1] - p[0], p[2] - p[0]);
+  const double size = Norm(normal);
+  // Beyond the plane, seen from the light: away from it, or along a directional light.
+  double beyond;
+  if (light.Directional())
+  {
+    for (const Vec& corner : p)
+    {
+      if (!(light.Distance(corner) > 0.0))
+      {
+        return false;
+      }
+    }
+    beyond = Dot(normal, light.Axis);
+    if (!(std::abs(beyond) > 1e-9 * size))
+    {
+      return false;
+    }
   }
-  return this->Crossings(x + step, light - step);
+  else
+  {
+    const Vec toLight = light.Light - p[0];
+    beyond = -Dot(normal, toLight);
+    if (!(std::abs(beyond) > 1e-9 * size * Norm(toLight)))
+    {
+      return false;
+    }
+  }
+  const double sign = beyond > 0.0 ? 1.0 : -1.0;
+  keep(sign * Dot(normal, origin - p[0]), sign * Dot(normal, dir));
+  for (int i = 0; i < 3; ++i)
+  {
+    const Vec& a = p[i];
+    const Vec& b = p[(i + 1) % 3];
+    const Vec& c = p[(i + 2) % 3];
+    // The plane through the edge ab and the light (or its direction), facing c.
+    const Vec apex = light.Directional() ? a : light.Light;
+    Vec side = light.Directional() ? Cross(b - a, light.Axis) : Cross(a - apex, b - apex);
+    if (Dot(side, c - apex) < 0.0)
+    {
+      side = -1.0 * side;
+    }
+    keep(Dot(side, origin - apex), Dot(side, dir));
+  }
+  return true;
+}
+}
+
+bool vtkLightShaftReferenceScene::Tracer::ShadowOf(const Vec& x,
+  const vtkLightShaftRayIntegrator::Model& model,
+  const Vec& origin,
+  const Vec& dir,
+  double& first,
+  double& last)
+{
+  Vec from;
+  Vec to;
+  if (!ToLight(x, model, from, to))
+  {
+    return false;
+  }
+  this->Scene.Opaque.Crossed(from, to, this->Blockers);
+  if (this->Blockers.empty())
+  {
+    return false;
+  }
+  first = std::numeric_limits<double>::infinity();
+  last = -std::numeric_limits<double>::infinity();
+  for (const std::array<Vec, 3>& corners : this->Blockers)
+  {
+    double a;
+    double b;
+    if (!ShadowVolumeInterval(model, corners, origin, dir, a, b))
+    {
+      return false;
+    }
+    first = std::min(first, a);
+    last = std::max(last, b);
+  }
+  return true;
+}
+
+bool vtkLightShaftReferenceScene::Tracer::Transition(const Model& model,
+  const Vec& origin,
+  const Vec& dir,
+  double tFrom,
+  double tTo,
+  double& t)
+{
+  if (this->Scene.ShadowMap || !this->Scene.Translucent.IsEmpty() || !(tTo > tFrom))
+  {
+    return false;
+  }
+  // A hair: far below what float32 output resolves, far above double's rounding of t.
+  const double hair = 1e-10 * (std::abs(tFrom) + std::abs(tTo));
+  if (!(4.0 * hair < tTo - tFrom))
+  {
+    return false;
+  }
+  const bool litFrom = !this->Shadowed(origin + tFrom * dir, model);
+  // From the shadowed end, step to where its shadowing triangles stop shadowing the ray; if
+  // others shadow it there, go on from there (each step passes at least one triangle).
+  double end = litFrom ? tTo : tFrom;
+  for (int step = 0; step < 16; ++step)
+  {
+    double first;
+    double last;
+    if (!this->ShadowOf(origin + end * dir, model, origin, dir, first, last))
+    {
+      return false;
+    }
+    const double edge = litFrom ? first : last;
+    if (!(edge > tFrom && edge < tTo) || (litFrom ? !(edge < end) : !(edge > end)))
+    {
+      return false; // rounding at a shared edge or a grazing ray: bisect
+    }
+    const double probe = litFrom ? edge - hair : edge + hair;
+    if (!(probe > tFrom && probe < tTo) || !this->Shadowed(origin + probe * dir, model))
+    {
+      t = edge;
+      return true;
+    }
+    end = probe;
+  }
+  return false;
 }

@@ -11,6 +11,7 @@
 #include "vtkLightShaftTriangleTree.h"  // For the surfaces' triangles
 #include "vtkNew.h"                     // For the shadow map's copies
 
+#include <array>   // For the blockers' corners
 #include <memory>  // For the pool's tracers
 #include <mutex>   // For the pool
 #include <utility> // For the camera leg's crossings
@@ -84,14 +85,44 @@ public:
     /// The light's transmittance to x (see the class description).
     vtkLightShaftRayIntegrator::RGB Transmittance(const Vec& x,
       const vtkLightShaftRayIntegrator::Model& light);
+    /**
+     * Where the light's visibility changes along origin + t dir between tFrom and tTo, where
+     * it differs (vtkLightShaftRayIntegrator::Transition): the end of the shadow volumes of
+     * the triangles that shadow one end, clipped to the ray, checked a hair beyond and taken
+     * further while others go on shadowing it. Exact visibility of opaque surfaces only: false
+     * with translucent ones or the shadow map (and where a triangle's volume is degenerate).
+     */
+    bool Transition(const vtkLightShaftRayIntegrator::Model& light,
+      const Vec& origin,
+      const Vec& dir,
+      double tFrom,
+      double tTo,
+      double& t);
 
   private:
     const vtkLightShaftReferenceScene& Scene;
+    /// The segment from x to the light (back to a directional light's plane), shortened at
+    /// both ends by a hair; false when there is none (x on or before the plane).
+    static bool ToLight(const Vec& x,
+      const vtkLightShaftRayIntegrator::Model& light,
+      Vec& from,
+      Vec& to);
+    /// Whether an opaque surface shadows x.
+    bool Shadowed(const Vec& x, const vtkLightShaftRayIntegrator::Model& light);
+    /// The interval of t where the triangles that shadow x shadow origin + t dir (their
+    /// shadow volumes' union, which holds x); false when one is degenerate.
+    bool ShadowOf(const Vec& x,
+      const vtkLightShaftRayIntegrator::Model& light,
+      const Vec& origin,
+      const Vec& dir,
+      double& first,
+      double& last);
     /// The product of the translucent surfaces' transmittance over their crossings by the
     /// segment from -> to.
     vtkLightShaftRayIntegrator::RGB Crossings(const Vec& from, const Vec& to);
 
     std::vector<std::pair<double, int>> Hits; ///< scratch: the translucent crossings
+    std::vector<std::array<Vec, 3>> Blockers; ///< scratch: the triangles shadowing a point
   };
 
   /**
@@ -110,6 +141,22 @@ public:
 
   private:
     const vtkLightShaftReferenceScene& Scene;
+    /// The segment from x to the light (back to a directional light's plane), shortened at
+    /// both ends by a hair; false when there is none (x on or before the plane).
+    static bool ToLight(const Vec& x,
+      const vtkLightShaftRayIntegrator::Model& light,
+      Vec& from,
+      Vec& to);
+    /// Whether an opaque surface shadows x.
+    bool Shadowed(const Vec& x, const vtkLightShaftRayIntegrator::Model& light);
+    /// The interval of t where the triangles that shadow x shadow origin + t dir (their
+    /// shadow volumes' union, which holds x); false when one is degenerate.
+    bool ShadowOf(const Vec& x,
+      const vtkLightShaftRayIntegrator::Model& light,
+      const Vec& origin,
+      const Vec& dir,
+      double& first,
+      double& last);
     std::mutex Mutex;
     std::vector<std::unique_ptr<Tracer>> Free;
   };

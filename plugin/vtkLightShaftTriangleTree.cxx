@@ -310,3 +310,24 @@ void vtkLightShaftTriangleTree::All(const Vec& from,
   { return a.second == b.second && std::abs(a.first - b.first) <= 1e-12; };
   hits.erase(std::unique(hits.begin(), hits.end(), same), hits.end());
 }
+
+void vtkLightShaftTriangleTree::Crossed(const Vec& from,
+  const Vec& to,
+  std::vector<std::array<Vec, 3>>& corners) const
+{
+  corners.clear();
+  const Ray ray(from, to);
+  this->Traverse(ray,
+    [&](const Triangle& triangle)
+    {
+      double hit;
+      if (ray.Crosses(triangle, hit))
+      {
+        const Vec& a = triangle.A;
+        corners.push_back({ a,
+          Vec{ a[0] + triangle.Edge1[0], a[1] + triangle.Edge1[1], a[2] + triangle.Edge1[2] },
+          Vec{ a[0] + triangle.Edge2[0], a[1] + triangle.Edge2[1], a[2] + triangle.Edge2[2] } });
+      }
+      return true;
+    });
+}

@@ -44,6 +44,8 @@ public:
   bool Any(const Vec& from, const Vec& to) const;
   /// Every crossing of the segment, (t, surface), in order of t, one per surface and t.
   void All(const Vec& from, const Vec& to, std::vector<std::pair<double, int>>& hits) const;
+  /// The corners of every triangle the segment crosses (each triangle once, in no order).
+  void Crossed(const Vec& from, const Vec& to, std::vector<std::array<Vec, 3>>& corners) const;
 
 private:
   struct Triangle
