@@ -272,18 +272,26 @@ void vtkLightShaftExactFinish::Stop()
   this->Tiles.clear();
   this->Shown = 0;
   this->FinishedPixels = 0;
+  this->MixedValid = false;
+  this->MixedEstimate = nullptr;
   this->Current = State::Off;
   this->Problem.clear();
 }
 
 //------------------------------------------------------------------------------
-// The tiles finished since the last frame into the exact texture (alpha 1 marks them).
-void vtkLightShaftExactFinish::Upload(vtkLightShaftFrame& frame)
+// The tiles finished since the last frame into the exact texture (alpha 1 marks them), and
+// into `shown` too when given.
+void vtkLightShaftExactFinish::Upload(vtkLightShaftFrame& frame, vtkTextureObject* shown)
 {
   std::vector<std::pair<int, std::vector<double>>> done;
   {
-    std::lock_guard<std::mutex> lock(this->Shared->Mutex);
-    done.swap(this->Shared->Done);
+    // Never wait for a worker: one holding the lock may have been set aside for rendering
+    // (it runs at idle priority); its tiles come with a later frame.
+    std::unique_lock<std::mutex> lock(this->Shared->Mutex, std::try_to_lock);
+    if (lock.owns_lock())
+    {
+      done.swap(this->Shared->Done);
+    }
   }
   if (done.empty())
   {
@@ -311,8 +319,15 @@ void vtkLightShaftExactFinish::Upload(vtkLightShaftFrame& frame)
       }
       this->Texels[4 * p + 3] = 1.0f;
     }
-    glTexSubImage2D(
-      GL_TEXTURE_2D, 0, tile.X, tile.Y, tile.W, tile.H, GL_RGBA, GL_FLOAT, this->Texels.data());
+    for (vtkTextureObject* texture : { exact, shown })
+    {
+      if (texture)
+      {
+        texture->Bind();
+        glTexSubImage2D(
+          GL_TEXTURE_2D, 0, tile.X, tile.Y, tile.W, tile.H, GL_RGBA, GL_FLOAT, this->Texels.data());
+      }
+    }
     this->FinishedPixels += static_cast<long long>(pixels);
     ++this->Shown;
   }
@@ -323,15 +338,20 @@ void vtkLightShaftExactFinish::Upload(vtkLightShaftFrame& frame)
 
 //------------------------------------------------------------------------------
 vtkTextureObject* vtkLightShaftExactFinish::Apply(vtkLightShaftFrame& frame,
-  vtkTextureObject* estimate)
+  vtkTextureObject* estimate,
+  bool estimateChanged)
 {
   if (!this->IsActive() || frame.Size[0] != this->Size[0] || frame.Size[1] != this->Size[1])
   {
     return estimate;
   }
+  // The same estimate as the last mix: the new tiles go straight into the mixed picture, and
+  // the frame costs their upload only (no pass over the picture).
+  const bool incremental =
+    !estimateChanged && this->MixedValid && estimate == this->MixedEstimate && this->Mixed.Object;
   if (this->Current == State::Running)
   {
-    this->Upload(frame);
+    this->Upload(frame, incremental ? this->Mixed.Object.GetPointer() : nullptr);
     if (this->Shown == static_cast<int>(this->Tiles.size()))
     {
       for (std::thread& worker : this->Workers)
@@ -351,6 +371,10 @@ vtkTextureObject* vtkLightShaftExactFinish::Apply(vtkLightShaftFrame& frame,
       static_cast<int>(estimate->GetHeight()) != this->Size[1])
   {
     return estimate;
+  }
+  if (incremental)
+  {
+    return this->Mixed.Object;
   }
   vtkTextureObject* mixed =
     this->Mixed.Ensure(frame.Window, TextureKind::RGBA32F, this->Size[0], this->Size[1]);
@@ -380,6 +404,8 @@ vtkTextureObject* vtkLightShaftExactFinish::Apply(vtkLightShaftFrame& frame,
   ++frame.Statistics.PostPasses;
   exact->Deactivate();
   estimate->Deactivate();
+  this->MixedValid = true;
+  this->MixedEstimate = estimate;
   return mixed;
 }
 

@@ -75,8 +75,12 @@ public:
    * Upload the tiles finished since the last frame and return the picture to show: `estimate`
    * with the finished tiles replaced, or the exact picture alone once complete (`estimate`
    * itself when no tile is finished). Moves to Complete when the last tile is shown.
+   * `estimateChanged`: false when `estimate` holds what it held at the last Apply() (the
+   * picture reused), which then costs the new tiles' upload only.
    */
-  vtkTextureObject* Apply(vtkLightShaftFrame& frame, vtkTextureObject* estimate);
+  vtkTextureObject* Apply(vtkLightShaftFrame& frame,
+    vtkTextureObject* estimate,
+    bool estimateChanged);
   /// The share of the picture's pixels shown exact by the last Apply(), in [0, 1].
   double GetFinishedFraction() const;
   /// Tiles in the view, and those shown exact.
@@ -99,7 +103,7 @@ private:
   };
   struct Work;
   void OrderTiles(vtkLightShaftFrame& frame, vtkTextureObject* estimate);
-  void Upload(vtkLightShaftFrame& frame);
+  void Upload(vtkLightShaftFrame& frame, vtkTextureObject* shown);
 
   State Current = State::Off;
   std::string Problem;
@@ -110,7 +114,9 @@ private:
   int Size[2] = { 0, 0 };
   long long FinishedPixels = 0;
   vtkLightShaftResources::OwnedTexture Exact; ///< rgb: the exact in-scatter, a: 1 where exact
-  vtkLightShaftResources::OwnedTexture Mixed;
+  vtkLightShaftResources::OwnedTexture Mixed; ///< the estimate with the finished tiles
+  vtkTextureObject* MixedEstimate = nullptr;  ///< the estimate Mixed was made of
+  bool MixedValid = false;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkLightShaftResources::FullScreenPass Mix;
   std::vector<float> Texels; ///< one tile's, for its upload

@@ -645,16 +645,23 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   bool computed = false;
   vtkTextureObject* inScatter = nullptr;
   double shafts = 0.0;
-  // A still view's exact finish starts from the picture it has; while it runs, no estimate is
-  // computed (it supersedes them).
+  // A still view's exact finish starts from the picture it has, which that frame shows again
+  // (no long frame when the camera stops); then refinement goes on, the finished tiles replacing
+  // its estimates, until the finish completes and supersedes them.
   const vtkLightShaftParameters& p = frame.Parameters;
+  bool finishStarts = false;
   if (frame.ViewStill && p.ExactFinish && p.ProgressiveRefinement &&
       this->Refinement.GetEstimates() > 0)
   {
+    finishStarts = !this->Finish.IsActive();
     this->Finish.Start(
       frame, static_cast<vtkLightShaftPass*>(frame.Owner), this->Refinement.GetHistory());
+    finishStarts = finishStarts && this->Finish.IsActive();
   }
-  if ((this->Refinement.IsConverged() || this->Finish.IsActive()) && !shadowSurfaces && !cookie)
+  using FinishState = vtkLightShaftExactFinish::State;
+  if ((this->Refinement.IsConverged() || this->Finish.GetState() == FinishState::Complete ||
+        finishStarts) &&
+      !shadowSurfaces && !cookie)
   {
     inScatter = this->Refinement.GetHistory();
     computed = true;
@@ -676,7 +683,7 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
     }
     shafts = std::chrono::duration<double>(Clock::now() - shaftsStart).count();
   }
-  inScatter = this->Finish.Apply(frame, inScatter);
+  inScatter = this->Finish.Apply(frame, inScatter, !frame.Statistics.InScatterReused);
   this->PublishRefinement(frame);
   this->FinalInScatter = inScatter;
   this->InScatterValid = computed;

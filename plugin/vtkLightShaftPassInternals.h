@@ -70,6 +70,8 @@ public:
   vtkLightShaftCostModel::Choice BudgetChoice; ///< kept while the view is still
   double BudgetOfChoice = 0.0;                 ///< the budget BudgetChoice was made for
   bool HasBudgetChoice = false;
+  vtkLightShaftCostModel::Choice MovingChoice; ///< the budget's last while the view moved
+  bool HasMovingChoice = false;
 
   // The last frame's L_in (full resolution) when InScatterValid.
   vtkTextureObject* FinalInScatter = nullptr;
@@ -103,6 +105,11 @@ public:
     const std::vector<vtkLightShaftGeometry::LightFrame>& lights,
     bool noLightVolume,
     bool still);
+  /// A still view after frames under a budget: their setting kept where the still setting is
+  /// not predicted better (vtkLightShaftPassSampling.cxx).
+  void KeepMovingSampling(vtkLightShaftFrame& frame,
+    const std::vector<vtkLightShaftGeometry::LightFrame>& lights,
+    bool finishes);
   /// The frame's refinement and exact-finish read-outs.
   void PublishRefinement(vtkLightShaftFrame& frame);
   /// A measured frame: `shafts` seconds of in-scatter of `total` (the cost model learns).

@@ -106,9 +106,11 @@ vtkTextureObject* vtkLightShaftPass::Internals::ChooseSampling(vtkLightShaftFram
   }
   frame.Density = this->DensityTexture.Ready(frame.Window, frame.Owner, this->Medium);
   frame.DensityField = frame.Density ? &this->DensityTexture : nullptr;
-  // What decides the picture, signed only when refinement or a budget asks whether it changed:
-  // features that are off cost nothing (a prop's redraw MTime updates its pipeline).
-  const bool signs = frame.Parameters.ProgressiveRefinement || FrameBudget(frame) > 0.0;
+  // What decides the picture, signed only when refinement, a budget or the budget's last choice
+  // (a still view may keep it) asks whether it changed: features that are off cost nothing (a
+  // prop's redraw MTime updates its pipeline).
+  const bool signs =
+    frame.Parameters.ProgressiveRefinement || FrameBudget(frame) > 0.0 || this->HasMovingChoice;
   vtkLightShaftRefinement::Signature signature =
     signs ? vtkLightShaftRefinement::Sign(frame,
               lights,
@@ -119,22 +121,20 @@ vtkTextureObject* vtkLightShaftPass::Internals::ChooseSampling(vtkLightShaftFram
     lightFrames,
     cookie != nullptr || frame.Noise != nullptr || frame.Density != nullptr,
     frame.ViewStill);
-  vtkLightShaftRefinement::SetSampling(signature, frame);
-  // The exact finish of a still view: any change stops it. While it can run, the view keeps
-  // the picture it has (the last moving frame's sampling): never worse, and no long frame.
+  // The exact finish of a still view: any change stops it (Begin's signature, sampling aside).
   const vtkLightShaftParameters& p = frame.Parameters;
+  bool finishes = false;
   if (frame.ViewStill && p.ExactFinish && p.ProgressiveRefinement)
   {
     this->Finish.Check(frame.Renderer);
-    if (this->Finish.GetState() != vtkLightShaftExactFinish::State::Unsupported)
-    {
-      this->Refinement.KeepSampling(signature);
-    }
+    finishes = this->Finish.GetState() != vtkLightShaftExactFinish::State::Unsupported;
   }
   else
   {
     this->Finish.Stop();
   }
+  this->KeepMovingSampling(frame, lightFrames, finishes);
+  vtkLightShaftRefinement::SetSampling(signature, frame);
   this->Refinement.Begin(frame, std::move(signature));
   if (frame.ShadowMapOffset[0] != 0.0 || frame.ShadowMapOffset[1] != 0.0)
   {
@@ -242,6 +242,39 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
   }
   frame.Statistics.ErrorModelSetting = setting;
   frame.Statistics.PredictedError = frame.Density ? -1.0 : predicted;
+}
+
+//------------------------------------------------------------------------------
+// Never worse when the camera stops: a still view after frames under a budget keeps their
+// setting where the error model predicts it better than the still setting (where the model
+// cannot tell, the setting asked for is used). With the exact finish, also until the finish has
+// started: that first still frame shows the moving picture again, so that it costs no more than
+// a moving frame.
+void vtkLightShaftPass::Internals::KeepMovingSampling(vtkLightShaftFrame& frame,
+  const std::vector<vtkLightShaftGeometry::LightFrame>& lights,
+  bool finishes)
+{
+  if (frame.Statistics.TimeBudget > 0.0)
+  {
+    this->HasMovingChoice = this->HasBudgetChoice;
+    this->MovingChoice = this->BudgetChoice;
+    return;
+  }
+  if (!frame.ViewStill || !this->HasMovingChoice)
+  {
+    this->HasMovingChoice = false;
+    return;
+  }
+  const vtkLightShaftCostModel::Choice& moving = this->MovingChoice;
+  const double movingError = moving.DownsampleFactor == 1 ? moving.Error : -1.0;
+  const double stillError = frame.Statistics.PredictedError;
+  const bool known = movingError >= 0.0 && stillError >= 0.0;
+  if ((finishes && !this->Finish.IsActive()) || (known && movingError < stillError))
+  {
+    ApplySetting(frame, model::GetSetting(moving.Setting), moving.DownsampleFactor, lights);
+    frame.Statistics.ErrorModelSetting = moving.Setting;
+    frame.Statistics.PredictedError = frame.Density ? -1.0 : movingError;
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -426,29 +426,38 @@ bool vtkLightShaftReferenceScene::Tracer::Transition(const Model& model,
     return false;
   }
   const bool litFrom = !this->Shadowed(origin + tFrom * dir, model);
-  // From the shadowed end, step to where its shadowing triangles stop shadowing the ray; if
-  // others shadow it there, go on from there (each step passes at least one triangle).
-  double end = litFrom ? tTo : tFrom;
-  for (int step = 0; step < 16; ++step)
+  double lit = litFrom ? tFrom : tTo;
+  double dark = litFrom ? tTo : tFrom;
+  auto between = [&](double x) { return std::min(lit, dark) < x && x < std::max(lit, dark); };
+  // From the shadowed end, step to where its shadowing triangles stop shadowing the ray. If
+  // others shadow it there (a fine mesh's shadow is many triangles' volumes), go on from there
+  // and halve what is left, so that few steps pass any number of triangles.
+  for (int step = 0; step < 48; ++step)
   {
     double first;
     double last;
-    if (!this->ShadowOf(origin + end * dir, model, origin, dir, first, last))
+    if (!this->ShadowOf(origin + dark * dir, model, origin, dir, first, last))
     {
       return false;
     }
     const double edge = litFrom ? first : last;
-    if (!(edge > tFrom && edge < tTo) || (litFrom ? !(edge < end) : !(edge > end)))
+    if (!between(edge))
     {
       return false; // rounding at a shared edge or a grazing ray: bisect
     }
     const double probe = litFrom ? edge - hair : edge + hair;
-    if (!(probe > tFrom && probe < tTo) || !this->Shadowed(origin + probe * dir, model))
+    if (!between(probe) || !this->Shadowed(origin + probe * dir, model))
     {
       t = edge;
       return true;
     }
-    end = probe;
+    dark = probe;
+    const double middle = 0.5 * (lit + dark);
+    if (!between(middle))
+    {
+      return false;
+    }
+    (this->Shadowed(origin + middle * dir, model) ? dark : lit) = middle;
   }
   return false;
 }

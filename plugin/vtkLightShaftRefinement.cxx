@@ -83,14 +83,6 @@ bool vtkLightShaftRefinement::IsStill(const Signature& signature) const
   return this->HasLast && signature.SameScene(this->Last);
 }
 
-void vtkLightShaftRefinement::KeepSampling(Signature& signature) const
-{
-  if (this->HasLast)
-  {
-    signature.Sampling = this->Last.Sampling;
-  }
-}
-
 vtkLightShaftRefinement::Signature vtkLightShaftRefinement::Sign(const vtkLightShaftFrame& frame,
   const std::vector<vtkLight*>& lights,
   vtkMTimeType imagesTime)

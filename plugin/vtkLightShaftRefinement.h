@@ -72,8 +72,6 @@ public:
   static void SetSampling(Signature& signature, const vtkLightShaftFrame& frame);
   /// Whether `signature` shows the scene of the last frame's, the same way (sampling aside).
   bool IsStill(const Signature& signature) const;
-  /// Give `signature` the last frame's sampling (a still view keeps its history).
-  void KeepSampling(Signature& signature) const;
 
   /**
    * Start the frame: a new history when `signature` differs from the last one's or refinement

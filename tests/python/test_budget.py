@@ -17,6 +17,7 @@ from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkInteractionStyle import vtkInteractorStyleTrackballCamera
 from vtkmodules.vtkRenderingUI import vtkGenericRenderWindowInteractor
 
+import lightshaft_reference as ref
 import render_helpers as rh
 
 WIDTH, HEIGHT = 200, 150
@@ -183,3 +184,65 @@ def test_a_new_budget_for_a_still_view_chooses_again():
         assert shafts.GetLastFrame().GetDownsampleFactor() == 4
     finally:
         window.SetDesiredUpdateRate(0.0001)
+
+
+CHEAPEST = dict(Method=vtkLightShaftPass.EPIPOLAR, NumberOfSteps=16, Jitter=False, BlurRadius=0,
+                DownsampleFactor=1, ShadowMapSize=512, InterleaveSize=1, EpipolarLines=128,
+                EpipolarSamples=256, EpipolarStep=8)  # the ladder's "E16 l128 s256 k8 m512"
+
+
+def move_under_rate(renderer, window, shafts, rate, frames=4):
+    """The camera turned `frames` times while an interactor's rate holds; then the rate back to
+    rest. Returns the last moving frame's (setting, factor, predicted error, in-scatter)."""
+    try:
+        window.SetDesiredUpdateRate(rate)
+        for _ in range(frames):
+            renderer.GetActiveCamera().Azimuth(0.5)
+            window.Render()
+    finally:
+        window.SetDesiredUpdateRate(0.0001)
+    frame = shafts.GetLastFrame()
+    return (setting_name(shafts), frame.GetDownsampleFactor(), frame.GetPredictedError(),
+            rh.in_scatter(shafts))
+
+
+@pytest.mark.parametrize("refine", [False, True], ids=["plain", "refined"])
+def test_a_still_view_is_never_worse_than_the_moving_frames(refine):
+    # The still setting is the ladder's cheapest; a generous budget chose better while moving.
+    # When the camera stops, the still view keeps the budget's setting (the model predicts it
+    # better): its picture is the moving frame's accuracy, not the cheap setting's.
+    renderer, window, info, shafts = budget_scene(**CHEAPEST)
+    shafts.SetProgressiveRefinement(refine)
+    name, factor, predicted, moving = move_under_rate(renderer, window, shafts, rate=0.5)
+    assert factor == 1 and name != "E16 l128 s256 k8 m512" and predicted > 0.0
+    window.Render()  # the camera stopped
+    frame = shafts.GetLastFrame()
+    assert frame.GetTimeBudget() == 0.0
+    assert (setting_name(shafts), frame.GetDownsampleFactor()) == (name, 1)
+    assert frame.GetPredictedError() == predicted
+    exact = rh.scene_reference(renderer, shafts)
+    still_error = ref.relative_rms_error(rh.in_scatter(shafts), exact)[0]
+    moving_error = ref.relative_rms_error(moving, exact)[0]
+    assert still_error <= moving_error * 1.0001
+    # The cheap setting itself, on the same view, is worse: keeping the choice mattered.
+    cheap = vtkLightShaftPass()
+    cheap.GetMedium().SetScatteringCoefficient(0.05)
+    for key, value in CHEAPEST.items():
+        getattr(parameter_owner(cheap, key), "Set" + key)(value)
+    renderer.SetPass(cheap)
+    window.Render()
+    assert ref.relative_rms_error(rh.in_scatter(cheap), exact)[0] > 1.2 * still_error
+
+
+def test_a_still_view_takes_its_own_setting_where_the_model_cannot_compare():
+    # Moving under a budget nothing fits (quarter resolution: the model predicts nothing), the
+    # still view gets the setting asked for, as it would without a budget.
+    renderer, window, info, shafts = budget_scene(**CHEAPEST)
+    shafts.SetNumberOfSteps(256)
+    shafts.SetMethod(vtkLightShaftPass.RAY_MARCH)
+    shafts.SetShadowMapSize(2048)  # the ladder's "M256 i1 m2048"
+    name, factor, _, _ = move_under_rate(renderer, window, shafts, rate=1e6)
+    assert factor == 4
+    window.Render()
+    assert setting_name(shafts) == "M256 i1 m2048"
+    assert shafts.GetLastFrame().GetDownsampleFactor() == 1

@@ -6,7 +6,8 @@ Scene: scenes.window_room at 160x120 (the README's window, σ_s 0.05), Interacti
 - once complete, the in-scatter is the reference's to float32 rounding (relative 1e-6 of the
   peak), the report says COMPLETE, fraction 1, predicted error 0, converged;
 - a finished still view renders the same picture again, bit for bit;
-- while it runs the view keeps its estimate (no estimate computed, never worse than it);
+- while it runs, refinement goes on and the finished tiles replace its estimates; the first
+  still frame after frames under a budget shows their picture again (no long frame);
 - any change (camera, medium, light, a prop, the viewport's size) stops it and starts again from
   the new view's estimate;
 - a scene the reference cannot model (an actor drawn as wireframe) is refined as without it,
@@ -160,3 +161,27 @@ def test_off_without_refinement_and_when_released():
     renderer.SetPass(None)
     del shafts  # a pass deleted while its workers run joins them
     window.Render()
+
+
+def test_the_first_still_frame_after_a_budget_shows_the_moving_picture():
+    # An interactor's rate while the camera turns, then rest: the frame that starts the finish
+    # computes no estimate (the budget's picture again, bit for bit, at no shafts' cost), and
+    # the next one refines from there.
+    renderer, window, shafts, _ = finishing_scene()
+    try:
+        window.SetDesiredUpdateRate(15.0)
+        for _ in range(3):
+            renderer.GetActiveCamera().Azimuth(0.5)
+            window.Render()
+        moving = rh.in_scatter(shafts)
+        assert shafts.GetLastFrame().GetTimeBudget() > 0.0
+    finally:
+        window.SetDesiredUpdateRate(0.0001)
+    window.Render()
+    frame = shafts.GetLastFrame()
+    assert frame.GetExactFinishState() == RUNNING
+    assert frame.GetInScatterReused()
+    assert np.array_equal(rh.in_scatter(shafts), moving)
+    render_until_complete(window, shafts)
+    exact = rh.scene_reference(renderer, shafts)
+    assert np.abs(rh.in_scatter(shafts) - exact).max() <= 1e-6 * exact.max()
