@@ -89,8 +89,9 @@ public:
      * Where the light's visibility changes along origin + t dir between tFrom and tTo, where
      * it differs (vtkLightShaftRayIntegrator::Transition): the end of the shadow volumes of
      * the triangles that shadow one end, clipped to the ray, checked a hair beyond and taken
-     * further (and the rest halved) while others go on shadowing it. Exact visibility of opaque surfaces only: false
-     * with translucent ones or the shadow map (and where a triangle's volume is degenerate).
+     * further (and the rest halved) while others go on shadowing it. Exact visibility of opaque
+     * surfaces only: false with translucent ones or the shadow map (and where a triangle's volume
+     * is degenerate).
      */
     bool Transition(const vtkLightShaftRayIntegrator::Model& light,
       const Vec& origin,
