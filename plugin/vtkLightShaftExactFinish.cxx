@@ -60,12 +60,20 @@ struct vtkLightShaftExactFinish::Work
   std::atomic<int> Next{ 0 };
   std::atomic<bool> Cancel{ false };
   std::mutex Mutex;
-  /// Tiles finished and not yet shown: (index, RGB doubles row by row).
-  std::vector<std::pair<int, std::vector<double>>> Done;
+  /// The finished tiles' RGBA texels (alpha 1), the picture's rows, float: allocated by the
+  /// render thread before the workers start, written by them tile by tile, uploaded from
+  /// there. No memory passes between the threads: the render thread never frees what a worker
+  /// allocated, which would wait for that worker's malloc arena, held by a thread that runs
+  /// only when rendering leaves it time.
+  std::vector<float> Texels;
+  int Width = 0;
+  /// Tiles finished and not yet shown (capacity reserved for all: no allocation).
+  std::vector<int> Done;
 
   void Run()
   {
     YieldToRendering();
+    std::vector<double> rgb;
     for (;;)
     {
       const int index = this->Next++;
@@ -74,7 +82,7 @@ struct vtkLightShaftExactFinish::Work
         return;
       }
       const Tile& tile = this->Tiles[index];
-      std::vector<double> rgb(3 * static_cast<size_t>(tile.W) * tile.H, 0.0);
+      rgb.assign(3 * static_cast<size_t>(tile.W) * tile.H, 0.0);
       for (int row = 0; row < tile.H; ++row)
       {
         if (this->Cancel)
@@ -84,8 +92,20 @@ struct vtkLightShaftExactFinish::Work
         const vtkIdType first = vtkIdType(tile.Y + row) * this->Job.GetWidth() + tile.X;
         this->Job.Integrate(first, first + tile.W, rgb.data() + 3 * size_t(row) * tile.W, nullptr);
       }
+      for (int row = 0; row < tile.H; ++row)
+      {
+        float* out = this->Texels.data() + 4 * (size_t(tile.Y + row) * this->Width + tile.X);
+        for (int x = 0; x < tile.W; ++x)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            out[4 * x + c] = static_cast<float>(rgb[3 * (size_t(row) * tile.W + x) + c]);
+          }
+          out[4 * x + 3] = 1.0f;
+        }
+      }
       std::lock_guard<std::mutex> lock(this->Mutex);
-      this->Done.emplace_back(index, std::move(rgb));
+      this->Done.push_back(index);
     }
   }
 };
@@ -171,6 +191,9 @@ void vtkLightShaftExactFinish::Start(vtkLightShaftFrame& frame,
   this->Size[1] = frame.Size[1];
   this->OrderTiles(frame, estimate);
   work->Tiles = this->Tiles;
+  work->Width = this->Size[0];
+  work->Texels.assign(4 * size_t(this->Size[0]) * this->Size[1], 0.0f);
+  work->Done.reserve(this->Tiles.size());
 
   // Nothing exact yet: alpha 0 everywhere.
   vtkTextureObject* exact =
@@ -283,57 +306,51 @@ void vtkLightShaftExactFinish::Stop()
 // into `shown` too when given.
 void vtkLightShaftExactFinish::Upload(vtkLightShaftFrame& frame, vtkTextureObject* shown)
 {
-  std::vector<std::pair<int, std::vector<double>>> done;
   {
     // Never wait for a worker: one holding the lock may have been set aside for rendering
     // (it runs at idle priority); its tiles come with a later frame.
     std::unique_lock<std::mutex> lock(this->Shared->Mutex, std::try_to_lock);
-    if (lock.owns_lock())
+    if (!lock.owns_lock())
     {
-      done.swap(this->Shared->Done);
+      return;
     }
+    this->Finished.assign(this->Shared->Done.begin(), this->Shared->Done.end());
+    this->Shared->Done.clear();
   }
-  if (done.empty())
+  if (this->Finished.empty())
   {
     return;
   }
   vtkTextureObject* exact =
     this->Exact.Ensure(frame.Window, TextureKind::RGBA32F, this->Size[0], this->Size[1]);
-  exact->Bind();
   GLint unpackAlignment = 4;
   GLint unpackRowLength = 0;
   glGetIntegerv(GL_UNPACK_ALIGNMENT, &unpackAlignment);
   glGetIntegerv(GL_UNPACK_ROW_LENGTH, &unpackRowLength);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-  for (const auto& finished : done)
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, this->Size[0]);
+  for (vtkTextureObject* texture : { exact, shown })
   {
-    const Tile& tile = this->Tiles[finished.first];
-    const size_t pixels = static_cast<size_t>(tile.W) * tile.H;
-    this->Texels.resize(4 * pixels);
-    for (size_t p = 0; p < pixels; ++p)
+    if (!texture)
     {
-      for (int c = 0; c < 3; ++c)
-      {
-        this->Texels[4 * p + c] = static_cast<float>(finished.second[3 * p + c]);
-      }
-      this->Texels[4 * p + 3] = 1.0f;
+      continue;
     }
-    for (vtkTextureObject* texture : { exact, shown })
+    texture->Bind();
+    for (int index : this->Finished)
     {
-      if (texture)
-      {
-        texture->Bind();
-        glTexSubImage2D(
-          GL_TEXTURE_2D, 0, tile.X, tile.Y, tile.W, tile.H, GL_RGBA, GL_FLOAT, this->Texels.data());
-      }
+      const Tile& tile = this->Tiles[index];
+      const float* texels =
+        this->Shared->Texels.data() + 4 * (size_t(tile.Y) * this->Size[0] + tile.X);
+      glTexSubImage2D(GL_TEXTURE_2D, 0, tile.X, tile.Y, tile.W, tile.H, GL_RGBA, GL_FLOAT, texels);
     }
-    this->FinishedPixels += static_cast<long long>(pixels);
-    ++this->Shown;
   }
+  for (int index : this->Finished)
+  {
+    this->FinishedPixels += static_cast<long long>(this->Tiles[index].W) * this->Tiles[index].H;
+  }
+  this->Shown += static_cast<int>(this->Finished.size());
   glPixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, unpackRowLength);
-  exact->Deactivate();
 }
 
 //------------------------------------------------------------------------------

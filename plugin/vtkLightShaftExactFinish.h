@@ -119,7 +119,7 @@ private:
   bool MixedValid = false;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkLightShaftResources::FullScreenPass Mix;
-  std::vector<float> Texels; ///< one tile's, for its upload
+  std::vector<int> Finished; ///< the tiles the last Upload() took
 };
 
 #endif

@@ -711,8 +711,13 @@ void vtkLightShaftPass::Internals::PublishRefinement(vtkLightShaftFrame& frame)
   using State = vtkLightShaftExactFinish::State;
   const State finish = this->Finish.GetState();
   frame.Statistics.RefinementEstimates = this->Refinement.GetEstimates();
+  // With the finish asked for, the picture is final only once it completes (or the scene turns
+  // out to be one it cannot model): a view converged at its first frame is not yet still.
+  const vtkLightShaftParameters& p = frame.Parameters;
+  const bool awaited =
+    p.ExactFinish && p.ProgressiveRefinement && (finish == State::Off || finish == State::Running);
   frame.Statistics.RefinementConverged =
-    finish == State::Complete || (this->Refinement.IsConverged() && finish != State::Running);
+    finish == State::Complete || (this->Refinement.IsConverged() && !awaited);
   frame.Statistics.ExactFinishState = static_cast<int>(finish);
   frame.Statistics.ExactFinishFraction = this->Finish.GetFinishedFraction();
   frame.Statistics.ExactFinishProblem = this->Finish.GetProblem();

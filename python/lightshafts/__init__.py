@@ -100,24 +100,39 @@ def parameter_owner(shafts, name):
 def render_converged(window, shafts, max_frames=None):
     """Render `window` until the still picture of `shafts` (a vtkLightShaftPass) is converged:
     switches its ProgressiveRefinement on (and leaves it on) and renders until
-    GetLastFrame().GetRefinementConverged(), at most `max_frames` frames (default: its
-    RefinementFrames).
+    GetLastFrame().GetRefinementConverged(), at most `max_frames` estimates (default: its
+    RefinementFrames). With ExactFinish on it also waits for the exact finish to complete,
+    rendering every 50 ms once the estimates are done.
     Returns the number of frames rendered. For offscreen batch renders:
 
         frames = lightshafts.render_converged(window, shafts)
         lightshafts.write_png(window, "still.png")
     """
+    import time
+
     shafts.ProgressiveRefinementOn()
     limit = shafts.GetRefinementFrames() if max_frames is None else int(max_frames)
-    frames = 0
-    while frames < max(limit, 1):
+    frames = estimates = 0
+    while estimates < max(limit, 1):
         window.Render()
         frames += 1
         # Converged, or nothing to refine (no shafts were computed).
         frame = shafts.GetLastFrame()
         if frame.GetRefinementConverged() or frame.GetRefinementEstimates() == 0:
             break
+        if _finishing_only(shafts):
+            time.sleep(0.05)  # the finish's threads at work; no estimate was made
+        else:
+            estimates += 1
     return frames
+
+
+def _finishing_only(shafts):
+    """Whether the last frame of `shafts` only showed the exact finish's new tiles: the finish
+    runs and no estimate was computed (refinement is done, or the finish just began)."""
+    frame = shafts.GetLastFrame()
+    return (frame.GetExactFinishState() == vtkLightShaftFrameReport.EXACT_FINISH_RUNNING
+            and frame.GetInScatterReused())
 
 
 def refine_while_still(interactor, shafts):
@@ -135,9 +150,7 @@ def refine_while_still(interactor, shafts):
         if not pending:
             # While only the exact finish runs, its threads need the processor time: look
             # for finished tiles ten times a second.
-            finishing = (shafts.GetLastFrame().GetExactFinishState()
-                         == vtkLightShaftFrameReport.EXACT_FINISH_RUNNING)
-            pending.append(interactor.CreateOneShotTimer(100 if finishing else 1))
+            pending.append(interactor.CreateOneShotTimer(100 if _finishing_only(shafts) else 1))
 
     def on_timer(caller, event):
         if pending:

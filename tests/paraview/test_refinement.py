@@ -8,6 +8,10 @@ script sees them through the view's information properties.
      budget: LastTimeBudget is the time ParaView allocates it (1/15 s in 5.11, 1/20 s in 5.13
      and 6.1), under a second.
   3. The still render after it refines again from one estimate and converges.
+  4. ExactFinish: a still view's float64 reference finishes in the background (ExactFinishState
+     1, ExactFinishFraction growing); the renders until RefinementConverged end it complete
+     (ExactFinishState 2, fraction 1, LastPredictedError 0), and a change of the camera starts
+     it again.
 Usage: pvbatch test_refinement.py OUTPUT_DIR
 """
 
@@ -64,7 +68,42 @@ def main():
                         "interaction's")
 
     refine(view, failures, "still after the interaction")
+    exact_finish(view, failures)
     return scene.report(failures)
+
+
+def finish_state(view):
+    view.UpdatePropertyInformation()
+    return (view.GetPropertyValue("ExactFinishState"),
+            view.GetPropertyValue("ExactFinishFraction"),
+            view.GetPropertyValue("RefinementConverged"),
+            view.GetPropertyValue("LastPredictedError"))
+
+
+def exact_finish(view, failures):
+    import time
+    from paraview import simple
+    view.ExactFinish = 1
+    for attempt in ("first", "after a camera change"):
+        if attempt != "first":
+            view.CameraPosition = [0.5, 3.0, 14.0]
+        seen = []
+        start = time.monotonic()
+        while time.monotonic() - start < 120.0:
+            simple.Render(view)
+            state = finish_state(view)
+            seen.append(state[0])
+            if state[2]:
+                break
+            time.sleep(0.05)
+        state, fraction, converged, predicted = finish_state(view)
+        print(f"exact finish {attempt}: {len(seen)} renders, states {sorted(set(seen))}, "
+              f"fraction {fraction}, predicted error {predicted}")
+        if 1 not in seen or (state, fraction, converged, predicted) != (2, 1.0, 1, 0.0):
+            failures.append(f"exact finish {attempt}: states {sorted(set(seen))}, last "
+                            f"{(state, fraction, converged, predicted)}, not complete "
+                            "(2, 1, 1, 0)")
+    view.ExactFinish = 0
 
 
 if __name__ == "__main__":

@@ -185,3 +185,15 @@ def test_the_first_still_frame_after_a_budget_shows_the_moving_picture():
     render_until_complete(window, shafts)
     exact = rh.scene_reference(renderer, shafts)
     assert np.abs(rh.in_scatter(shafts) - exact).max() <= 1e-6 * exact.max()
+
+
+def test_render_converged_waits_for_the_finish():
+    # The batch helper renders until the picture is final: with ExactFinish, the reference's.
+    from lightshafts import render_converged
+    renderer, window, shafts, _ = finishing_scene()
+    frames = render_converged(window, shafts)
+    frame = shafts.GetLastFrame()
+    assert frame.GetExactFinishState() == COMPLETE and frame.GetRefinementConverged()
+    assert frames >= 2
+    exact = rh.scene_reference(renderer, shafts)
+    assert np.abs(rh.in_scatter(shafts) - exact).max() <= 1e-6 * exact.max()

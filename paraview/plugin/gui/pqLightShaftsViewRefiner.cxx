@@ -95,6 +95,10 @@ void pqLightShaftsViewRefiner::renderEnded(vtkObject*, unsigned long, void* call
   const bool converged = FetchInformation(this->Proxy, "RefinementConverged") != 0;
   if (estimates > 0 && !converged)
   {
+    // While the exact finish runs, its threads need the processor time: look for finished
+    // tiles ten times a second.
+    const bool finishing = FetchInformation(this->Proxy, "ExactFinishState") == 1;
+    this->Timer.setInterval(finishing ? FinishDelayMilliseconds : RefineDelayMilliseconds);
     vtkVLogF(PARAVIEW_LOG_RENDERING_VERBOSITY(),
       "LightShafts: still view refining after %d estimates, rendering again",
       estimates);

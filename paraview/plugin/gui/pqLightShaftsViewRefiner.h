@@ -40,6 +40,8 @@ public:
 
   /// Milliseconds from a still render that left the shafts refining to the next render.
   static constexpr int RefineDelayMilliseconds = 10;
+  /// The same while the exact finish runs: its worker threads need the processor time.
+  static constexpr int FinishDelayMilliseconds = 100;
 
 private:
   /// The view proxy's EndEvent: its call data says whether the render was interactive.

@@ -234,6 +234,21 @@ double vtkPVLightShaftsView::GetLastTimeBudget()
   return this->Impl->Shafts->GetLastFrame()->GetTimeBudget();
 }
 
+double vtkPVLightShaftsView::GetLastPredictedError()
+{
+  return this->Impl->Shafts->GetLastFrame()->GetPredictedError();
+}
+
+int vtkPVLightShaftsView::GetExactFinishState()
+{
+  return this->Impl->Shafts->GetLastFrame()->GetExactFinishState();
+}
+
+double vtkPVLightShaftsView::GetExactFinishFraction()
+{
+  return this->Impl->Shafts->GetLastFrame()->GetExactFinishFraction();
+}
+
 const char* vtkPVLightShaftsView::GetLastShaderVariant()
 {
   return this->Impl->Shafts->GetLastFrame()->GetShaderVariant();
@@ -519,6 +534,11 @@ void vtkPVLightShaftsView::SetProgressiveRefinement(bool refine)
 void vtkPVLightShaftsView::SetRefinementFrames(int frames)
 {
   this->Impl->Shafts->SetRefinementFrames(frames);
+}
+
+void vtkPVLightShaftsView::SetExactFinish(bool finish)
+{
+  this->Impl->Shafts->SetExactFinish(finish);
 }
 
 //------------------------------------------------------------------------------

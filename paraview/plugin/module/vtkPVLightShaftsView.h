@@ -56,12 +56,17 @@ public:
   ///@{
   /**
    * What the last render did (vtkLightShaftFrameReport's GetRefinementConverged,
-   * GetRefinementEstimates, GetTimeBudget), for scripts: the view's information
-   * properties RefinementConverged, RefinementEstimates and LastTimeBudget.
+   * GetRefinementEstimates, GetTimeBudget, GetPredictedError, GetExactFinishState and
+   * GetExactFinishFraction), for scripts: the view's information properties
+   * RefinementConverged, RefinementEstimates, LastTimeBudget, LastPredictedError,
+   * ExactFinishState and ExactFinishFraction.
    */
   bool GetRefinementConverged();
   int GetRefinementEstimates();
   double GetLastTimeBudget();
+  double GetLastPredictedError();
+  int GetExactFinishState();
+  double GetExactFinishFraction();
   ///@}
 
   ///@{
@@ -164,7 +169,8 @@ public:
   ///@{
   /**
    * Interaction (forwarded to vtkLightShaftPass: SetTimeBudget, SetUseAllocatedRenderTime,
-   * SetProgressiveRefinement, SetRefinementFrames; same ranges and defaults, except that the
+   * SetProgressiveRefinement, SetRefinementFrames, SetExactFinish; same ranges and defaults,
+   * except that the
    * view's ProgressiveRefinement property is on by default: the GUI's pqLightShaftsRefinement
    * renders a still view until it converges).
    */
@@ -172,6 +178,7 @@ public:
   void SetUseAllocatedRenderTime(bool use);
   void SetProgressiveRefinement(bool refine);
   void SetRefinementFrames(int frames);
+  void SetExactFinish(bool finish);
   ///@}
 
   ///@{
