@@ -4,6 +4,7 @@
 #include "vtkLightShaftOpenGL.h"
 #include "vtkLightShaftPass.h"
 #include "vtkLightShaftReferenceJob.h"
+#include "vtkLightShaftReferenceScene.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -24,6 +25,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <mutex>
 #include <numeric>
 #include <utility>
@@ -59,6 +62,34 @@ struct vtkLightShaftExactFinish::Work
   std::vector<Tile> Tiles;
   std::atomic<int> Next{ 0 };
   std::atomic<bool> Cancel{ false };
+  /// Set while the render thread renders a frame: the workers wait, so that the frame has the
+  /// processors (and their caches) to itself.
+  std::atomic<bool> Held{ false };
+  std::mutex HoldMutex;
+  std::condition_variable Resumed;
+
+  void WaitWhileHeld()
+  {
+    if (this->Held)
+    {
+      std::unique_lock<std::mutex> lock(this->HoldMutex);
+      // At most a second: a frame that long is no interactive frame, and the finish goes on
+      // even where no window event lets it.
+      this->Resumed.wait_for(
+        lock, std::chrono::seconds(1), [this]() { return !this->Held || this->Cancel; });
+    }
+  }
+  void SetHeld(bool held)
+  {
+    {
+      std::lock_guard<std::mutex> lock(this->HoldMutex);
+      this->Held = held;
+    }
+    if (!held)
+    {
+      this->Resumed.notify_all();
+    }
+  }
   std::mutex Mutex;
   /// The finished tiles' RGBA texels (alpha 1), the picture's rows, float: allocated by the
   /// render thread before the workers start, written by them tile by tile, uploaded from
@@ -85,6 +116,7 @@ struct vtkLightShaftExactFinish::Work
       rgb.assign(3 * static_cast<size_t>(tile.W) * tile.H, 0.0);
       for (int row = 0; row < tile.H; ++row)
       {
+        this->WaitWhileHeld();
         if (this->Cancel)
         {
           return; // a change of the view: within a row of pixels
@@ -138,16 +170,23 @@ std::string vtkLightShaftExactFinish::Unmodelled(vtkRenderer* renderer)
       continue; // overlays are not in the medium; the reference models a volume
     }
     auto* actor = vtkActor::SafeDownCast(prop);
-    auto* polydata = actor && actor->GetMapper()
-                       ? vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0))
-                       : nullptr;
-    if (!polydata)
+    bool polygonal = false;
+    const std::vector<vtkPolyData*> pieces =
+      actor ? vtkLightShaftReferenceScene::Surfaces(actor, polygonal) : std::vector<vtkPolyData*>();
+    if (!polygonal)
     {
       return std::string("a ") + prop->GetClassName() + " without polygonal input";
     }
+    if (pieces.empty())
+    {
+      continue; // draws nothing
+    }
+    const bool lines = std::any_of(pieces.begin(),
+      pieces.end(),
+      [](vtkPolyData* piece)
+      { return piece->GetNumberOfVerts() > 0 || piece->GetNumberOfLines() > 0; });
     if (actor->GetProperty()->GetOpacity() > 0.0 &&
-        (actor->GetProperty()->GetRepresentation() != VTK_SURFACE ||
-          polydata->GetNumberOfVerts() > 0 || polydata->GetNumberOfLines() > 0))
+        (actor->GetProperty()->GetRepresentation() != VTK_SURFACE || lines))
     {
       return "an actor drawn with points or lines";
     }
@@ -285,6 +324,7 @@ void vtkLightShaftExactFinish::Stop()
   if (this->Shared)
   {
     this->Shared->Cancel = true;
+    this->Shared->SetHeld(false);
   }
   for (std::thread& worker : this->Workers)
   {
@@ -424,6 +464,15 @@ vtkTextureObject* vtkLightShaftExactFinish::Apply(vtkLightShaftFrame& frame,
   this->MixedValid = true;
   this->MixedEstimate = estimate;
   return mixed;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftExactFinish::Hold(bool held)
+{
+  if (this->Shared)
+  {
+    this->Shared->SetHeld(held);
+  }
 }
 
 //------------------------------------------------------------------------------

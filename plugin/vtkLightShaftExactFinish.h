@@ -59,6 +59,9 @@ public:
   void Start(vtkLightShaftFrame& frame, vtkLightShaftPass* pass, vtkTextureObject* estimate);
   /// Cancel the workers and forget what they computed: the next Start() begins again.
   void Stop();
+  /// Hold the workers (within a row of pixels; a second at most) while a frame renders, or let
+  /// them go on.
+  void Hold(bool held);
   /// Off: become Unsupported when the reference cannot model `renderer`'s scene.
   void Check(vtkRenderer* renderer);
 

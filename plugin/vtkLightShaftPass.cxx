@@ -124,8 +124,14 @@ void vtkLightShaftPass::Internals::Track(vtkOpenGLRenderWindow* window)
       self->ReleaseOwnResources(dying);
       self->Window = nullptr;
       self->WindowDeletedTag = 0;
+      self->WindowRenderedTag = 0;
     });
   this->WindowDeletedTag = window->AddObserver(vtkCommand::DeleteEvent, this->WindowDeleted);
+  // The frame is on the screen: the exact finish's workers may go on.
+  this->WindowRendered->SetClientData(this);
+  this->WindowRendered->SetCallback([](vtkObject*, unsigned long, void* clientData, void*)
+    { static_cast<Internals*>(clientData)->Finish.Hold(false); });
+  this->WindowRenderedTag = window->AddObserver(vtkCommand::EndEvent, this->WindowRendered);
 }
 
 void vtkLightShaftPass::Internals::Untrack()
@@ -133,8 +139,10 @@ void vtkLightShaftPass::Internals::Untrack()
   if (this->Window && this->WindowDeletedTag)
   {
     this->Window->RemoveObserver(this->WindowDeletedTag);
+    this->Window->RemoveObserver(this->WindowRenderedTag);
   }
   this->WindowDeletedTag = 0;
+  this->WindowRenderedTag = 0;
   this->Window = nullptr;
 }
 
@@ -486,6 +494,8 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   }
   else
   {
+    // The exact finish's workers wait while the frame renders, until the window's EndEvent.
+    impl.Finish.Hold(true);
     impl.RenderShafts(frame, delegate, lights, this->ShadowSurfaces);
   }
   impl.Scene.FinishFrame(frame);

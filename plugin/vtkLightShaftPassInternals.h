@@ -48,6 +48,8 @@ public:
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   vtkNew<vtkCallbackCommand> WindowDeleted;
   unsigned long WindowDeletedTag = 0;
+  vtkNew<vtkCallbackCommand> WindowRendered;
+  unsigned long WindowRenderedTag = 0;
   bool WarnedPointCookie = false;
   bool WarnedFieldTarget = false;
   int FrameCounter = 0;

@@ -2,6 +2,8 @@
 
 #include "vtkActor.h"
 #include "vtkCellArray.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
@@ -16,6 +18,7 @@
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
 #include "vtkTriangleFilter.h"
@@ -64,11 +67,68 @@ void vtkLightShaftReferenceScene::Capture(vtkRenderer* renderer)
       }
     }
     actor->GetMapper()->Update();
-    auto* polydata = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
-    if (!polydata || polydata->GetNumberOfCells() == 0)
+    bool polygonal = false;
+    std::vector<vtkPolyData*> pieces = Surfaces(actor, polygonal);
+    if (pieces.empty())
     {
       continue;
     }
+    Occluder occluder;
+    occluder.Transmittance = transmittance;
+    occluder.Kept = 1.0 - opacity;
+    const int owner = static_cast<int>(this->Occluders.size());
+    this->Occluders.push_back(occluder);
+    vtkLightShaftTriangleTree& tree = opacity < 1.0 ? this->Translucent : this->Opaque;
+    for (vtkPolyData* piece : pieces)
+    {
+      this->AddTriangles(piece, actor, owner, tree);
+    }
+  }
+  this->Opaque.Build();
+  this->Translucent.Build();
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkPolyData*> vtkLightShaftReferenceScene::Surfaces(vtkActor* actor, bool& polygonal)
+{
+  std::vector<vtkPolyData*> pieces;
+  vtkDataObject* input =
+    actor->GetMapper() ? actor->GetMapper()->GetInputDataObject(0, 0) : nullptr;
+  polygonal = !input || vtkPolyData::SafeDownCast(input); // no input draws nothing
+  if (input && polygonal)
+  {
+    pieces.push_back(vtkPolyData::SafeDownCast(input));
+  }
+  else if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    // A composite dataset (ParaView's representations): its leaves, all of them polygonal.
+    polygonal = true;
+    vtkSmartPointer<vtkCompositeDataIterator> leaf;
+    leaf.TakeReference(composite->NewIterator());
+    for (leaf->InitTraversal(); !leaf->IsDoneWithTraversal(); leaf->GoToNextItem())
+    {
+      auto* piece = vtkPolyData::SafeDownCast(leaf->GetCurrentDataObject());
+      polygonal = polygonal && (piece || !leaf->GetCurrentDataObject());
+      if (piece)
+      {
+        pieces.push_back(piece);
+      }
+    }
+  }
+  pieces.erase(std::remove_if(pieces.begin(),
+                 pieces.end(),
+                 [](vtkPolyData* piece) { return piece->GetNumberOfCells() == 0; }),
+    pieces.end());
+  return pieces;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftReferenceScene::AddTriangles(vtkPolyData* polydata,
+  vtkActor* actor,
+  int owner,
+  vtkLightShaftTriangleTree& tree)
+{
+  {
     vtkNew<vtkTransform> transform;
     transform->SetMatrix(actor->GetMatrix());
     vtkNew<vtkTransformPolyDataFilter> toWorld;
@@ -79,16 +139,6 @@ void vtkLightShaftReferenceScene::Capture(vtkRenderer* renderer)
     triangles->PassVertsOff();
     triangles->PassLinesOff();
     triangles->Update();
-    if (triangles->GetOutput()->GetNumberOfCells() == 0)
-    {
-      continue;
-    }
-    Occluder occluder;
-    occluder.Transmittance = transmittance;
-    occluder.Kept = 1.0 - opacity;
-    const int owner = static_cast<int>(this->Occluders.size());
-    this->Occluders.push_back(occluder);
-    vtkLightShaftTriangleTree& tree = opacity < 1.0 ? this->Translucent : this->Opaque;
     vtkPolyData* mesh = triangles->GetOutput();
     vtkCellArray* polys = mesh->GetPolys();
     vtkNew<vtkIdList> ids;
@@ -107,8 +157,6 @@ void vtkLightShaftReferenceScene::Capture(vtkRenderer* renderer)
       tree.Add(corners[0], corners[1], corners[2], owner);
     }
   }
-  this->Opaque.Build();
-  this->Translucent.Build();
 }
 
 //------------------------------------------------------------------------------

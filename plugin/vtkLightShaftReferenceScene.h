@@ -17,9 +17,11 @@
 #include <utility> // For the camera leg's crossings
 #include <vector>  // For the occluders and crossings
 
+class vtkActor;
 class vtkImageData;
 class vtkLightShaftPass;
 class vtkMatrix4x4;
+class vtkPolyData;
 class vtkRenderer;
 
 /**
@@ -52,6 +54,15 @@ public:
 
   /// Capture `renderer`'s visible, opaque actors with polygonal input.
   void Capture(vtkRenderer* renderer);
+
+  /**
+   * The polygonal pieces of `actor`'s mapper input, without cells left out: the input itself
+   * when it is a vtkPolyData, or the leaves of a composite dataset (ParaView's representations
+   * draw one; block visibility and per-block colours are not read). `polygonal` says whether
+   * every piece is a vtkPolyData (false: the input, or a leaf, is another kind of data; true
+   * for a mapper without input, which draws nothing).
+   */
+  static std::vector<vtkPolyData*> Surfaces(vtkActor* actor, bool& polygonal);
 
   /**
    * Decide visibility with the last shadow map of `pass`'s `index`-th used light, whose model
@@ -167,6 +178,11 @@ private:
   void operator=(const vtkLightShaftReferenceScene&) = delete;
 
   bool ShadowMapVisible(const Vec& x, const vtkLightShaftRayIntegrator::Model& light) const;
+  /// The triangles of `polydata`, placed by `actor`'s matrix, into `tree` as surface `owner`.
+  static void AddTriangles(vtkPolyData* polydata,
+    vtkActor* actor,
+    int owner,
+    vtkLightShaftTriangleTree& tree);
 
   struct Occluder
   {

@@ -153,6 +153,8 @@ def table(args, off, on):
             off["reused"] if result is off else [])
         lines.append(f"- Still frames {name}: computing an estimate {stats(estimates)}; "
                      f"showing the picture again {stats(shown)}.")
+    lines.append(f"- With the finish, after it completed (the same view, no worker running): "
+                 f"showing the picture again {stats(on['reused'])}.")
     lines.append("")
     for bound in (0.005, 0.001):
         lines.append(f"Within {100 * bound:g}% of the reference: without the finish "

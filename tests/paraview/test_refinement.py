@@ -102,7 +102,7 @@ def exact_finish(view, failures):
         if 1 not in seen or (state, fraction, converged, predicted) != (2, 1.0, 1, 0.0):
             failures.append(f"exact finish {attempt}: states {sorted(set(seen))}, last "
                             f"{(state, fraction, converged, predicted)}, not complete "
-                            "(2, 1, 1, 0)")
+                            f"(2, 1, 1, 0): {view.GetPropertyValue('ExactFinishProblem')}")
     view.ExactFinish = 0
 
 

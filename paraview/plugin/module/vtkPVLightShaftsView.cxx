@@ -249,6 +249,11 @@ double vtkPVLightShaftsView::GetExactFinishFraction()
   return this->Impl->Shafts->GetLastFrame()->GetExactFinishFraction();
 }
 
+const char* vtkPVLightShaftsView::GetExactFinishProblem()
+{
+  return this->Impl->Shafts->GetLastFrame()->GetExactFinishProblem();
+}
+
 const char* vtkPVLightShaftsView::GetLastShaderVariant()
 {
   return this->Impl->Shafts->GetLastFrame()->GetShaderVariant();

@@ -56,10 +56,10 @@ public:
   ///@{
   /**
    * What the last render did (vtkLightShaftFrameReport's GetRefinementConverged,
-   * GetRefinementEstimates, GetTimeBudget, GetPredictedError, GetExactFinishState and
-   * GetExactFinishFraction), for scripts: the view's information properties
-   * RefinementConverged, RefinementEstimates, LastTimeBudget, LastPredictedError,
-   * ExactFinishState and ExactFinishFraction.
+   * GetRefinementEstimates, GetTimeBudget, GetPredictedError, GetExactFinishState,
+   * GetExactFinishFraction and GetExactFinishProblem), for scripts: the view's information
+   * properties RefinementConverged, RefinementEstimates, LastTimeBudget, LastPredictedError,
+   * ExactFinishState, ExactFinishFraction and ExactFinishProblem.
    */
   bool GetRefinementConverged();
   int GetRefinementEstimates();
@@ -67,6 +67,7 @@ public:
   double GetLastPredictedError();
   int GetExactFinishState();
   double GetExactFinishFraction();
+  const char* GetExactFinishProblem();
   ///@}
 
   ///@{
