@@ -9,6 +9,8 @@
 #   tools/measure.sh refinement        # a still view's progressive refinement (docs/refinement.md)
 #   tools/measure.sh budget            # the frame budget on a camera path, then refinement
 #                                      # (docs/budget.md)
+#   tools/measure.sh refinement-floor  # what the refined picture's floor is made of
+#                                      # (docs/refinement-floor.md; about 5 min)
 #   tools/measure.sh exact-finish      # a still view with and without the exact finish after
 #                                      # the camera stops (docs/exact-finish.md; --scene sphere:
 #                                      # docs/exact-finish-sphere.md; about 1 min each)
@@ -65,6 +67,7 @@ case "$what" in
   light-kinds) run tests/benchmarks/light_kinds.py --output-dir docs "$@" ;;
   refinement) run tests/benchmarks/refinement.py --output-dir docs "$@" ;;
   exact-finish) run tests/benchmarks/exact_finish.py --output-dir docs "$@" ;;
+  refinement-floor) run tests/benchmarks/refinement_floor.py --output-dir docs "$@" ;;
   budget) run tests/benchmarks/budget.py --output-dir docs "$@" ;;
   reprojection) run tests/benchmarks/reprojection_bound.py --output docs/reprojection.md "$@" ;;
   resolution-cost) run tests/benchmarks/resolution_cost.py "$@" ;;
