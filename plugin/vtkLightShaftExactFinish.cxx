@@ -72,11 +72,14 @@ struct vtkLightShaftExactFinish::Work
   {
     if (this->Held)
     {
-      std::unique_lock<std::mutex> lock(this->HoldMutex);
       // At most a second: a frame that long is no interactive frame, and the finish goes on
-      // even where no window event lets it.
-      this->Resumed.wait_for(
-        lock, std::chrono::seconds(1), [this]() { return !this->Held || this->Cancel; });
+      // where no window event lets it (the hold is then dropped until the next frame).
+      std::unique_lock<std::mutex> lock(this->HoldMutex);
+      if (!this->Resumed.wait_for(
+            lock, std::chrono::seconds(1), [this]() { return !this->Held || this->Cancel; }))
+      {
+        this->Held = false;
+      }
     }
   }
   void SetHeld(bool held)
