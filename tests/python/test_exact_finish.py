@@ -205,9 +205,10 @@ def test_a_composite_dataset_is_finished_as_its_pieces():
     # (an empty wireframe, as ParaView's selection outline) changes nothing.
     from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet, vtkPolyData
     from vtkmodules.vtkRenderingCore import vtkActor
-    try:  # VTK 9.1 and 9.2 (ParaView 5.11's); deprecated from 9.3, where the Core class is it
+    from vtkmodules.vtkCommonCore import vtkVersion
+    if (vtkVersion.GetVTKMajorVersion(), vtkVersion.GetVTKMinorVersion()) < (9, 3):
         from vtkmodules.vtkRenderingOpenGL2 import vtkCompositePolyDataMapper2
-    except ImportError:
+    else:  # deprecated from VTK 9.3, where the Core class took its place
         from vtkmodules.vtkRenderingCore import vtkCompositePolyDataMapper as \
             vtkCompositePolyDataMapper2
     renderer, window, shafts, info = finishing_scene()
