@@ -284,7 +284,10 @@ void vtkLightShaftExactFinish::OrderTiles(vtkLightShaftFrame& frame, vtkTextureO
   if (estimate && static_cast<int>(estimate->GetWidth()) == w &&
       static_cast<int>(estimate->GetHeight()) == h)
   {
-    std::vector<float> rgb(3 * static_cast<size_t>(w) * h);
+    // Every RowStride-th row is enough to rank the tiles, and costs that share of a full
+    // read-back (the frame that starts the finish stays a cheap one).
+    constexpr int RowStride = 8;
+    std::vector<float> row(4 * static_cast<size_t>(w));
     vtkOpenGLState* ostate = frame.Window->GetState();
     ostate->PushFramebufferBindings();
     vtkLightShaftResources::BindTargets(
@@ -296,19 +299,19 @@ void vtkLightShaftExactFinish::OrderTiles(vtkLightShaftFrame& frame, vtkTextureO
     this->Framebuffer->ActivateReadBuffer(0);
     GLint packAlignment = 4;
     glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, rgb.data());
-    glPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
-    ostate->PopFramebufferBindings();
-    for (int y = 0; y < h; ++y)
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    for (int y = RowStride / 2; y < h; y += RowStride)
     {
+      glReadPixels(0, y, w, 1, GL_RGBA, GL_FLOAT, row.data());
       for (int x = 0; x < w; ++x)
       {
-        const float* p = &rgb[3 * (size_t(y) * w + x)];
+        const float* p = &row[4 * size_t(x)];
         const double luminance = (double(p[0]) + p[1] + p[2]) / 3.0;
         weight[size_t(y / TileSide) * columns + x / TileSide] += luminance * luminance;
       }
     }
+    glPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
+    ostate->PopFramebufferBindings();
   }
   std::vector<size_t> order(tiles.size());
   std::iota(order.begin(), order.end(), size_t(0));

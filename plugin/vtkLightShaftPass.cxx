@@ -125,12 +125,14 @@ void vtkLightShaftPass::Internals::Track(vtkOpenGLRenderWindow* window)
       self->Window = nullptr;
       self->WindowDeletedTag = 0;
       self->WindowRenderedTag = 0;
+      self->WindowStartedTag = 0;
     });
   this->WindowDeletedTag = window->AddObserver(vtkCommand::DeleteEvent, this->WindowDeleted);
-  // The frame is on the screen: the exact finish's workers may go on.
+  // The exact finish's workers wait from the window's start of a frame to its end.
   this->WindowRendered->SetClientData(this);
-  this->WindowRendered->SetCallback([](vtkObject*, unsigned long, void* clientData, void*)
-    { static_cast<Internals*>(clientData)->Finish.Hold(false); });
+  this->WindowRendered->SetCallback([](vtkObject*, unsigned long event, void* clientData, void*)
+    { static_cast<Internals*>(clientData)->Finish.Hold(event == vtkCommand::StartEvent); });
+  this->WindowStartedTag = window->AddObserver(vtkCommand::StartEvent, this->WindowRendered);
   this->WindowRenderedTag = window->AddObserver(vtkCommand::EndEvent, this->WindowRendered);
 }
 
@@ -140,9 +142,11 @@ void vtkLightShaftPass::Internals::Untrack()
   {
     this->Window->RemoveObserver(this->WindowDeletedTag);
     this->Window->RemoveObserver(this->WindowRenderedTag);
+    this->Window->RemoveObserver(this->WindowStartedTag);
   }
   this->WindowDeletedTag = 0;
   this->WindowRenderedTag = 0;
+  this->WindowStartedTag = 0;
   this->Window = nullptr;
 }
 

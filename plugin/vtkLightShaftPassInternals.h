@@ -50,6 +50,7 @@ public:
   unsigned long WindowDeletedTag = 0;
   vtkNew<vtkCallbackCommand> WindowRendered;
   unsigned long WindowRenderedTag = 0;
+  unsigned long WindowStartedTag = 0;
   bool WarnedPointCookie = false;
   bool WarnedFieldTarget = false;
   int FrameCounter = 0;
