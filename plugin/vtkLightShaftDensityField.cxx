@@ -346,6 +346,17 @@ void vtkLightShaftDensityField::Cumulative(const double origin[3],
   }
 }
 
+double vtkLightShaftDensityField::PlanesPerLength(const double dir[3]) const
+{
+  double planes = 0.0;
+  for (int r = 0; r < 3; ++r)
+  {
+    planes += std::abs(this->WorldToIndex[r][0] * dir[0] + this->WorldToIndex[r][1] * dir[1] +
+                       this->WorldToIndex[r][2] * dir[2]);
+  }
+  return planes;
+}
+
 vtkLightShaftDensityField vtkLightShaftDensityField::Resampled(int maximum) const
 {
   vtkLightShaftDensityField out;

@@ -106,6 +106,9 @@ public:
   /// The bounds' eight corners in world coordinates (corner c: index box bit k of c).
   void Corners(double corners[8][3]) const;
 
+  /// The sample planes a line along world direction `dir` (unit) crosses per unit length.
+  double PlanesPerLength(const double dir[3]) const;
+
   /// World point to continuous point index relative to the extent's start.
   void ToIndex(const double x[3], double p[3]) const;
 

@@ -20,6 +20,14 @@
  *   the box's nearest to its farthest point;
  * - otherwise (the light inside or next to the box) the six faces of a cube around the light,
  *   world-axis aligned, radial distance from 0.
+ * A spot lights its cone only: where a face over the cone is smaller than the box's (the light
+ * inside the box, or a box wider than the cone), the face covers the cone instead.
+ *
+ * Its depth follows the field's own sampling seen along the columns (Resolve): a texel for
+ * every sample plane a column crosses, so that a sharp layer in a wide box is resolved, at
+ * least as many texels as laterally, at most MaximumDepth; over MaximumValues in all, lateral
+ * and depth texels shrink alike.
+ *
  * Along a face's lateral axes and its depth the texel centres sit at the grid's ends, so that
  * the texture is interpolated, not extrapolated, over the whole range. Rays outside a single
  * face's range miss the box (tau = 0); beyond the far end tau stays its value at the box's exit.
@@ -52,12 +60,18 @@ public:
 
   /// A single face sees the box within this tangent of its half-angle (63 degrees).
   static constexpr double MaximumFaceTangent = 2.0;
+  /// The most depth texels a face has (the texture's own limit may be lower).
+  static constexpr int MaximumDepth = 2048;
+  /// The most texels a table holds (16 MiB of float32; its build takes about 0.25 s on two
+  /// cores).
+  static constexpr std::size_t MaximumValues = std::size_t(1) << 22;
 
   /**
    * Where the texture's values lie. Face coordinates q = ToFace * (x - Origin) (world x); a
    * face's (u, v, w) is (q.x, q.y, q.z) orthographic, (q.x / q.z, q.y / q.z, |q|) perspective.
    * Cube face f = 2 k + (q_k < 0) for the major axis k of q (ToFace the identity), with
-   * (u, v, w) = (q_{k+1} / |q_k|, q_{k+2} / |q_k|, |q|).
+   * (u, v, w) = (q_{k+1} / |q_k|, q_{k+2} / |q_k|, |q|). The texture holds the faces side by
+   * side along x: Lateral * Faces by Lateral by Depth texels.
    */
   struct Layout
   {
@@ -82,12 +96,20 @@ public:
   };
 
   /**
-   * The layout for `light` over `field`'s box, `resolution` texels along each axis of a single
-   * face (half of it for each of a cube's six).
+   * The layout for `light` over `field`'s box, `resolution` texels along each lateral axis of a
+   * single face (half of it for each of a cube's six), its depth from Resolve.
    */
   static Layout Plan(const vtkLightShaftDensityField& field,
     const vtkLightShaftModel::Light& light,
-    int resolution);
+    int resolution,
+    int maximumDepth = MaximumDepth);
+
+  /**
+   * Sets `layout`'s depth texels (its ranges and faces set): one per sample plane of `field`
+   * its most crossed column crosses, at least Lateral, at most `maximumDepth`; over
+   * MaximumValues in all, the lateral and depth texels shrink by the same factor.
+   */
+  static void Resolve(const vtkLightShaftDensityField& field, Layout& layout, int maximumDepth);
 
   /// The integrals of rho from the light along every texel column (x fastest, then y, then w).
   static std::vector<float> Integrate(const vtkLightShaftDensityField& field, const Layout& layout);

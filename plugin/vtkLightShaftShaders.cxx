@@ -300,6 +300,7 @@ void SetTableUniforms(vtkShaderProgram* program,
     static_cast<float>(layout.High[0]),
     static_cast<float>(layout.High[1]) };
   program->SetUniform4f((name + ".lateral").c_str(), lateral);
+  program->SetUniformf((name + ".lateralTexels").c_str(), static_cast<float>(layout.Lateral));
   program->SetUniformf((name + ".depth").c_str(), static_cast<float>(layout.Depth));
 }
 

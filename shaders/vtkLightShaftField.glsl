@@ -76,7 +76,8 @@ struct LightShaftTable
   vec3 scale;   // (u, v, w) to texture coordinates: offset + scale * (u, v, w)
   vec3 offset;
   vec4 lateral; // a single face's (u, v) range: rays outside it miss the field
-  float depth;  // texels along w per face
+  float lateralTexels; // texels along u (and v) per face
+  float depth;         // texels along w
 };
 
 float lightShaftTableLookup(sampler3D table, LightShaftTable t, vec3 pointVC)
@@ -109,9 +110,11 @@ float lightShaftTableLookup(sampler3D table, LightShaftTable t, vec3 pointVC)
     }
   }
   vec3 tc = t.offset + t.scale * uvw;
-  // Within the face's own layers: before the first texel centre tau is 0 (the field starts
-  // later), past the last it stays the box's total.
-  tc.z = (clamp(tc.z, 0.5 / t.depth, 1.0 - 0.5 / t.depth) + face) / float(t.faces);
+  // The faces lie side by side along x: within the face's own texels. Before the first depth
+  // texel centre tau is 0 (the field starts later), past the last it stays the box's total.
+  tc.x = (clamp(tc.x, 0.5 / t.lateralTexels, 1.0 - 0.5 / t.lateralTexels) + face) /
+    float(t.faces);
+  tc.z = clamp(tc.z, 0.5 / t.depth, 1.0 - 0.5 / t.depth);
   return texture(table, tc).r;
 }
 #endif
