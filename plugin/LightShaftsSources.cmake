@@ -9,7 +9,9 @@ set(lightshafts_private_classes
   vtkLightShaftEpipolarMethod
   vtkLightShaftErrorModel
   vtkLightShaftExactFinish
+  vtkLightShaftFieldError
   vtkLightShaftFieldShadow
+  vtkLightShaftFieldTable
   vtkLightShaftGeometry
   vtkLightShaftInScatter
   vtkLightShaftInScatterTarget

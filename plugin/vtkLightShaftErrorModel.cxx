@@ -85,7 +85,8 @@ std::array<double, vtkLightShaftErrorModelTable::NumberOfVariables> Variables(co
 Features Describe(const vtkLightShaftGeometry::LightFrame& light,
   const vtkLightShaftGeometry::CameraFrame& camera,
   const vtkLightShaftModel::Medium& medium,
-  int width)
+  int width,
+  const vtkLightShaftFieldError::Density* density)
 {
   Features f;
   const vtkLightShaftGeometry::LitVolume lit =
@@ -114,6 +115,22 @@ Features Describe(const vtkLightShaftGeometry::LightFrame& light,
   f.DepthRangeInBeamWidths = range / beam;
   f.BeamWidthInPixels = beam / pixel;
   f.OpticalDepth = medium.MaximumSigmaT() * range;
+  if (density && density->Field)
+  {
+    std::vector<int> samples(NumberOfSettings);
+    for (int i = 0; i < NumberOfSettings; ++i)
+    {
+      // (LIGHT_VOLUME gives way to RAY_MARCH with a field: nothing to measure.)
+      const bool volume = GetSetting(i).Method == vtkLightShaftPass::LIGHT_VOLUME;
+      samples[i] = volume ? 0 : GetSetting(i).Samples;
+    }
+    vtkLightShaftFieldError::Density withExtinction = *density;
+    withExtinction.SigmaT = medium.MaximumSigmaT();
+    const vtkLightShaftFieldError::Probe probe =
+      vtkLightShaftFieldError::Measure(withExtinction, light, camera, samples);
+    f.OpticalDepth = medium.MaximumSigmaT() * probe.DensityDepth;
+    f.FieldError = probe.QuadratureError;
+  }
   if (light.ShadowsPossible)
   {
     // MapExtent: across one map camera at unit distance (spot, point), or in world units.
@@ -180,7 +197,16 @@ double Predict(int index, const Features& features)
   {
     logError += row.Coefficients[j] * x[j];
   }
-  return std::exp(logError);
+  if (features.FieldError.empty())
+  {
+    return std::exp(logError);
+  }
+  const double factor =
+    GetSetting(std::clamp(index, 0, NumberOfSettings - 1)).Method == vtkLightShaftPass::EPIPOLAR
+      ? FieldFactorEpipolar
+      : FieldFactor;
+  const std::size_t setting = std::min<std::size_t>(index, features.FieldError.size() - 1);
+  return factor * std::exp(logError) + FieldMargin * features.FieldError[setting];
 }
 
 double Predict(int index, const std::vector<Features>& lights)

@@ -12,8 +12,9 @@
 #ifndef vtkLightShaftErrorModel_h
 #define vtkLightShaftErrorModel_h
 
-#include "vtkLightShaftGeometry.h" // For the light and camera frames
-#include "vtkLightShaftModel.h"    // For the medium
+#include "vtkLightShaftFieldError.h" // For a medium from data
+#include "vtkLightShaftGeometry.h"   // For the light and camera frames
+#include "vtkLightShaftModel.h"      // For the medium
 
 #include <vector> // For the lights' features
 
@@ -41,13 +42,35 @@ struct Features
   bool LightInView = false;
   bool FallingAttenuation = false;
   vtkLightShaftModel::LightKind Kind = vtkLightShaftModel::LightKind::Spot;
+  /// A medium from data: for each setting of the ladder, the relative error of its samples'
+  /// evenly spaced samples' integral of the density along view rays through the lit volume (empty:
+  /// none).
+  std::vector<double> FieldError;
 };
 
-/// The features of `light` seen by `camera` in a viewport `width` pixels wide.
+/**
+ * The features of `light` seen by `camera` in a viewport `width` pixels wide; with `density`
+ * (a medium from data), OpticalDepth along view rays through its field, measured, and the
+ * field's quadrature error at each setting's samples.
+ */
 Features Describe(const vtkLightShaftGeometry::LightFrame& light,
   const vtkLightShaftGeometry::CameraFrame& camera,
   const vtkLightShaftModel::Medium& medium,
-  int width);
+  int width,
+  const vtkLightShaftFieldError::Density* density = nullptr);
+
+/**
+ * A medium from data's error. The homogeneous fit misses what a field does to the picture (its
+ * density gathers the light where the shadows' and the steps' errors are, a layer's edge is
+ * seen across the shafts): its prediction is scaled by FieldFactor (EPIPOLAR's own, whose
+ * interpolation along its lines smears a field's edges, FieldFactorEpipolar), and FieldMargin
+ * times the field's quadrature error at a setting's steps is added. Both measured on random
+ * field scenes, nine in ten predicted (tests/benchmarks/field_error_model.py: see
+ * docs/medium-field.md).
+ */
+constexpr double FieldFactor = 1.5;
+constexpr double FieldFactorEpipolar = 4.0;
+constexpr double FieldMargin = 0.5;
 
 /**
  * One setting of the ladder: a method (SLICES with a fixed slice count, RAY_MARCH, EPIPOLAR or
@@ -86,8 +109,8 @@ int FindSetting(const Setting& setting);
 
 /**
  * The relative RMS error setting `index` is predicted to make on a light with `features`
- * (an upper estimate: the fit's residuals' 90th percentile above the fit); 0 for an unlit
- * light.
+ * (an upper estimate: the fit's residuals' 90th percentile above the fit, plus a field's
+ * term); 0 for an unlit light.
  */
 double Predict(int index, const Features& features);
 /// The largest prediction over the lights.

@@ -78,6 +78,10 @@ void vtkLightShaftFrameReport::Publish(const vtkLightShaftFrame& frame,
   this->OpticalDepth = stats.ErrorFeatures.OpticalDepth;
   this->ShadowTexelInPixels = stats.ErrorFeatures.ShadowTexelInPixels;
   this->LightInView = stats.ErrorFeatures.LightInView;
+  const std::vector<double>& field = stats.ErrorFeatures.FieldError;
+  const int setting = stats.ErrorModelSetting;
+  this->FieldError =
+    setting >= 0 && setting < static_cast<int>(field.size()) ? field[setting] : -1.0;
   this->Method = -1;
   this->NumberOfSlicesDrawn = 0;
   this->ShadowMapRendered = false;

@@ -109,8 +109,10 @@ public:
    * none), that setting (-1: none; vtkLightShaftPass::GetErrorModelSettingName names it), and
    * the first lit light's features: the lit volume's view-depth range over the beam's width,
    * that width in pixels, the optical depth over the range, a 1024^2 map's texel in pixels (0:
-   * no caster), and whether the light projects inside the view. Defaults are -1, -1, 0, 0, 0,
-   * 0 and false.
+   * no caster), whether the light projects inside the view, and with a medium from data the
+   * field's own error at that setting (what its steps miss of the density along view rays
+   * through the lit volume, and the light-leg table's error, before the model's margin; -1: no
+   * field or no setting). Defaults are -1, -1, 0, 0, 0, 0, false and -1.
    */
   vtkGetMacro(PredictedError, double);
   vtkGetMacro(ErrorModelSetting, int);
@@ -119,6 +121,7 @@ public:
   vtkGetMacro(OpticalDepth, double);
   vtkGetMacro(ShadowTexelInPixels, double);
   vtkGetMacro(LightInView, bool);
+  vtkGetMacro(FieldError, double);
   ///@}
 
   ///@{
@@ -237,6 +240,7 @@ protected:
   double BeamWidthInPixels = 0.0;
   double OpticalDepth = 0.0;
   double ShadowTexelInPixels = 0.0;
+  double FieldError = -1.0;
   bool LightInView = false;
   double TimeBudget = 0.0;
   double PredictedFrameTime = -1.0;

@@ -52,8 +52,25 @@ public:
   unsigned long WindowRenderedTag = 0;
   unsigned long WindowStartedTag = 0;
   bool WarnedPointCookie = false;
-  bool WarnedFieldTarget = false;
   int FrameCounter = 0;
+  /// Each lit light's table error (vtkLightShaftFieldError::TableError) and what it was
+  /// measured for: measured again only when the field, the light or the resolution change.
+  struct TableErrorEntry
+  {
+    std::size_t Index = 0; ///< among the lights that radiate
+    vtkMTimeType FieldVersion = 0;
+    vtkLightShaftModel::Light Light;
+    int Resolution = -1;
+    double Extinction = -1.0;
+    double Error = 0.0;
+  };
+  std::vector<TableErrorEntry> TableErrors;
+  double TableError(std::size_t index,
+    const vtkLightShaftModel::Light& light,
+    int resolution,
+    double extinction);
+  void ResolveTableForTarget(vtkLightShaftFrame& frame,
+    const std::vector<vtkLightShaftGeometry::LightFrame>& lights);
   vtkSmartPointer<vtkLightShaftMedium> Medium; ///< never nullptr (SetMedium)
   vtkNew<vtkLightShaftFrameReport> LastFrame;
 

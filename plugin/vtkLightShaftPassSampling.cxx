@@ -166,21 +166,40 @@ double vtkLightShaftPass::Internals::FrameBudget(const vtkLightShaftFrame& frame
 // the cost model predicts will fit, the choice kept while the view is still; else with a
 // target error, the cheapest setting predicted to meet it on every lit light; else the
 // parameters set, with the model's prediction when they are one of its settings. LIGHT_VOLUME's
-// settings are left out where it has no closed form (cookie, noise, a medium from data). The
-// model has no feature for a medium from data: with one it predicts nothing, and a target
-// error is not applied (said once).
+// settings are left out where it has no closed form (cookie, noise, a medium from data). A
+// medium from data is measured along view rays (vtkLightShaftFieldError) into the features.
 void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
   const std::vector<vtkLightShaftGeometry::LightFrame>& lights,
   bool noLightVolume,
   bool still)
 {
+  if (this->FrameBudget(frame) <= 0.0)
+  {
+    this->ResolveTableForTarget(frame, lights);
+  }
   std::vector<model::Features> features;
   int lit = 0;
+  vtkLightShaftFieldError::Density density;
+  density.Field = frame.Density ? &this->DensityTexture.GetField() : nullptr;
+  density.Scale = frame.DensityScale;
+  density.Background = frame.DensityBackground;
+  if (frame.Density)
+  {
+    frame.Renderer->ComputeVisiblePropBounds(density.SceneBounds);
+  }
   for (const vtkLightShaftGeometry::LightFrame& light : lights)
   {
     if (light.Model.Radiates())
     {
-      features.push_back(model::Describe(light, frame.Camera, frame.Medium, frame.Size[0]));
+      if (frame.Density)
+      {
+        density.TableError = this->TableError(features.size(),
+          light.Model,
+          frame.Parameters.MediumShadowResolution,
+          frame.Medium.MaximumSigmaT() * frame.DensityScale);
+      }
+      features.push_back(
+        model::Describe(light, frame.Camera, frame.Medium, frame.Size[0], &density));
       lit += features.back().Lit ? 1 : 0;
       if (features.back().Lit && !frame.Statistics.ErrorFeatures.Lit)
       {
@@ -216,17 +235,6 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
     frame.Statistics.PredictedFrameTime = choice.Seconds;
     frame.Statistics.BudgetLights = lit;
   }
-  else if (p.TargetError > 0.0 && frame.Density)
-  {
-    this->HasBudgetChoice = false;
-    if (!this->WarnedFieldTarget)
-    {
-      vtkWarningWithObjectMacro(frame.Owner,
-        "TargetError: the error model has no feature for a medium from data (MediumDensity), so "
-        "the target is not applied while a field is set: the parameters set are used.");
-      this->WarnedFieldTarget = true;
-    }
-  }
   else if (p.TargetError > 0.0)
   {
     this->HasBudgetChoice = false;
@@ -241,7 +249,7 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
     predicted = setting >= 0 ? model::Predict(setting, features) : -1.0;
   }
   frame.Statistics.ErrorModelSetting = setting;
-  frame.Statistics.PredictedError = frame.Density ? -1.0 : predicted;
+  frame.Statistics.PredictedError = predicted;
 }
 
 //------------------------------------------------------------------------------
@@ -273,7 +281,7 @@ void vtkLightShaftPass::Internals::KeepMovingSampling(vtkLightShaftFrame& frame,
   {
     ApplySetting(frame, model::GetSetting(moving.Setting), moving.DownsampleFactor, lights);
     frame.Statistics.ErrorModelSetting = moving.Setting;
-    frame.Statistics.PredictedError = frame.Density ? -1.0 : movingError;
+    frame.Statistics.PredictedError = movingError;
   }
 }
 
@@ -292,6 +300,80 @@ void vtkLightShaftPass::Internals::ObserveFrameTime(vtkLightShaftFrame& frame,
       shafts,
       total);
   }
+}
+
+//------------------------------------------------------------------------------
+double vtkLightShaftPass::Internals::TableError(std::size_t index,
+  const vtkLightShaftModel::Light& light,
+  int resolution,
+  double extinction)
+{
+  const vtkMTimeType version = this->DensityTexture.GetVersion();
+  // Entries of another field are stale; one per light and resolution tried.
+  auto stale = [&](const TableErrorEntry& e) { return e.FieldVersion != version; };
+  this->TableErrors.erase(std::remove_if(this->TableErrors.begin(), this->TableErrors.end(), stale),
+    this->TableErrors.end());
+  auto entry = std::find_if(this->TableErrors.begin(),
+    this->TableErrors.end(),
+    [&](const TableErrorEntry& e) { return e.Index == index && e.Resolution == resolution; });
+  if (entry == this->TableErrors.end())
+  {
+    this->TableErrors.emplace_back();
+    entry = this->TableErrors.end() - 1;
+    entry->Index = index;
+    entry->Resolution = resolution;
+    entry->FieldVersion = version;
+  }
+  else if (entry->Extinction == extinction && entry->Light.Kind == light.Kind &&
+           entry->Light.Position == light.Position && entry->Light.Axis == light.Axis &&
+           entry->Light.ConeHalfAngle == light.ConeHalfAngle)
+  {
+    return entry->Error;
+  }
+  entry->Error = vtkLightShaftFieldError::TableError(
+    this->DensityTexture.GetField(), light, resolution, extinction);
+  entry->Extinction = extinction;
+  entry->Light = light;
+  return entry->Error;
+}
+
+//------------------------------------------------------------------------------
+// With a target error and a medium from data, the light leg's table at a resolution whose
+// error (the error model's term for it) stays within half the target, doubling from the one
+// set up to 256; else the leg is marched. No setting of the ladder reduces the table's error:
+// the target would otherwise go unmet whatever the steps.
+void vtkLightShaftPass::Internals::ResolveTableForTarget(vtkLightShaftFrame& frame,
+  const std::vector<vtkLightShaftGeometry::LightFrame>& lights)
+{
+  int& resolution = frame.Parameters.MediumShadowResolution;
+  if (!(frame.Parameters.TargetError > 0.0) || !frame.Density || resolution <= 0)
+  {
+    return;
+  }
+  const double extinction = frame.Medium.MaximumSigmaT() * frame.DensityScale;
+  for (int r = resolution;; r = std::min(2 * r, 256))
+  {
+    double worst = 0.0;
+    std::size_t index = 0;
+    for (const vtkLightShaftGeometry::LightFrame& light : lights)
+    {
+      if (light.Model.Radiates())
+      {
+        worst = std::max(
+          worst, model::FieldMargin * this->TableError(index++, light.Model, r, extinction));
+      }
+    }
+    if (worst <= 0.5 * frame.Parameters.TargetError)
+    {
+      resolution = r;
+      return;
+    }
+    if (r >= 256)
+    {
+      break;
+    }
+  }
+  resolution = 0;
 }
 
 //------------------------------------------------------------------------------

@@ -22,6 +22,9 @@
 #                                      # medium (docs/medium-field.md; about 1 min)
 #   tools/measure.sh medium-field-pareto  # each method through a plume: speed against
 #                                      # error (docs/medium-field.md; about 2 min)
+#   tools/measure.sh field-error-model # TargetError through a density field: the field
+#                                      # factors' calibration (seed 11) and validation (seed
+#                                      # 12) (docs/medium-field.md; about 30 min)
 #   tools/measure.sh translucent       # translucent casters' cost per layer
 #                                      # (docs/translucent-cost.md; about 3 min)
 #   tools/measure.sh camera-leg        # translucent props in view per layer, and a volume
@@ -73,6 +76,9 @@ case "$what" in
   resolution-cost) run tests/benchmarks/resolution_cost.py "$@" ;;
   medium-field) run tests/benchmarks/medium_field_cost.py "$@" ;;
   medium-field-pareto) run tests/benchmarks/medium_field_pareto.py "$@" ;;
+  field-error-model)
+    run tests/benchmarks/field_error_model.py --seed 11 --scenes 16 "$@"
+    run tests/benchmarks/field_error_model.py --seed 12 --scenes 16 "$@" ;;
   translucent) run tests/benchmarks/translucent_cost.py "$@" ;;
   camera-leg) run tests/benchmarks/camera_leg_cost.py "$@" ;;
   volume-figures) run tests/benchmarks/volume_figures.py "$@" ;;

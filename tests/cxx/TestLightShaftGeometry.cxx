@@ -6,8 +6,10 @@
 // Usage: TestLightShaftGeometry
 
 #include "vtkLightShaftCostModel.h"
+#include "vtkLightShaftDensityField.h"
 #include "vtkLightShaftEpipolar.h"
 #include "vtkLightShaftErrorModel.h"
+#include "vtkLightShaftFieldError.h"
 #include "vtkLightShaftGeometry.h"
 #include "vtkLightShaftModel.h"
 #include "vtkLightShaftPass.h"
@@ -15,8 +17,11 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
+#include "vtkDoubleArray.h"
+#include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
@@ -675,6 +680,104 @@ void TestEpipolarLayout()
   CheckLayout(tiny, "a 1x1 target");
 }
 
+// A field over [-5, 5]^3 with `n` points along each axis, density(x, y, z) at each.
+template <typename F>
+vtkSmartPointer<vtkImageData> FieldImage(int n, F density)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(n, n, n);
+  image->SetOrigin(-5, -5, -5);
+  image->SetSpacing(10.0 / (n - 1), 10.0 / (n - 1), 10.0 / (n - 1));
+  vtkNew<vtkDoubleArray> values;
+  values->SetNumberOfTuples(static_cast<vtkIdType>(n) * n * n);
+  vtkIdType id = 0;
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const double h = 10.0 / (n - 1);
+        values->SetValue(id++, density(-5 + i * h, -5 + j * h, -5 + k * h));
+      }
+    }
+  }
+  image->GetPointData()->SetScalars(values);
+  return image;
+}
+
+void TestFieldError()
+{
+  // A spot over the origin seen from the side: the probe of a uniform, a layered and no field.
+  vtkNew<vtkLight> light;
+  light->SetPositional(true);
+  light->SetPosition(0, 6, 0);
+  light->SetFocalPoint(0, 0, 0);
+  light->SetConeAngle(30);
+  vtkNew<vtkPropCollection> props;
+  const glm::dmat4 view =
+    glm::lookAt(glm::dvec3(0, 3, 12), glm::dvec3(0, 2, 0), glm::dvec3(0, 1, 0));
+  const auto camera = vtkLightShaftGeometry::CameraFrame::FromMatrices(
+    view, glm::perspective(glm::radians(30.0), 4.0 / 3.0, 0.1, 40.0));
+  const vtkLightShaftGeometry::LightFrame frame = vtkLightShaftGeometry::ComputeLightFrame(
+    vtkLightShaftModel::DescribeLight(light), camera, props, nullptr);
+  const std::vector<int> samples{ 16, 0, 256, 16 };
+
+  vtkLightShaftDensityField uniform;
+  Check(uniform.Read(FieldImage(3, [](double, double, double) { return 1.0; }), nullptr).empty(),
+    "a uniform field reads");
+  vtkLightShaftFieldError::Density density;
+  density.Field = &uniform;
+  density.Scale = 2.0;
+  vtkLightShaftFieldError::Probe probe =
+    vtkLightShaftFieldError::Measure(density, frame, camera, samples);
+  Check(probe.Lit && probe.QuadratureError.size() == samples.size(), "the probe is lit");
+  Check(probe.DensityDepth > 2.0 && probe.DensityDepth < 2.0 * 15.0,
+    "a uniform field's optical depth: the scale over a lit ray's length");
+  bool exact = true;
+  for (double e : probe.QuadratureError)
+  {
+    exact = exact && e < 1e-9;
+  }
+  Check(exact, "a uniform field has no quadrature error");
+
+  // Density 1 below y = 1, 0 above (linear over one cell of 0.1): the march's samples miss
+  // where the edge lies, less with more steps (about as 1/steps).
+  vtkLightShaftDensityField layer;
+  Check(layer.Read(FieldImage(101, [](double, double y, double) { return y < 1.0 ? 1.0 : 0.0; }),
+          nullptr)
+          .empty(),
+    "a layer reads");
+  density.Field = &layer;
+  density.Scale = 1.0;
+  probe = vtkLightShaftFieldError::Measure(density, frame, camera, samples);
+  const std::vector<double>& e = probe.QuadratureError;
+  Check(e[0] > 0.0 && e[0] > 4.0 * e[2] && e[2] > 0.0,
+    "a layer's quadrature error falls with the steps");
+  Check(e[1] == 0.0 && e[3] == e[0], "a count of 0 is not measured, a repeated count is the same");
+  Check(probe.LightLegError == 0.0, "a marched light leg: no table measured");
+
+  // The light leg's table: its interpolation across the layer's edge errs, less when finer;
+  // its term is in every count's error.
+  const double coarseTable = vtkLightShaftFieldError::TableError(layer, frame.Model, 16, 0.5);
+  const double fineTable = vtkLightShaftFieldError::TableError(layer, frame.Model, 128, 0.5);
+  Check(coarseTable > fineTable && fineTable > 0.0, "the table's error falls with its resolution");
+  Check(vtkLightShaftFieldError::TableError(layer, frame.Model, 0, 0.5) == 0.0,
+    "a marched leg (resolution 0) has no table error");
+  density.SigmaT = 0.5;
+  density.Scale = 2.0;
+  density.TableError = coarseTable;
+  const vtkLightShaftFieldError::Probe withTable =
+    vtkLightShaftFieldError::Measure(density, frame, camera, samples);
+  Check(std::abs(withTable.LightLegError - coarseTable) < 1e-12 &&
+      withTable.QuadratureError[2] >= withTable.LightLegError,
+    "the table's term is in every count's error");
+
+  density.Field = nullptr;
+  probe = vtkLightShaftFieldError::Measure(density, frame, camera, samples);
+  Check(!probe.Lit && probe.DensityDepth == 0.0, "no field: nothing measured");
+}
+
 int main()
 {
   TestPolygons();
@@ -689,6 +792,7 @@ int main()
   TestCostModel();
   TestEpipole();
   TestEpipolarLayout();
+  TestFieldError();
   if (Failures > 0)
   {
     std::cerr << Failures << " geometry check(s) failed" << std::endl;

@@ -83,7 +83,6 @@ DOCUMENTED_WARNINGS = ["No spot or point light in the renderer", "given to the p
                        "segments in a frame",
                        "Method LIGHT_VOLUME has no closed form",
                        "is rendered by SLICES, RAY_MARCH and EPIPOLAR",
-                       "has no feature for a medium from data",
                        # junk on the VTK objects the pass reads (junk_vtk)
                        "is left out of the shafts", "The camera cannot be used for the shafts",
                        "casts no shadow in the shafts", "image cannot be used (texel",
