@@ -681,7 +681,7 @@ void TestEpipolarLayout()
 }
 
 // A field over [-5, 5]^3 with `n` points along each axis, density(x, y, z) at each.
-template <typename F>
+template<typename F>
 vtkSmartPointer<vtkImageData> FieldImage(int n, F density)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
@@ -744,9 +744,10 @@ void TestFieldError()
   // Density 1 below y = 1, 0 above (linear over one cell of 0.1): the march's samples miss
   // where the edge lies, less with more steps (about as 1/steps).
   vtkLightShaftDensityField layer;
-  Check(layer.Read(FieldImage(101, [](double, double y, double) { return y < 1.0 ? 1.0 : 0.0; }),
-          nullptr)
-          .empty(),
+  Check(
+    layer
+      .Read(FieldImage(101, [](double, double y, double) { return y < 1.0 ? 1.0 : 0.0; }), nullptr)
+      .empty(),
     "a layer reads");
   density.Field = &layer;
   density.Scale = 1.0;
@@ -770,7 +771,7 @@ void TestFieldError()
   const vtkLightShaftFieldError::Probe withTable =
     vtkLightShaftFieldError::Measure(density, frame, camera, samples);
   Check(std::abs(withTable.LightLegError - coarseTable) < 1e-12 &&
-      withTable.QuadratureError[2] >= withTable.LightLegError,
+          withTable.QuadratureError[2] >= withTable.LightLegError,
     "the table's term is in every count's error");
 
   density.Field = nullptr;
