@@ -47,26 +47,33 @@ std::vector<glm::dvec3> SpreadPoints(const vtkLightShaftGeometry::ConvexPolytope
   return points;
 }
 
+// Whether `light`, at `position` pointing along `axis` (in x's coordinates), reaches x: a
+// spot's cone, a directional light's side of its plane, everywhere for a point light.
+bool Reaches(const vtkLightShaftModel::Light& light,
+  const glm::dvec3& position,
+  const glm::dvec3& axis,
+  const glm::dvec3& x)
+{
+  const glm::dvec3 d = x - position;
+  const double along = glm::dot(d, axis);
+  switch (light.Kind)
+  {
+    case vtkLightShaftModel::LightKind::Spot:
+      return along >= std::cos(light.ConeHalfAngle) * glm::length(d);
+    case vtkLightShaftModel::LightKind::Directional:
+      return along >= 0.0;
+    default:
+      return true;
+  }
+}
+
 // Cuts the segment [a, b] (view coordinates) to the part the light reaches, as each pixel's
 // march does (a spot's cone; the side of a directional light's plane it shines on); false
 // when none.
 bool LitPart(const vtkLightShaftGeometry::LightFrame& light, glm::dvec3& a, glm::dvec3& b)
 {
-  const vtkLightShaftModel::Light& model = light.Model;
   auto lit = [&](const glm::dvec3& x)
-  {
-    const glm::dvec3 d = x - light.PositionVC;
-    const double along = glm::dot(d, light.AxisVC);
-    switch (model.Kind)
-    {
-      case vtkLightShaftModel::LightKind::Spot:
-        return along >= std::cos(model.ConeHalfAngle) * glm::length(d);
-      case vtkLightShaftModel::LightKind::Directional:
-        return along >= 0.0;
-      default:
-        return true;
-    }
-  };
+  { return Reaches(light.Model, light.PositionVC, light.AxisVC, x); };
   // The lit set along a line is one interval (a convex cone, a half-space): its ends found on
   // a scan, fine enough for the step the march takes.
   constexpr int Scan = 512;
@@ -178,23 +185,6 @@ bool WithinBounds(const double bounds[6], glm::dvec3& a, glm::dvec3& b)
   b = a + d * t1;
   a = from;
   return true;
-}
-
-// Whether the light reaches world point x (a spot's cone; a directional light's side of its
-// plane).
-bool Reaches(const vtkLightShaftModel::Light& light, const glm::dvec3& x)
-{
-  const glm::dvec3 d = x - light.Position;
-  const double along = glm::dot(d, light.Axis);
-  switch (light.Kind)
-  {
-    case vtkLightShaftModel::LightKind::Spot:
-      return along >= std::cos(light.ConeHalfAngle) * glm::length(d);
-    case vtkLightShaftModel::LightKind::Directional:
-      return along >= 0.0;
-    default:
-      return true;
-  }
 }
 
 // The light leg's table (vtkLightShaftFieldTable) at world point x, as the shader looks it
@@ -495,7 +485,7 @@ double TableError(const vtkLightShaftDensityField& field,
     const int k = static_cast<int>(n / (static_cast<std::size_t>(m[0]) * m[1]));
     const glm::dvec3 x = at(i, j, k);
     double value = 0.0;
-    if (!Reaches(light, x) || !TableAt(field, table, x, value))
+    if (!Reaches(light, light.Position, light.Axis, x) || !TableAt(field, table, x, value))
     {
       continue;
     }
