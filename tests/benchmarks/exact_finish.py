@@ -11,7 +11,9 @@ Scenes, at --size (1280x720):
   SLICES 64 with a 2048² map as the still setting (a user's own, which the budget beats while
   moving).
 
-For each run (ExactFinish off, then on; ProgressiveRefinement on in both): the camera turned by
+For each run (ExactFinish off, then on, --repeats times each, alternating, so that the frame
+times compared are pooled over the same stretch of the machine's time; ProgressiveRefinement on
+in both): the camera turned by
 0.5 degree per frame for --frames frames under a frame budget (the window's DesiredUpdateRate
 --rate, as VTK's interactors set it while the user drags), each frame finished and timed. Then
 the rate set back to rest and the still view rendered every --period seconds, as an
@@ -122,6 +124,15 @@ def first_within(timeline, bound):
     return next((t for t, _, e in timeline if e <= bound), None)
 
 
+def pooled(runs):
+    """The runs' frame times together (their first run's timeline and errors)."""
+    first = dict(runs[0])
+    first["frames"] = [f for r in runs for f in r["frames"]]
+    first["reused"] = [t for r in runs for t in r["reused"]]
+    first["repeats"] = len(runs)
+    return first
+
+
 def table(args, off, on):
     size = f"{args.size[0]}x{args.size[1]}"
     command = "tools/measure.sh exact-finish" + (" " + " ".join(sys.argv[1:]) if sys.argv[1:] else "")
@@ -134,7 +145,9 @@ def table(args, off, on):
              f"{100 * on['moving_error']:.2f}% from the reference (without the finish: "
              f"{100 * off['moving_error']:.2f}%). The still view rendered every "
              f"{args.period:g} s. Moving frames: median "
-             f"{1000 * statistics.median(on['moving'][2:]):.0f} ms.", ""]
+             f"{1000 * statistics.median(on['moving'][2:]):.0f} ms. Frame times pooled over "
+             f"{on['repeats']} runs of each (alternating without and with the finish); the "
+             f"errors over time are the first runs'.", ""]
     def stats(times):
         if not times:
             return "none"
@@ -155,6 +168,14 @@ def table(args, off, on):
                      f"showing the picture again {stats(shown)}.")
     lines.append(f"- With the finish, after it completed (the same view, no worker running): "
                  f"showing the picture again {stats(on['reused'])}.")
+    running = sorted(s for _, s, state, reused in on["frames"] if reused and state == "running")
+    without = sorted([s for _, s, _, reused in off["frames"] if reused] + off["reused"])
+    if running and without:
+        def p90(times):
+            return times[int(0.9 * (len(times) - 1))]
+        lines.append(f"- Frames that show the picture again, with the finish running over "
+                     f"without it: median {statistics.median(running) / statistics.median(without):.2f}, "
+                     f"p90 {p90(running) / p90(without):.2f}.")
     lines.append("")
     for bound in (0.005, 0.001):
         lines.append(f"Within {100 * bound:g}% of the reference: without the finish "
@@ -188,8 +209,14 @@ def main():
     parser.add_argument("--period", type=float, default=0.1)
     parser.add_argument("--every", type=float, default=0.5)
     parser.add_argument("--reused", type=int, default=20)
+    parser.add_argument("--repeats", type=int, default=5,
+                        help="runs of each, alternating, their frame times pooled")
     args = parser.parse_args()
-    text = table(args, run(args, False), run(args, True))
+    off, on = [], []
+    for _ in range(args.repeats):
+        off.append(run(args, False))
+        on.append(run(args, True))
+    text = table(args, pooled(off), pooled(on))
     print(text)
     if args.output_dir:
         name = "exact-finish" + ("" if args.scene == "window" else "-" + args.scene) + ".md"
