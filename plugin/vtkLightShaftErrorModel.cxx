@@ -130,6 +130,7 @@ Features Describe(const vtkLightShaftGeometry::LightFrame& light,
       vtkLightShaftFieldError::Measure(withExtinction, light, camera, samples);
     f.OpticalDepth = medium.MaximumSigmaT() * probe.DensityDepth;
     f.FieldError = probe.QuadratureError;
+    f.LightLegError = probe.LightLegError;
   }
   if (light.ShadowsPossible)
   {
@@ -217,6 +218,28 @@ double Predict(int index, const std::vector<Features>& lights)
     worst = std::max(worst, Predict(index, light));
   }
   return worst;
+}
+
+double PredictApartFromLightLeg(int index, const std::vector<Features>& lights)
+{
+  double worst = 0.0;
+  for (Features light : lights)
+  {
+    SetLightLegError(light, 0.0);
+    worst = std::max(worst, Predict(index, light));
+  }
+  return worst;
+}
+
+void SetLightLegError(Features& features, double error)
+{
+  // FieldError adds its terms in quadrature.
+  const double before = features.LightLegError * features.LightLegError;
+  for (double& term : features.FieldError)
+  {
+    term = std::sqrt(std::max(0.0, term * term - before) + error * error);
+  }
+  features.LightLegError = error;
 }
 
 int Choose(double target, const std::vector<Features>& lights, bool closedForm, double& predicted)

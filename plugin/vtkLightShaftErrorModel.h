@@ -46,6 +46,8 @@ struct Features
   /// evenly spaced samples' integral of the density along view rays through the lit volume (empty:
   /// none).
   std::vector<double> FieldError;
+  /// The light leg's table's own error, one of FieldError's terms (0: none, or marched).
+  double LightLegError = 0.0;
 };
 
 /**
@@ -115,6 +117,11 @@ int FindSetting(const Setting& setting);
 double Predict(int index, const Features& features);
 /// The largest prediction over the lights.
 double Predict(int index, const std::vector<Features>& lights);
+/// The largest prediction over the lights, their light leg's table's term left out: what the
+/// setting's samples make, the table aside.
+double PredictApartFromLightLeg(int index, const std::vector<Features>& lights);
+/// Replace the light leg's table's term of `features` (another resolution, or 0: marched).
+void SetLightLegError(Features& features, double error);
 
 /**
  * The cheapest setting predicted to make at most `target` on every light (the most accurate

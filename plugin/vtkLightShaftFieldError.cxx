@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace vtkLightShaftFieldError
 {
@@ -152,15 +153,20 @@ private:
   double U1 = 1.0;
 };
 
-// Cuts the segment [a, b] (world) to `bounds` where they are set; false when it misses them.
-bool WithinBounds(const double bounds[6], glm::dvec3& a, glm::dvec3& b)
+// Cuts the segment [a, b] (world) where it leaves `bounds`, where they are set: a view ray
+// that reaches the scene's box ends on a surface within it (a ray that misses the box goes on
+// to the far plane). The medium in front of the box is seen (a floor's box is flat: the air
+// above it is all in front). False when the segment starts past the box: the ray ended on a
+// surface before it.
+bool WithinBounds(const double bounds[6], const glm::dvec3& a, glm::dvec3& b)
 {
   if (bounds[0] > bounds[1])
   {
     return true;
   }
-  double t0 = 0.0;
-  double t1 = 1.0;
+  // The line's interval in the box (t along a + t (b - a)), a slab at a time.
+  double t0 = -std::numeric_limits<double>::infinity();
+  double t1 = std::numeric_limits<double>::infinity();
   const glm::dvec3 d = b - a;
   for (int k = 0; k < 3; ++k)
   {
@@ -168,7 +174,7 @@ bool WithinBounds(const double bounds[6], glm::dvec3& a, glm::dvec3& b)
     {
       if (a[k] < bounds[2 * k] || a[k] > bounds[2 * k + 1])
       {
-        return false;
+        return true; // parallel to the slab, outside it: the box is missed
       }
       continue;
     }
@@ -177,13 +183,15 @@ bool WithinBounds(const double bounds[6], glm::dvec3& a, glm::dvec3& b)
     t0 = std::max(t0, std::min(u, v));
     t1 = std::min(t1, std::max(u, v));
   }
-  if (!(t1 > t0))
+  if (t1 < t0 || t0 >= 1.0)
+  {
+    return true; // the box is missed, or lies beyond the segment
+  }
+  if (t1 <= 0.0)
   {
     return false;
   }
-  const glm::dvec3 from = a + d * t0;
-  b = a + d * t1;
-  a = from;
+  b = a + d * std::min(t1, 1.0);
   return true;
 }
 
@@ -475,6 +483,12 @@ double TableError(const vtkLightShaftDensityField& field,
   // where the light's table is looked up: the density-weighted RMS error of its optical depth.
   double squared = 0.0;
   double weights = 0.0;
+  // A positional light's falloff, bounded within a lattice cell of the light.
+  const bool falls =
+    light.Kind != vtkLightShaftModel::LightKind::Directional && light.FallingAttenuation();
+  const glm::dvec3 cell(
+    glm::length(edges[0]) / m[0], glm::length(edges[1]) / m[1], glm::length(edges[2]) / m[2]);
+  const double nearest = glm::dot(cell, cell);
   for (int s = 0; s < Points; ++s)
   {
     const double target = total * (s + 0.5) / Points;
@@ -490,10 +504,19 @@ double TableError(const vtkLightShaftDensityField& field,
       continue;
     }
     // The light reaching x is exp(-extinction tau): the table's error dims it by
-    // exp(-extinction error), relatively; weighted by the light that scatters there.
+    // exp(-extinction error), relatively; weighted by the light that scatters there, its
+    // falloff with distance included (a face's texels widen with distance, where less light
+    // scatters).
     const double exact = LegAt(field, table, x);
     const double error = extinction * (value - exact);
-    const double weight = std::exp(-extinction * exact);
+    const glm::dvec3 d = x - light.Position;
+    const double r2 = std::max(glm::dot(d, d), nearest);
+    const double falloff =
+      falls ? 1.0 / std::max(light.Attenuation[0] + light.Attenuation[1] * std::sqrt(r2) +
+                               light.Attenuation[2] * r2,
+                      1e-300)
+            : 1.0;
+    const double weight = falloff * std::exp(-extinction * exact);
     squared += weight * error * error;
     weights += weight;
   }

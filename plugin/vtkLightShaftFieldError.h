@@ -21,8 +21,9 @@ struct Density
   const vtkLightShaftDensityField* Field = nullptr;
   double Scale = 1.0;
   double Background = 0.0;
-  /// The visible props' bounds (xmin, xmax, ...): view rays end on the scene's surfaces,
-  /// within them; none when xmin > xmax.
+  /// The visible props' bounds (xmin, xmax, ...): a view ray that reaches them ends on the
+  /// scene's surfaces within them (the probe rays are cut where they leave them); none when
+  /// xmin > xmax.
   double SceneBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   /// The medium's largest extinction coefficient (density 1): how much an error of optical
   /// depth dims the shafts.

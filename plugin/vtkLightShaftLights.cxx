@@ -167,6 +167,7 @@ void vtkLightShaftLights::KeepOnly(const std::vector<vtkLight*>& used, vtkWindow
     }
     (*it)->ShadowMap.ReleaseGraphicsResources(window);
     (*it)->FieldShadow.ReleaseGraphicsResources(window);
+    (*it)->RefinedFieldShadow.ReleaseGraphicsResources(window);
     (*it)->VolumeShadow.ReleaseGraphicsResources(window);
     (*it)->Timer.ReleaseGraphicsResources();
     it = this->States.erase(it);
@@ -192,6 +193,7 @@ void vtkLightShaftLights::ReleaseGraphicsResources(vtkWindow* window)
   {
     state->ShadowMap.ReleaseGraphicsResources(window);
     state->FieldShadow.ReleaseGraphicsResources(window);
+    state->RefinedFieldShadow.ReleaseGraphicsResources(window);
     state->VolumeShadow.ReleaseGraphicsResources(window);
     state->Timer.ReleaseGraphicsResources();
   }

@@ -66,7 +66,9 @@ struct vtkLightShaftLightState
 
   vtkWeakPointer<vtkLight> Light;
   vtkLightShaftShadowMap ShadowMap;
-  vtkLightShaftFieldShadow FieldShadow;  ///< the light leg through a medium from data
+  vtkLightShaftFieldShadow FieldShadow; ///< the light leg through a medium from data
+  /// The same at the resolution a target error or a still view's refinement chose.
+  vtkLightShaftFieldShadow RefinedFieldShadow;
   vtkLightShaftFieldShadow VolumeShadow; ///< the light leg through the scene's vtkVolume
   vtkOpenGLRenderTimer Timer;
 };

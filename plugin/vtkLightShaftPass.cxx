@@ -810,7 +810,7 @@ void vtkLightShaftPass::Internals::RenderLight(vtkLightShaftFrame& frame,
   this->ReadyVolumeShadow(frame, state.VolumeShadow); // (the shafts' and the surfaces')
   if (frame.Medium.Scatters())
   {
-    this->ReadyFieldShadow(frame, state.FieldShadow);
+    this->ReadyFieldShadow(frame, state.FieldShadow, state.RefinedFieldShadow);
     this->InScatter.Add(frame, this->InScatter.ChooseMethod(frame));
   }
   if (shadowSurfaces || frame.Cookie)

@@ -69,8 +69,22 @@ public:
     const vtkLightShaftModel::Light& light,
     int resolution,
     double extinction);
+  /// The frame's MediumShadowResolution: the coarsest, from the one set, doubling up to 256,
+  /// whose table's term (FieldMargin times its error) is within `aim` on every light, else 0
+  /// (the leg marched). Unchanged where no table is used.
+  void ResolveTable(vtkLightShaftFrame& frame,
+    const std::vector<vtkLightShaftGeometry::LightFrame>& lights,
+    double aim);
+  /// With a TargetError: the table's term within half the target.
   void ResolveTableForTarget(vtkLightShaftFrame& frame,
     const std::vector<vtkLightShaftGeometry::LightFrame>& lights);
+  /// A view still for two frames or more, refining: the table's term within half of what the
+  /// setting's samples are predicted to make (vtkLightShaftPassSampling.cxx).
+  void RefineTableWhenStill(vtkLightShaftFrame& frame,
+    const std::vector<vtkLightShaftGeometry::LightFrame>& lights);
+  bool LastViewStill = false; ///< the last frame's ViewStill
+  /// The last ApplyErrorModel's features, one per radiating light.
+  std::vector<vtkLightShaftErrorModel::Features> Features;
   vtkSmartPointer<vtkLightShaftMedium> Medium; ///< never nullptr (SetMedium)
   vtkNew<vtkLightShaftFrameReport> LastFrame;
 
@@ -110,11 +124,16 @@ public:
     vtkRenderPass* delegate,
     const std::vector<vtkLight*>& lights,
     bool shadowSurfaces);
-  /// Cookie and noise readied, the sampling chosen, refinement begun (and its shadow-map
-  /// shift applied to `lightFrames`); returns the cookie texture (vtkLightShaftPassSampling.cxx).
-  void ReadyFieldShadow(vtkLightShaftFrame& frame, vtkLightShaftFieldShadow& shadow);
+  /// The light's leg through the medium's field, tabulated (vtkLightShaftPassSampling.cxx):
+  /// `shadow` at the resolution set, `refined` at another a target or a still view chose (both
+  /// kept, so that neither is rebuilt when the view moves again).
+  void ReadyFieldShadow(vtkLightShaftFrame& frame,
+    vtkLightShaftFieldShadow& shadow,
+    vtkLightShaftFieldShadow& refined);
   /// The light's leg through the scene's vtkVolume, tabulated (vtkLightShaftPassSampling.cxx).
   void ReadyVolumeShadow(vtkLightShaftFrame& frame, vtkLightShaftFieldShadow& shadow);
+  /// Cookie and noise readied, the sampling chosen, refinement begun (and its shadow-map
+  /// shift applied to `lightFrames`); returns the cookie texture (vtkLightShaftPassSampling.cxx).
   vtkTextureObject* ChooseSampling(vtkLightShaftFrame& frame,
     const std::vector<vtkLight*>& lights,
     std::vector<vtkLightShaftGeometry::LightFrame>& lightFrames);

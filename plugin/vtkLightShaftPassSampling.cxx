@@ -117,6 +117,9 @@ vtkTextureObject* vtkLightShaftPass::Internals::ChooseSampling(vtkLightShaftFram
               std::max(this->Textures.GetImagesTime(), this->DensityTexture.GetUploadTime()))
           : vtkLightShaftRefinement::Signature();
   frame.ViewStill = signs && this->Refinement.IsStill(signature);
+  // Still for two frames or more: the camera did not stop with this frame.
+  const bool settled = frame.ViewStill && this->LastViewStill;
+  this->LastViewStill = frame.ViewStill;
   this->ApplyErrorModel(frame,
     lightFrames,
     cookie != nullptr || frame.Noise != nullptr || frame.Density != nullptr,
@@ -134,6 +137,10 @@ vtkTextureObject* vtkLightShaftPass::Internals::ChooseSampling(vtkLightShaftFram
     this->Finish.Stop();
   }
   this->KeepMovingSampling(frame, lightFrames, finishes);
+  if (settled)
+  {
+    this->RefineTableWhenStill(frame, lightFrames);
+  }
   vtkLightShaftRefinement::SetSampling(signature, frame);
   this->Refinement.Begin(frame, std::move(signature));
   if (frame.ShadowMapOffset[0] != 0.0 || frame.ShadowMapOffset[1] != 0.0)
@@ -177,7 +184,8 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
   {
     this->ResolveTableForTarget(frame, lights);
   }
-  std::vector<model::Features> features;
+  std::vector<model::Features>& features = this->Features;
+  features.clear();
   int lit = 0;
   vtkLightShaftFieldError::Density density;
   density.Field = frame.Density ? &this->DensityTexture.GetField() : nullptr;
@@ -338,15 +346,14 @@ double vtkLightShaftPass::Internals::TableError(std::size_t index,
 }
 
 //------------------------------------------------------------------------------
-// With a target error and a medium from data, the light leg's table at a resolution whose
-// error (the error model's term for it) stays within half the target, doubling from the one
-// set up to 256; else the leg is marched. No setting of the ladder reduces the table's error:
-// the target would otherwise go unmet whatever the steps.
-void vtkLightShaftPass::Internals::ResolveTableForTarget(vtkLightShaftFrame& frame,
-  const std::vector<vtkLightShaftGeometry::LightFrame>& lights)
+// Doubling the resolution quarters a smooth table's error (trilinear interpolation); a sharp
+// field's falls slower, and past 256 (the table's memory bound) only marching the leg helps.
+void vtkLightShaftPass::Internals::ResolveTable(vtkLightShaftFrame& frame,
+  const std::vector<vtkLightShaftGeometry::LightFrame>& lights,
+  double aim)
 {
   int& resolution = frame.Parameters.MediumShadowResolution;
-  if (!(frame.Parameters.TargetError > 0.0) || !frame.Density || resolution <= 0)
+  if (!frame.Density || resolution <= 0)
   {
     return;
   }
@@ -363,7 +370,7 @@ void vtkLightShaftPass::Internals::ResolveTableForTarget(vtkLightShaftFrame& fra
           worst, model::FieldMargin * this->TableError(index++, light.Model, r, extinction));
       }
     }
-    if (worst <= 0.5 * frame.Parameters.TargetError)
+    if (worst <= aim)
     {
       resolution = r;
       return;
@@ -377,18 +384,92 @@ void vtkLightShaftPass::Internals::ResolveTableForTarget(vtkLightShaftFrame& fra
 }
 
 //------------------------------------------------------------------------------
+// With a target error and a medium from data, the light leg's table at a resolution whose
+// error stays within half the target, else the leg is marched: no setting of the ladder reduces
+// the table's error, and the target would otherwise go unmet whatever the steps.
+void vtkLightShaftPass::Internals::ResolveTableForTarget(vtkLightShaftFrame& frame,
+  const std::vector<vtkLightShaftGeometry::LightFrame>& lights)
+{
+  if (frame.Parameters.TargetError > 0.0)
+  {
+    this->ResolveTable(frame, lights, 0.5 * frame.Parameters.TargetError);
+  }
+}
+
+//------------------------------------------------------------------------------
+// A still view's refinement averages estimates: it removes what the shifted samples scatter,
+// not the table's interpolation, which is the same in every estimate. So while the view is
+// still (from its second still frame: the one where the camera stopped stays as cheap as a
+// moving one) the table is refined where its term is more than half of what the setting's samples
+// are predicted to make, or the leg is marched; the new resolution starts a new history (the
+// sampling signs it). Left to the target's rule with a TargetError; nothing where the setting
+// has no prediction (parameters off the ladder).
+void vtkLightShaftPass::Internals::RefineTableWhenStill(vtkLightShaftFrame& frame,
+  const std::vector<vtkLightShaftGeometry::LightFrame>& lights)
+{
+  const vtkLightShaftParameters& p = frame.Parameters;
+  const int setting = frame.Statistics.ErrorModelSetting;
+  if (!p.ProgressiveRefinement || !frame.Density || p.TargetError > 0.0 || setting < 0 ||
+      p.DownsampleFactor != 1 || this->Features.empty())
+  {
+    return;
+  }
+  const double samples = model::PredictApartFromLightLeg(setting, this->Features);
+  const int before = p.MediumShadowResolution;
+  if (!(samples > 0.0) || before <= 0)
+  {
+    return;
+  }
+  this->ResolveTable(frame, lights, 0.5 * samples);
+  const int after = p.MediumShadowResolution;
+  if (after == before)
+  {
+    return;
+  }
+  // The prediction and its read-outs with the new table.
+  const double extinction = frame.Medium.MaximumSigmaT() * frame.DensityScale;
+  std::size_t index = 0;
+  for (const vtkLightShaftGeometry::LightFrame& light : lights)
+  {
+    if (light.Model.Radiates() && index < this->Features.size())
+    {
+      const double leg = after > 0 ? this->TableError(index, light.Model, after, extinction) : 0.0;
+      model::SetLightLegError(this->Features[index++], leg);
+    }
+  }
+  const auto firstLit = std::find_if(
+    this->Features.begin(), this->Features.end(), [](const model::Features& f) { return f.Lit; });
+  if (firstLit != this->Features.end())
+  {
+    frame.Statistics.ErrorFeatures = *firstLit;
+  }
+  frame.Statistics.PredictedError = model::Predict(setting, this->Features);
+}
+
+//------------------------------------------------------------------------------
 // The light's leg through a medium from data, tabulated (MediumShadowResolution > 0; rebuilt
 // when the field or the light moved), or nothing: the shaders march it.
 void vtkLightShaftPass::Internals::ReadyFieldShadow(vtkLightShaftFrame& frame,
-  vtkLightShaftFieldShadow& shadow)
+  vtkLightShaftFieldShadow& asSet,
+  vtkLightShaftFieldShadow& refined)
 {
   frame.FieldShadow = nullptr;
   frame.FieldShadowLayout = nullptr;
-  if (!frame.Density || frame.Parameters.MediumShadowResolution == 0)
+  const int resolution = frame.Parameters.MediumShadowResolution;
+  if (!frame.Density || this->Medium->GetFieldShadowResolution() == 0)
   {
-    shadow.ReleaseGraphicsResources(frame.Window);
+    asSet.ReleaseGraphicsResources(frame.Window);
+  }
+  if (!frame.Density)
+  {
+    refined.ReleaseGraphicsResources(frame.Window);
+  }
+  if (!frame.Density || resolution == 0)
+  {
     return;
   }
+  vtkLightShaftFieldShadow& shadow =
+    resolution == this->Medium->GetFieldShadowResolution() ? asSet : refined;
   frame.FieldShadow = shadow.Ready(frame.Window,
     this->DensityTexture.GetField(),
     this->DensityTexture.GetVersion(),

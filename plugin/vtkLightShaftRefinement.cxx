@@ -75,7 +75,8 @@ void vtkLightShaftRefinement::SetSampling(Signature& signature, const vtkLightSh
     double(p.BlurRadius),
     double(p.DownsampleFactor),
     double(p.ShadowMapSize),
-    double(p.AccumulationPrecision) };
+    double(p.AccumulationPrecision),
+    double(p.MediumShadowResolution) };
 }
 
 bool vtkLightShaftRefinement::IsStill(const Signature& signature) const

@@ -69,7 +69,8 @@ float lightShaftAttenuationIntegral(float x0, float x1, float h2)
 // The in-scattered radiance over the piece x in [x0, x1] of the ray originVC + t dirVC, where
 // x = t + b is measured from the foot of the perpendicular from the light (squared length h2)
 // and the piece lies inside the cone and in front of the surface. Shadow, cookie and noise are
-// looked up once, at the piece's (equiangular) midpoint.
+// looked up once, at the piece's (equiangular) midpoint (refining, elsewhere in the piece); a
+// medium from data at the midpoint always.
 #ifdef LIGHTSHAFT_REFINE
 uniform float lookupFraction; // where in a piece (of u) its lookups are; 0.5: the midpoint
 #endif
@@ -95,6 +96,14 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
 #else
   vec3 smoothMean = lightShaftSmoothMean(originVC, dirVC, b, h, constantA, u0, u1, sampleVC,
     sampleR, sampleSinTheta);
+#endif
+#ifdef LIGHTSHAFT_FIELD
+  // A medium from data is sampled at the midpoint in every estimate: its density is smooth
+  // within a piece, where the midpoint rule is of second order and a lookup off the centre of
+  // first (a dense plume's second estimate was then three times as far from the reference as
+  // its first); refinement's shifted pieces move the midpoints.
+  vec3 fieldVC = sampleVC;
+  float fieldR = sampleR;
 #endif
 #ifdef LIGHTSHAFT_REFINE
   // Progressive refinement: each estimate looks up at another point of the piece (uniform in
@@ -137,19 +146,19 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
   // A medium from data: sigma_s and sigma_t scale with the density at the sample; the
   // extinction is that of the view ray up to it (the depth so far plus half this segment's)
   // and of the light leg (to the light, or back to a directional light's plane).
-  float density = lightShaftDensity(sampleVC);
+  float density = lightShaftDensity(fieldVC);
   float segmentDepth = density * (x1 - x0);
 #ifdef LIGHTSHAFT_DIRECTIONAL
-  vec3 sourceVC = sampleVC - sampleR * lightAxisVC;
+  vec3 sourceVC = fieldVC - fieldR * lightAxisVC;
 #else
   vec3 sourceVC = lightPositionVC;
 #endif
 #ifdef LIGHTSHAFT_FIELD_SHADOW
   // The light leg: the background over its length, the field's part looked up.
-  float lightLeg = densityBackground * length(sourceVC - sampleVC) +
-    densityScale * lightShaftFieldShadow(sampleVC);
+  float lightLeg = densityBackground * length(sourceVC - fieldVC) +
+    densityScale * lightShaftFieldShadow(fieldVC);
 #else
-  float lightLeg = lightShaftOpticalDepth(sampleVC, sourceVC);
+  float lightLeg = lightShaftOpticalDepth(fieldVC, sourceVC);
 #endif
   float depth = lightShaftOpticalDepthSoFar + 0.5 * segmentDepth + lightLeg;
   lightShaftOpticalDepthSoFar += segmentDepth;

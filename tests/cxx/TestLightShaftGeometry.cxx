@@ -29,6 +29,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -773,6 +774,24 @@ void TestFieldError()
   Check(std::abs(withTable.LightLegError - coarseTable) < 1e-12 &&
           withTable.QuadratureError[2] >= withTable.LightLegError,
     "the table's term is in every count's error");
+
+  // The scene's box: the probe rays end where they leave it, the medium in front of it seen.
+  // A floor's box is flat: the air above it is still measured, as much as with no box.
+  density.TableError = 0.0;
+  const vtkLightShaftFieldError::Probe open =
+    vtkLightShaftFieldError::Measure(density, frame, camera, samples);
+  const double floor[6] = { -8.0, 8.0, 0.0, 0.0, -8.0, 8.0 };
+  std::copy(floor, floor + 6, density.SceneBounds);
+  const vtkLightShaftFieldError::Probe overFloor =
+    vtkLightShaftFieldError::Measure(density, frame, camera, samples);
+  Check(overFloor.DensityDepth > 0.5 * open.DensityDepth && overFloor.QuadratureError[0] > 0.0,
+    "the medium above a flat scene is measured");
+  const double wall[6] = { -8.0, 8.0, -2.0, 8.0, 11.0, 11.5 }; // just in front of the eye
+  std::copy(wall, wall + 6, density.SceneBounds);
+  const vtkLightShaftFieldError::Probe blocked =
+    vtkLightShaftFieldError::Measure(density, frame, camera, samples);
+  Check(blocked.DensityDepth < 0.5 * open.DensityDepth,
+    "rays that pass through the scene's box before the lit part end there");
 
   density.Field = nullptr;
   probe = vtkLightShaftFieldError::Measure(density, frame, camera, samples);
