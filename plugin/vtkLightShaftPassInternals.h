@@ -78,11 +78,10 @@ public:
   /// With a TargetError: the table's term within half the target.
   void ResolveTableForTarget(vtkLightShaftFrame& frame,
     const std::vector<vtkLightShaftGeometry::LightFrame>& lights);
-  /// A view still for two frames or more, refining: the table's term within half of what the
-  /// setting's samples are predicted to make (vtkLightShaftPassSampling.cxx).
+  /// A still view refining: the table's term within half of what the setting's samples are
+  /// predicted to make (vtkLightShaftPassSampling.cxx).
   void RefineTableWhenStill(vtkLightShaftFrame& frame,
     const std::vector<vtkLightShaftGeometry::LightFrame>& lights);
-  bool LastViewStill = false; ///< the last frame's ViewStill
   /// The last ApplyErrorModel's features, one per radiating light.
   std::vector<vtkLightShaftErrorModel::Features> Features;
   vtkSmartPointer<vtkLightShaftMedium> Medium; ///< never nullptr (SetMedium)

@@ -117,9 +117,6 @@ vtkTextureObject* vtkLightShaftPass::Internals::ChooseSampling(vtkLightShaftFram
               std::max(this->Textures.GetImagesTime(), this->DensityTexture.GetUploadTime()))
           : vtkLightShaftRefinement::Signature();
   frame.ViewStill = signs && this->Refinement.IsStill(signature);
-  // Still for two frames or more: the camera did not stop with this frame.
-  const bool settled = frame.ViewStill && this->LastViewStill;
-  this->LastViewStill = frame.ViewStill;
   this->ApplyErrorModel(frame,
     lightFrames,
     cookie != nullptr || frame.Noise != nullptr || frame.Density != nullptr,
@@ -137,8 +134,9 @@ vtkTextureObject* vtkLightShaftPass::Internals::ChooseSampling(vtkLightShaftFram
     this->Finish.Stop();
   }
   this->KeepMovingSampling(frame, lightFrames, finishes);
-  if (settled)
+  if (frame.ViewStill && !(finishes && !this->Finish.IsActive()))
   {
+    // (Not on the frame that starts the exact finish: it shows the moving picture again.)
     this->RefineTableWhenStill(frame, lightFrames);
   }
   vtkLightShaftRefinement::SetSampling(signature, frame);
@@ -399,11 +397,12 @@ void vtkLightShaftPass::Internals::ResolveTableForTarget(vtkLightShaftFrame& fra
 //------------------------------------------------------------------------------
 // A still view's refinement averages estimates: it removes what the shifted samples scatter,
 // not the table's interpolation, which is the same in every estimate. So while the view is
-// still (from its second still frame: the one where the camera stopped stays as cheap as a
-// moving one) the table is refined where its term is more than half of what the setting's samples
+// still the table is refined where its term is more than half of what the setting's samples
 // are predicted to make, or the leg is marched; the new resolution starts a new history (the
-// sampling signs it). Left to the target's rule with a TargetError; nothing where the setting
-// has no prediction (parameters off the ladder).
+// sampling signs it). From the frame where the camera stops: its history holds one estimate
+// then (the moving frame's), so that the new one is never worse than the picture before. Left to
+// the target's rule with a TargetError; nothing where the setting has no prediction (parameters off
+// the ladder).
 void vtkLightShaftPass::Internals::RefineTableWhenStill(vtkLightShaftFrame& frame,
   const std::vector<vtkLightShaftGeometry::LightFrame>& lights)
 {
