@@ -401,15 +401,16 @@ void vtkLightShaftPass::Internals::ResolveTableForTarget(vtkLightShaftFrame& fra
 // are predicted to make, or the leg is marched; the new resolution starts a new history (the
 // sampling signs it). From the frame where the camera stops: its history holds one estimate
 // then (the moving frame's), so that the new one is never worse than the picture before. Left to
-// the target's rule with a TargetError; nothing where the setting has no prediction (parameters off
-// the ladder).
+// the target's rule with a TargetError; nothing under a frame budget (a table to build, or a
+// marched leg, would overrun it) or where the setting has no prediction (parameters off the
+// ladder).
 void vtkLightShaftPass::Internals::RefineTableWhenStill(vtkLightShaftFrame& frame,
   const std::vector<vtkLightShaftGeometry::LightFrame>& lights)
 {
   const vtkLightShaftParameters& p = frame.Parameters;
   const int setting = frame.Statistics.ErrorModelSetting;
   if (!p.ProgressiveRefinement || !frame.Density || p.TargetError > 0.0 || setting < 0 ||
-      p.DownsampleFactor != 1 || this->Features.empty())
+      p.DownsampleFactor != 1 || frame.Statistics.TimeBudget > 0.0 || this->Features.empty())
   {
     return;
   }
