@@ -611,7 +611,7 @@ def test_an_image_over_the_gl_3d_texture_size_is_resampled_with_one_warning(mess
     assert expected.max() > 0.0 and error < 0.002
 
 
-def test_a_still_view_refines_the_light_leg_table():
+def test_a_still_view_refines_the_light_leg_table(messages):
     # Refinement's estimates average what their shifted samples scatter, not the table's
     # interpolation, the same in each: a still view refines the table (or marches the leg)
     # where its term is over half of what the setting's samples make, from the frame where the
@@ -621,6 +621,7 @@ def test_a_still_view_refines_the_light_leg_table():
     # marched. The floor's box is flat: the error model's probe rays see the air above it (they
     # used to be cut to the box, and saw nothing).
     renderer, window, info, shafts = scene("point", 96, 72)
+    log = messages(shafts)
     shafts.SetQualityToFinal()
     shafts.ProgressiveRefinementOn()
     shafts.GetMedium().SetDensityField(wide_layer_image())
@@ -658,14 +659,16 @@ def test_a_still_view_refines_the_light_leg_table():
     shafts.ProgressiveRefinementOff()
     for _ in range(3):
         assert frame()[1] == moving[1]
+    assert not log.warnings and not log.errors
 
 
-def test_refining_a_dense_field_improves_on_the_first_estimate():
+def test_refining_a_dense_field_improves_on_the_first_estimate(messages):
     # Each estimate samples a medium from data at its pieces' midpoints (the pieces shifted):
     # looking it up off the centre, as the shadow is, made a dense plume's second estimate
     # worse than its first (0.60% then 1.46% on a random scene at 240x180). The plume's density
     # scaled up (optical depth about 10 through it), 32 steps.
     renderer, window, info, shafts = scene("pair", 96, 72)
+    log = messages(shafts)
     shafts.SetMethod(vtkLightShaftPass.RAY_MARCH)
     shafts.SetNumberOfSteps(32)
     shafts.SetInterleaveSize(1)
@@ -682,3 +685,4 @@ def test_refining_a_dense_field_improves_on_the_first_estimate():
     print("errors over the estimates:", " ".join(f"{100 * e:.3f}%" for e in errors))
     assert all(later <= 1.02 * errors[0] for later in errors[1:])
     assert errors[-1] < errors[0]
+    assert not log.warnings and not log.errors
