@@ -82,8 +82,14 @@ public:
   /// predicted to make (vtkLightShaftPassSampling.cxx).
   void RefineTableWhenStill(vtkLightShaftFrame& frame,
     const std::vector<vtkLightShaftGeometry::LightFrame>& lights);
-  /// The last ApplyErrorModel's features, one per radiating light.
+  /// The last ApplyErrorModel's features, one per radiating light (the table's term as the
+  /// frame's table has it).
   std::vector<vtkLightShaftErrorModel::Features> Features;
+  /// The lights as DescribeLights found them, kept while the view is still.
+  std::vector<vtkLightShaftErrorModel::Features> Described;
+  bool DescribedValid = false;
+  void DescribeLights(const vtkLightShaftFrame& frame,
+    const std::vector<vtkLightShaftGeometry::LightFrame>& lights);
   vtkSmartPointer<vtkLightShaftMedium> Medium; ///< never nullptr (SetMedium)
   vtkNew<vtkLightShaftFrameReport> LastFrame;
 

@@ -182,35 +182,20 @@ void vtkLightShaftPass::Internals::ApplyErrorModel(vtkLightShaftFrame& frame,
   {
     this->ResolveTableForTarget(frame, lights);
   }
-  std::vector<model::Features>& features = this->Features;
-  features.clear();
-  int lit = 0;
-  vtkLightShaftFieldError::Density density;
-  density.Field = frame.Density ? &this->DensityTexture.GetField() : nullptr;
-  density.Scale = frame.DensityScale;
-  density.Background = frame.DensityBackground;
-  if (frame.Density)
+  // A still view is described as it was (the probe of a field costs milliseconds a frame).
+  if (!still || !this->DescribedValid)
   {
-    frame.Renderer->ComputeVisiblePropBounds(density.SceneBounds);
+    this->DescribeLights(frame, lights);
   }
-  for (const vtkLightShaftGeometry::LightFrame& light : lights)
+  this->Features = this->Described;
+  const std::vector<model::Features>& features = this->Features;
+  int lit = 0;
+  for (const model::Features& light : this->Features)
   {
-    if (light.Model.Radiates())
+    lit += light.Lit ? 1 : 0;
+    if (light.Lit && !frame.Statistics.ErrorFeatures.Lit)
     {
-      if (frame.Density)
-      {
-        density.TableError = this->TableError(features.size(),
-          light.Model,
-          frame.Parameters.MediumShadowResolution,
-          frame.Medium.MaximumSigmaT() * frame.DensityScale);
-      }
-      features.push_back(
-        model::Describe(light, frame.Camera, frame.Medium, frame.Size[0], &density));
-      lit += features.back().Lit ? 1 : 0;
-      if (features.back().Lit && !frame.Statistics.ErrorFeatures.Lit)
-      {
-        frame.Statistics.ErrorFeatures = features.back();
-      }
+      frame.Statistics.ErrorFeatures = light;
     }
   }
   vtkLightShaftParameters& p = frame.Parameters;
@@ -289,6 +274,39 @@ void vtkLightShaftPass::Internals::KeepMovingSampling(vtkLightShaftFrame& frame,
     frame.Statistics.ErrorModelSetting = moving.Setting;
     frame.Statistics.PredictedError = movingError;
   }
+}
+
+//------------------------------------------------------------------------------
+// The error model's features of each light that radiates, a medium from data measured along
+// view rays (vtkLightShaftFieldError) with its light leg's table's error.
+void vtkLightShaftPass::Internals::DescribeLights(const vtkLightShaftFrame& frame,
+  const std::vector<vtkLightShaftGeometry::LightFrame>& lights)
+{
+  this->Described.clear();
+  vtkLightShaftFieldError::Density density;
+  density.Field = frame.Density ? &this->DensityTexture.GetField() : nullptr;
+  density.Scale = frame.DensityScale;
+  density.Background = frame.DensityBackground;
+  if (frame.Density)
+  {
+    frame.Renderer->ComputeVisiblePropBounds(density.SceneBounds);
+  }
+  for (const vtkLightShaftGeometry::LightFrame& light : lights)
+  {
+    if (light.Model.Radiates())
+    {
+      if (frame.Density)
+      {
+        density.TableError = this->TableError(this->Described.size(),
+          light.Model,
+          frame.Parameters.MediumShadowResolution,
+          frame.Medium.MaximumSigmaT() * frame.DensityScale);
+      }
+      this->Described.push_back(
+        model::Describe(light, frame.Camera, frame.Medium, frame.Size[0], &density));
+    }
+  }
+  this->DescribedValid = true;
 }
 
 //------------------------------------------------------------------------------
