@@ -24,6 +24,8 @@
 #                                      # error (docs/medium-field.md; about 2 min)
 #   tools/measure.sh field-still       # a still view refining the light leg's table through
 #                                      # random fields (docs/medium-field.md; about 1 min)
+#   tools/measure.sh field-still-cost  # a converged still frame through a field against the
+#                                      # homogeneous medium (docs/medium-field.md; 1 min)
 #   tools/measure.sh field-error-model # TargetError through a density field: the field
 #                                      # factors' calibration (seed 11) and validation (seed
 #                                      # 12) (docs/medium-field.md; about 30 min)
@@ -79,6 +81,7 @@ case "$what" in
   medium-field) run tests/benchmarks/medium_field_cost.py "$@" ;;
   medium-field-pareto) run tests/benchmarks/medium_field_pareto.py "$@" ;;
   field-still) run tests/benchmarks/field_still_refinement.py "$@" ;;
+  field-still-cost) run tests/benchmarks/field_still_frame_cost.py "$@" ;;
   field-error-model)
     run tests/benchmarks/field_error_model.py --seed 11 --scenes 16 "$@"
     run tests/benchmarks/field_error_model.py --seed 12 --scenes 16 "$@" ;;
