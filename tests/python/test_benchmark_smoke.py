@@ -229,6 +229,24 @@ def test_medium_field_benchmarks_smoke(tmp_path):
     assert (tmp_path / "images" / "medium_field_pareto.png").stat().st_size > 10000
 
 
+def test_field_still_benchmarks_smoke():
+    # A still view refining the light leg's table on a random field scene, and a converged
+    # still frame's cost through a field: they run and report each frame.
+    here = os.path.dirname(BENCHMARK)
+    result = subprocess.run([sys.executable, os.path.join(here, "field_still_refinement.py"),
+                             "--scenes", "17", "--size", "64", "48", "--frames", "1"],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    assert "scene 17 (layer, point light)" in result.stdout
+    assert "moving" in result.stdout and "still 1" in result.stdout
+    result = subprocess.run([sys.executable, os.path.join(here, "field_still_frame_cost.py"),
+                             "--size", "48", "36", "--frames", "2", "--moving", "1"],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    assert "a 48^3 plume: converged still frame median" in result.stdout
+    assert "homogeneous : converged still frame median" in result.stdout
+
+
 def test_translucent_cost_smoke():
     # The cost per layer of translucent casters: it runs and prints a row per pane count, the
     # layers peeled as many as the panes.
