@@ -130,10 +130,10 @@ public:
     const std::vector<vtkLight*>& lights,
     bool shadowSurfaces);
   /// The light's leg through the medium's field, tabulated (vtkLightShaftPassSampling.cxx):
-  /// `shadow` at the resolution set, `refined` at another a target or a still view chose (both
+  /// `asSet` at the resolution set, `refined` at another a target or a still view chose (both
   /// kept, so that neither is rebuilt when the view moves again).
   void ReadyFieldShadow(vtkLightShaftFrame& frame,
-    vtkLightShaftFieldShadow& shadow,
+    vtkLightShaftFieldShadow& asSet,
     vtkLightShaftFieldShadow& refined);
   /// The light's leg through the scene's vtkVolume, tabulated (vtkLightShaftPassSampling.cxx).
   void ReadyVolumeShadow(vtkLightShaftFrame& frame, vtkLightShaftFieldShadow& shadow);

@@ -511,8 +511,10 @@ void vtkLightShaftPass::Internals::ReadyVolumeShadow(vtkLightShaftFrame& frame,
     shadow.ReleaseGraphicsResources(frame.Window);
     return;
   }
-  const int resolution =
-    frame.Parameters.MediumShadowResolution > 0 ? frame.Parameters.MediumShadowResolution : 64;
+  // (The resolution set, not the one a target or a still view chose for the field's table:
+  // their rules measured the field's, and the volume's would be rebuilt at each change.)
+  const int set = this->Medium->GetFieldShadowResolution();
+  const int resolution = set > 0 ? set : 64;
   frame.VolumeShadow = shadow.Ready(frame.Window,
     this->VolumeTexture.GetField(),
     this->VolumeTexture.GetVersion(),
