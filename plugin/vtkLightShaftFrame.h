@@ -109,10 +109,12 @@ struct vtkLightShaftStatistics
   int ErrorModelSetting = -1;
   vtkLightShaftErrorModel::Features ErrorFeatures;
   /// Progressive refinement: the estimates averaged into the picture (0: off), whether it is
-  /// converged, and whether the in-scatter was the converged one, not computed again.
+  /// converged, whether the in-scatter was the converged one, not computed again, and the
+  /// width of the Gaussian that filtered the average (pixels; 0: none).
   int RefinementEstimates = 0;
   bool RefinementConverged = false;
   bool InScatterReused = false;
+  double RefinementFilterWidth = 0.0;
   /// The exact finish: its state (vtkLightShaftExactFinish::State as an int: 0 off, 1
   /// running, 2 complete, 3 unsupported, 4 failed), the share of pixels shown exact, and why
   /// it does not run (empty: nothing).
@@ -209,6 +211,9 @@ struct vtkLightShaftFrame
   double LookupFraction = 0.5;
   /// Progressive refinement's shift of the shadow maps' texel grid, in texels ([-0.5, 0.5)).
   double ShadowMapOffset[2] = { 0.0, 0.0 };
+  /// A refinement estimate after a history's first: the interleaved gather and the blur are
+  /// left out, the refined picture filters the average instead (vtkLightShaftRefinement).
+  bool Unfiltered = false;
 
   /// The method whose slab program the frame readied (the frame report's GetShaderVariant names
   /// it).

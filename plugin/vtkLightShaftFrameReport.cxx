@@ -62,6 +62,7 @@ void vtkLightShaftFrameReport::Publish(const vtkLightShaftFrame& frame,
   this->ErrorModelSetting = stats.ErrorModelSetting;
   this->RefinementEstimates = stats.RefinementEstimates;
   this->RefinementConverged = stats.RefinementConverged;
+  this->RefinementFilterWidth = stats.RefinementFilterWidth;
   this->InScatterReused = stats.InScatterReused;
   this->ExactFinishState = stats.ExactFinishState;
   this->ExactFinishFraction = stats.ExactFinishFraction;
@@ -240,6 +241,7 @@ void vtkLightShaftFrameReport::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FrameTime: " << this->FrameTime << "\n";
   os << indent << "RefinementEstimates: " << this->RefinementEstimates << "\n";
   os << indent << "RefinementConverged: " << this->RefinementConverged << "\n";
+  os << indent << "RefinementFilterWidth: " << this->RefinementFilterWidth << "\n";
   os << indent << "ExactFinishState: " << this->ExactFinishState << "\n";
   os << indent << "ExactFinishFraction: " << this->ExactFinishFraction << "\n";
   os << indent << "ExactFinishProblem: " << this->Impl->ExactFinishProblem << "\n";

@@ -139,12 +139,17 @@ public:
   ///@{
   /**
    * Progressive refinement: the estimates averaged into the picture (0: off, or nothing
-   * computed), whether it is converged, and whether the frame reused the converged in-scatter
-   * instead of computing it. Defaults are 0, false and false.
+   * computed; a picture of two estimates shows the first while the next is computed), whether
+   * it is converged, whether the frame reused the converged in-scatter instead of computing
+   * it, and the standard deviation in pixels of the Gaussian that filtered the average of
+   * estimates (0: none; the first estimate is filtered as the parameters say, the later ones
+   * are not: docs/quality-and-cost.md#interaction-frame-budget-and-refinement). Defaults are 0,
+   * false, false and 0.
    */
   vtkGetMacro(RefinementEstimates, int);
   vtkGetMacro(RefinementConverged, bool);
   vtkGetMacro(InScatterReused, bool);
+  vtkGetMacro(RefinementFilterWidth, double);
   ///@}
 
   /// The exact finish's states (vtkLightShaftPass::SetExactFinish).
@@ -247,6 +252,7 @@ protected:
   double FrameTime = -1.0;
   int RefinementEstimates = 0;
   bool RefinementConverged = false;
+  double RefinementFilterWidth = 0.0;
   bool InScatterReused = false;
   int ExactFinishState = EXACT_FINISH_OFF;
   double ExactFinishFraction = 0.0;

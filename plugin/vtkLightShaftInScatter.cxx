@@ -145,7 +145,7 @@ void vtkLightShaftInScatter::ClearTarget(vtkLightShaftFrame& frame, vtkLightShaf
 void vtkLightShaftInScatter::Add(vtkLightShaftFrame& frame, int method)
 {
   vtkLightShaftMethod* computing = this->GetMethod(method);
-  const bool direct = computing->AddsIntoTarget(frame.Parameters);
+  const bool direct = computing->AddsIntoTarget(frame);
   const vtkLightShaftGeometry::LitVolume lit =
     vtkLightShaftGeometry::ComputeLitVolume(frame.Light, frame.Camera);
   if (lit.Empty() || !frame.Light.Model.Radiates())

@@ -49,7 +49,7 @@ public:
    * clearing it: then several lights add up there directly; otherwise each light's result is
    * added into a sum. By default true.
    */
-  virtual bool AddsIntoTarget(const vtkLightShaftParameters&) const { return true; }
+  virtual bool AddsIntoTarget(const vtkLightShaftFrame&) const { return true; }
 
   /**
    * Compute L_in over the lit volume `lit` into `target` (prepared: cleared and bound). Returns

@@ -725,6 +725,7 @@ void vtkLightShaftPass::Internals::PublishRefinement(vtkLightShaftFrame& frame)
   using State = vtkLightShaftExactFinish::State;
   const State finish = this->Finish.GetState();
   frame.Statistics.RefinementEstimates = this->Refinement.GetEstimates();
+  frame.Statistics.RefinementFilterWidth = this->Refinement.GetPictureSigma();
   // With the finish asked for, the picture is final only once it completes (or the scene turns
   // out to be one it cannot model): a view converged at its first frame is not yet still.
   const vtkLightShaftParameters& p = frame.Parameters;

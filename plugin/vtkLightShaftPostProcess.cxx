@@ -22,7 +22,7 @@ vtkTextureObject* vtkLightShaftPostProcess::Render(vtkLightShaftFrame& frame,
   vtkTextureObject* fullDepth)
 {
   vtkTextureObject* current = inScatter;
-  if (frame.Parameters.BlurRadius > 0)
+  if (frame.Parameters.BlurRadius > 0 && !frame.Unfiltered)
   {
     current = this->Blur.Apply(frame, current, reducedDepth, frame.Parameters.BlurRadius, 0);
   }

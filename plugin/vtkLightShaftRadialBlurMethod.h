@@ -34,7 +34,7 @@ public:
   ~vtkLightShaftRadialBlurMethod() override;
 
   const char* GetName() const override { return "radial-blur"; }
-  bool AddsIntoTarget(const vtkLightShaftParameters&) const override { return false; }
+  bool AddsIntoTarget(const vtkLightShaftFrame&) const override { return false; }
   vtkTextureObject* Render(vtkLightShaftFrame& frame,
     const vtkLightShaftGeometry::LitVolume& lit,
     vtkLightShaftInScatterTarget& target) override;

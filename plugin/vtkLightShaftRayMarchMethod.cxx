@@ -19,9 +19,16 @@ vtkLightShaftRayMarchMethod::vtkLightShaftRayMarchMethod(vtkLightShaftSlabDrawer
 
 vtkLightShaftRayMarchMethod::~vtkLightShaftRayMarchMethod() = default;
 
-bool vtkLightShaftRayMarchMethod::AddsIntoTarget(const vtkLightShaftParameters& parameters) const
+// (Without the gather, each pixel's offset still differs from its neighbours': refinement's
+// picture averages them in its own filter.)
+bool vtkLightShaftRayMarchMethod::Gathers(const vtkLightShaftFrame& frame)
 {
-  return parameters.InterleaveSize <= 1; // else the gather writes another texture
+  return frame.Parameters.InterleaveSize > 1 && !frame.Unfiltered;
+}
+
+bool vtkLightShaftRayMarchMethod::AddsIntoTarget(const vtkLightShaftFrame& frame) const
+{
+  return !Gathers(frame); // the gather writes another texture
 }
 
 //------------------------------------------------------------------------------
@@ -55,7 +62,7 @@ vtkTextureObject* vtkLightShaftRayMarchMethod::Render(vtkLightShaftFrame& frame,
   frame.LightStatistics->SlicesDrawn = static_cast<int>(this->Footprints.size());
 
   vtkTextureObject* marched = target.GetAccumulation(0);
-  if (p.InterleaveSize > 1)
+  if (Gathers(frame))
   {
     // The gather: an unweighted, depth-aware mean over InterleaveSize consecutive pixels, in
     // x then in y.

@@ -30,13 +30,16 @@ public:
   ~vtkLightShaftRayMarchMethod() override;
 
   const char* GetName() const override { return "ray-march"; }
-  bool AddsIntoTarget(const vtkLightShaftParameters& parameters) const override;
+  bool AddsIntoTarget(const vtkLightShaftFrame& frame) const override;
   vtkTextureObject* Render(vtkLightShaftFrame& frame,
     const vtkLightShaftGeometry::LitVolume& lit,
     vtkLightShaftInScatterTarget& target) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
 private:
+  /// Whether the interleaved samples are gathered (not in refinement's later estimates).
+  static bool Gathers(const vtkLightShaftFrame& frame);
+
   vtkLightShaftSlabDrawer& Drawer;
   std::vector<vtkLightShaftGeometry::SlabFootprint> Footprints;
   vtkLightShaftSeparableFilter Gather;

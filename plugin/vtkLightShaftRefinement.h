@@ -6,10 +6,11 @@
 #ifndef vtkLightShaftRefinement_h
 #define vtkLightShaftRefinement_h
 
-#include "vtkLightShaftGeometry.h"  // For the camera matrices of the signature
-#include "vtkLightShaftResources.h" // For the owned textures and the full-screen pass
-#include "vtkSmartPointer.h"        // For the framebuffer held
-#include "vtkType.h"                // For vtkMTimeType
+#include "vtkLightShaftGeometry.h"        // For the camera matrices of the signature
+#include "vtkLightShaftResources.h"       // For the owned textures and the full-screen pass
+#include "vtkLightShaftSeparableFilter.h" // For the picture's filter
+#include "vtkSmartPointer.h"              // For the framebuffer held
+#include "vtkType.h"                      // For vtkMTimeType
 
 #include <utility> // For the signature's (object, MTime) pairs
 #include <vector>  // For the signature's objects
@@ -84,15 +85,33 @@ public:
   bool IsConverged() const { return this->Converged; }
 
   /**
-   * Add the frame's estimate (full resolution) into the history and return the history;
+   * Add the frame's estimate (full resolution) into the history and return the picture:
    * `rotates` says whether the estimate's samples moved with the rotation (when not, one
    * estimate is the converged picture). Refinement off: returns `estimate` unchanged.
+   *
+   * The first estimate is the picture without refinement, filtered as the parameters say (the
+   * interleaved gather, the blur); the later ones are not (frame.Unfiltered), so that the
+   * average converges to the unfiltered answer instead of keeping the filters' blur. The
+   * picture of n estimates is the average filtered by a Gaussian that holds the first
+   * picture's noise reduction: its samples along an axis times sqrt(n) are the first
+   * filters' (PictureSigma), none once the estimates alone hold that many.
    */
   vtkTextureObject* Accumulate(vtkLightShaftFrame& frame, vtkTextureObject* estimate, bool rotates);
-  /// The converged history (valid when IsConverged()).
+  /// The picture of the history (the converged one when IsConverged()).
   vtkTextureObject* GetHistory() const;
   /// Estimates in the picture the last frame showed (0: refinement off).
   int GetEstimates() const { return this->Estimates; }
+  /// The standard deviation, in pixels, of the Gaussian that filtered the last picture's
+  /// average (0: none).
+  double GetPictureSigma() const { return this->Sigma; }
+
+  /**
+   * The Gaussian's standard deviation (pixels of the estimates' resolution) for a picture of
+   * `estimates` estimates whose first was filtered to `firstSamples` effective samples along
+   * an axis (vtkLightShaftSeparableFilter::EffectiveSamples): 0 where the estimates alone
+   * average as many (firstSamples <= sqrt(estimates)).
+   */
+  static double PictureSigma(double firstSamples, int estimates);
 
   /// Forget the history (the next frame starts a new one).
   void Reset();
@@ -102,12 +121,21 @@ private:
   vtkLightShaftRefinement(const vtkLightShaftRefinement&) = delete;
   void operator=(const vtkLightShaftRefinement&) = delete;
 
+  /// The picture of the history after an estimate: `average`, filtered, or the one before.
+  vtkTextureObject* ChoosePicture(vtkLightShaftFrame& frame,
+    vtkTextureObject* previous,
+    vtkTextureObject* average);
+
   Signature Last;
   bool HasLast = false;
   int Estimates = 0;
   bool Converged = false;
   int Current = 0; ///< which of History holds the average
   vtkLightShaftResources::OwnedTexture History[2];
+  double FirstSamples = 1.0; ///< the first estimate's filters, along an axis
+  double Sigma = 0.0;
+  vtkTextureObject* Picture = nullptr; ///< the filtered average, or the average
+  vtkLightShaftSeparableFilter PictureFilter;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkLightShaftResources::FullScreenPass Average;
 };

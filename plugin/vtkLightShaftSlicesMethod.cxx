@@ -39,9 +39,9 @@ TextureKind vtkLightShaftSlicesMethod::AccumulationKind(const vtkLightShaftParam
   return this->vtkLightShaftMethod::AccumulationKind(parameters, buffers);
 }
 
-bool vtkLightShaftSlicesMethod::AddsIntoTarget(const vtkLightShaftParameters& parameters) const
+bool vtkLightShaftSlicesMethod::AddsIntoTarget(const vtkLightShaftFrame& frame) const
 {
-  return parameters.AccumulationPrecision != vtkLightShaftPass::ACCUMULATE_8BIT;
+  return frame.Parameters.AccumulationPrecision != vtkLightShaftPass::ACCUMULATE_8BIT;
 }
 
 //------------------------------------------------------------------------------

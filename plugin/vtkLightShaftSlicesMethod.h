@@ -35,7 +35,7 @@ public:
   const char* GetName() const override { return "slices"; }
   vtkLightShaftResources::TextureKind AccumulationKind(const vtkLightShaftParameters& parameters,
     int& buffers) const override;
-  bool AddsIntoTarget(const vtkLightShaftParameters& parameters) const override;
+  bool AddsIntoTarget(const vtkLightShaftFrame& frame) const override;
   vtkTextureObject* Render(vtkLightShaftFrame& frame,
     const vtkLightShaftGeometry::LitVolume& lit,
     vtkLightShaftInScatterTarget& target) override;

@@ -12,7 +12,8 @@ in vec2 texCoord;
 
 uniform sampler2D source;
 uniform ivec2 direction; // (1, 0) or (0, 1)
-uniform int radius;
+uniform int radius;   // the Gaussian's taps: -radius .. radius
+uniform float sigma;  // its standard deviation, in pixels
 uniform float depthTolerance;
 uniform int boxWidth;
 
@@ -22,7 +23,6 @@ void main()
   ivec2 p = ivec2(texCoord * vec2(size));
   vec2 ndc = 2.0 * (vec2(p) + 0.5) / targetSize - 1.0;
   float centreDepth = lightShaftViewDepth(ndc, texelFetch(sceneDepth, p, 0).r);
-  float sigma = max(0.5 * float(radius), 0.5);
   vec3 sum = vec3(0.0);
   float weights = 0.0;
   // The gather is centred: an even width takes the two end taps (the same residue) at half

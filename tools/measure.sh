@@ -11,6 +11,8 @@
 #                                      # (docs/budget.md)
 #   tools/measure.sh refinement-floor  # what the refined picture's floor is made of
 #                                      # (docs/refinement-floor.md; about 5 min)
+#   tools/measure.sh refinement-filters  # refinement with blur and interleaving, estimate by
+#                                      # estimate (docs/refinement-filters.md; about 3 min)
 #   tools/measure.sh exact-finish      # a still view with and without the exact finish after
 #                                      # the camera stops (docs/exact-finish.md; --scene sphere:
 #                                      # docs/exact-finish-sphere.md; about 1 min each)
@@ -75,6 +77,7 @@ case "$what" in
   refinement) run tests/benchmarks/refinement.py --output-dir docs "$@" ;;
   exact-finish) run tests/benchmarks/exact_finish.py --output-dir docs "$@" ;;
   refinement-floor) run tests/benchmarks/refinement_floor.py --output-dir docs "$@" ;;
+  refinement-filters) run tests/benchmarks/refinement_filters.py --output-dir docs "$@" ;;
   budget) run tests/benchmarks/budget.py --output-dir docs "$@" ;;
   reprojection) run tests/benchmarks/reprojection_bound.py --output docs/reprojection.md "$@" ;;
   resolution-cost) run tests/benchmarks/resolution_cost.py "$@" ;;

@@ -167,6 +167,22 @@ def test_refinement_benchmark_smoke(tmp_path):
     assert all(0.0 <= e < 100.0 for e in errors) and errors[-1] < errors[0]
 
 
+def test_refinement_filters_benchmark_smoke(tmp_path):
+    # Refinement with and without filters, estimate by estimate: it runs, writes its page with a
+    # row per setting asked for, and no picture is worse than the first.
+    script = os.path.join(os.path.dirname(BENCHMARK), "refinement_filters.py")
+    result = subprocess.run([sys.executable, script, "--size", "64", "36", "--estimates", "4",
+                             "--only", "RAY_MARCH 16", "--output-dir", str(tmp_path)],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    page = (tmp_path / "refinement-filters.md").read_text()
+    rows = [line.split("|") for line in page.splitlines() if line.startswith("| sphere")
+            or line.startswith("| window")]
+    assert [row[2].strip() for row in rows] == ["RAY_MARCH 16, 2x2, blur 2"] * 2
+    assert all(float(row[-3]) == 1.0 for row in rows)  # worst / first
+    assert "Before" not in page  # (the figures of another size are not shown)
+
+
 def test_budget_benchmark_smoke(tmp_path):
     script = os.path.join(os.path.dirname(BENCHMARK), "budget.py")
     result = subprocess.run([sys.executable, script, "--size", "96", "54", "--frames", "4",
