@@ -115,6 +115,10 @@ struct vtkLightShaftStatistics
   bool RefinementConverged = false;
   bool InScatterReused = false;
   double RefinementFilterWidth = 0.0;
+  /// Estimates per frame of the still setting (1: not split) and whether the picture shown is
+  /// the moving one, held until they add up to one.
+  int RefinementSplit = 1;
+  bool RefinementHeld = false;
   /// The exact finish: its state (vtkLightShaftExactFinish::State as an int: 0 off, 1
   /// running, 2 complete, 3 unsupported, 4 failed), the share of pixels shown exact, and why
   /// it does not run (empty: nothing).
@@ -214,6 +218,11 @@ struct vtkLightShaftFrame
   /// A refinement estimate after a history's first: the interleaved gather and the blur are
   /// left out, the refined picture filters the average instead (vtkLightShaftRefinement).
   bool Unfiltered = false;
+  /// Estimates that add up to one frame of the still setting: a still view after frames under
+  /// a budget marches a RefinementSplit-th of its steps per estimate where one frame of them
+  /// would overrun the budget, and refinement shows the moving picture until they add up to
+  /// one (vtkLightShaftPass::Internals::SplitStillSetting). 1: not split.
+  int RefinementSplit = 1;
 
   /// The method whose slab program the frame readied (the frame report's GetShaderVariant names
   /// it).

@@ -63,6 +63,8 @@ void vtkLightShaftFrameReport::Publish(const vtkLightShaftFrame& frame,
   this->RefinementEstimates = stats.RefinementEstimates;
   this->RefinementConverged = stats.RefinementConverged;
   this->RefinementFilterWidth = stats.RefinementFilterWidth;
+  this->RefinementSplit = stats.RefinementSplit;
+  this->RefinementHeld = stats.RefinementHeld;
   this->InScatterReused = stats.InScatterReused;
   this->ExactFinishState = stats.ExactFinishState;
   this->ExactFinishFraction = stats.ExactFinishFraction;
@@ -242,6 +244,8 @@ void vtkLightShaftFrameReport::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RefinementEstimates: " << this->RefinementEstimates << "\n";
   os << indent << "RefinementConverged: " << this->RefinementConverged << "\n";
   os << indent << "RefinementFilterWidth: " << this->RefinementFilterWidth << "\n";
+  os << indent << "RefinementSplit: " << this->RefinementSplit << "\n";
+  os << indent << "RefinementHeld: " << this->RefinementHeld << "\n";
   os << indent << "ExactFinishState: " << this->ExactFinishState << "\n";
   os << indent << "ExactFinishFraction: " << this->ExactFinishFraction << "\n";
   os << indent << "ExactFinishProblem: " << this->Impl->ExactFinishProblem << "\n";

@@ -143,13 +143,18 @@ public:
    * it is converged, whether the frame reused the converged in-scatter instead of computing
    * it, and the standard deviation in pixels of the Gaussian that filtered the average of
    * estimates (0: none; the first estimate is filtered as the parameters say, the later ones
-   * are not: docs/quality-and-cost.md#interaction-frame-budget-and-refinement). Defaults are 0,
-   * false, false and 0.
+   * are not: docs/quality-and-cost.md#interaction-frame-budget-and-refinement); the estimates
+   * that make one frame of the still setting (more than 1 where a still view after frames under
+   * a budget splits a ray march that would overrun the budget's frame among estimates), and
+   * whether the picture shown is the moving one, held until they add up to one. Defaults are 0,
+   * false, false, 0, 1 and false.
    */
   vtkGetMacro(RefinementEstimates, int);
   vtkGetMacro(RefinementConverged, bool);
   vtkGetMacro(InScatterReused, bool);
   vtkGetMacro(RefinementFilterWidth, double);
+  vtkGetMacro(RefinementSplit, int);
+  vtkGetMacro(RefinementHeld, bool);
   ///@}
 
   /// The exact finish's states (vtkLightShaftPass::SetExactFinish).
@@ -253,6 +258,8 @@ protected:
   int RefinementEstimates = 0;
   bool RefinementConverged = false;
   double RefinementFilterWidth = 0.0;
+  int RefinementSplit = 1;
+  bool RefinementHeld = false;
   bool InScatterReused = false;
   int ExactFinishState = EXACT_FINISH_OFF;
   double ExactFinishFraction = 0.0;

@@ -726,6 +726,14 @@ void vtkLightShaftPass::Internals::PublishRefinement(vtkLightShaftFrame& frame)
   const State finish = this->Finish.GetState();
   frame.Statistics.RefinementEstimates = this->Refinement.GetEstimates();
   frame.Statistics.RefinementFilterWidth = this->Refinement.GetPictureSigma();
+  frame.Statistics.RefinementSplit = this->Refinement.GetSplit();
+  frame.Statistics.RefinementHeld = this->Refinement.IsHolding();
+  if (this->Refinement.IsHoldingEarlierPicture())
+  {
+    // The picture shown is the moving frames' (the error model knows full resolution only).
+    const vtkLightShaftCostModel::Choice& moving = this->MovingChoice;
+    frame.Statistics.PredictedError = moving.DownsampleFactor == 1 ? moving.Error : -1.0;
+  }
   // With the finish asked for, the picture is final only once it completes (or the scene turns
   // out to be one it cannot model): a view converged at its first frame is not yet still.
   const vtkLightShaftParameters& p = frame.Parameters;

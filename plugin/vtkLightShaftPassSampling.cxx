@@ -21,6 +21,10 @@ namespace model = vtkLightShaftErrorModel;
 /// StillUpdateRate, 10000 s by default): no budget.
 constexpr double RestingAllocation = 10.0;
 
+/// The fewest steps a split still setting marches per estimate: below them the frame's fixed
+/// costs (the scene, the shadow map, the composite) outweigh its share of the steps.
+constexpr int MinimumSplitSteps = 8;
+
 /// The frame's parameters set to the ladder's `chosen` setting at `factor` (AUTOMATIC keeps its
 /// exact integral where nothing can shadow).
 void ApplySetting(vtkLightShaftFrame& frame,
@@ -134,6 +138,7 @@ vtkTextureObject* vtkLightShaftPass::Internals::ChooseSampling(vtkLightShaftFram
     this->Finish.Stop();
   }
   this->KeepMovingSampling(frame, lightFrames, finishes);
+  this->SplitStillSetting(frame);
   if (frame.ViewStill && !(finishes && !this->Finish.IsActive()))
   {
     // (Not on the frame that starts the exact finish: it shows the moving picture again.)
@@ -274,6 +279,44 @@ void vtkLightShaftPass::Internals::KeepMovingSampling(vtkLightShaftFrame& frame,
     frame.Statistics.ErrorModelSetting = moving.Setting;
     frame.Statistics.PredictedError = movingError;
   }
+}
+
+//------------------------------------------------------------------------------
+// Final without blocking: a still view after frames under a budget whose setting is a ray march
+// the cost model predicts longer than the budget's frame marches a power-of-two share of its
+// steps per estimate, the fewest shares whose frame fits (MinimumSplitSteps steps at least).
+// Each estimate shifts its steps' offset (R4), so that the shares interleave: together they
+// sample as one frame of the setting; refinement shows the moving picture until they add up to
+// one, and goes on to RefinementFrames such frames. Not through a medium from data or a volume:
+// their density is sampled at the pieces' midpoints, which longer pieces would coarsen.
+void vtkLightShaftPass::Internals::SplitStillSetting(vtkLightShaftFrame& frame)
+{
+  vtkLightShaftParameters& p = frame.Parameters;
+  const int setting = frame.Statistics.ErrorModelSetting;
+  const double budget = this->BudgetOfChoice;
+  frame.RefinementSplit = 1;
+  if (!frame.ViewStill || !p.ProgressiveRefinement || !this->HasMovingChoice ||
+      frame.Statistics.TimeBudget > 0.0 || setting < 0 || !(budget > 0.0) ||
+      p.Method != vtkLightShaftPass::RAY_MARCH || p.DownsampleFactor != 1 || frame.Density ||
+      this->Medium->GetDensityVolume())
+  {
+    return;
+  }
+  const int lit = static_cast<int>(std::count_if(this->Features.begin(),
+    this->Features.end(),
+    [](const model::Features& light) { return light.Lit; }));
+  const double pixels = double(frame.Size[0]) * frame.Size[1];
+  double trust = 1.0;
+  const double shafts = this->Costs.PredictShafts(setting, 1, pixels, lit, &trust);
+  const double rest = this->Costs.PredictRest(pixels);
+  int split = 1;
+  while (
+    shafts / split + rest > trust * budget && p.NumberOfSteps / (2 * split) >= MinimumSplitSteps)
+  {
+    split *= 2;
+  }
+  p.NumberOfSteps /= split;
+  frame.RefinementSplit = split;
 }
 
 //------------------------------------------------------------------------------

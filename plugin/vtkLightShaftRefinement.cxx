@@ -46,6 +46,20 @@ bool NearlyEqual(const glm::dmat4& a, const glm::dmat4& b)
 }
 }
 
+namespace
+{
+/// `index` (below `count`, a power of two) with its bits reversed.
+int BitReversed(int index, int count)
+{
+  int reversed = 0;
+  for (int bit = 1; bit < count; bit <<= 1)
+  {
+    reversed = (reversed << 1) | ((index & bit) ? 1 : 0);
+  }
+  return reversed;
+}
+}
+
 bool vtkLightShaftRefinement::Signature::SameScene(const Signature& other) const
 {
   return NearlyEqual(this->WorldToView, other.WorldToView) &&
@@ -140,6 +154,12 @@ void vtkLightShaftRefinement::Begin(vtkLightShaftFrame& frame, Signature&& signa
   const bool on = frame.Parameters.ProgressiveRefinement;
   if (!on || !this->HasLast || !(signature == this->Last))
   {
+    // A split setting starts from the picture it replaces, where that shows the same scene.
+    const bool hasPicture = this->HasLast && this->Estimates > 0 && this->IsStill(signature);
+    this->HoldSource =
+      (on && hasPicture && frame.RefinementSplit > 1) ? this->GetHistory() : nullptr;
+    this->Holding = false;
+    this->Split = on ? std::max(frame.RefinementSplit, 1) : 1;
     this->Estimates = 0;
     this->Converged = false;
     this->Picture = nullptr;
@@ -150,13 +170,19 @@ void vtkLightShaftRefinement::Begin(vtkLightShaftFrame& frame, Signature&& signa
   // The R4 sequence (Roberts 2018): the n-th estimate's shifts fall where the earlier ones left
   // the largest gaps, so n estimates sample their (step offset, lookup, map offset) space about
   // as evenly as a grid would. Estimate 0 has no shift.
-  const double n = on ? this->Estimates : 0.0;
+  // A split setting (Split estimates of a Split-th of the steps each) shifts as the setting's
+  // n-th estimate would for each group of Split, its estimates looking up the Split parts of
+  // each long piece that are the setting's short pieces (in bit-reversed order: a group's first
+  // estimates spread over the piece): together, a group samples as one frame of the setting.
+  const int split = on ? this->Split : 1;
+  const int n = on ? this->Estimates / split : 0;
+  const int part = on ? this->Estimates % split : 0;
   const double alpha[4] = {
     0.8566748838545029, 0.7338918566271260, 0.6287067210378087, 0.5385972572236101
   }; // 1 / g^i, g^5 = g + 1
   double whole = 0.0;
-  frame.SamplingRotation = std::modf(n * alpha[0], &whole);
-  frame.LookupFraction = std::modf(0.5 + n * alpha[1], &whole);
+  frame.SamplingRotation = std::modf(n * alpha[0], &whole) / split;
+  frame.LookupFraction = (BitReversed(part, split) + std::modf(0.5 + n * alpha[1], &whole)) / split;
   frame.ShadowMapOffset[0] = std::modf(0.5 + n * alpha[2], &whole) - 0.5;
   frame.ShadowMapOffset[1] = std::modf(0.5 + n * alpha[3], &whole) - 0.5;
   frame.Unfiltered = on && this->Estimates > 0;
@@ -251,6 +277,13 @@ vtkTextureObject* vtkLightShaftRefinement::Accumulate(vtkLightShaftFrame& frame,
   {
     return estimate;
   }
+  if (this->Estimates == 0 && this->HoldSource)
+  {
+    this->HoldPicture(frame, this->HoldSource); // before the estimate overwrites it
+    program = this->Average.Ready(frame.Window, vtkLightShaftRefineFS);
+    this->HoldSource = nullptr;
+    vtkLightShaftResources::BindTargets(this->Framebuffer, { target }, nullptr, w, h);
+  }
   // The first estimate reads no history (its weight is 1): the estimate stands in for it.
   vtkTextureObject* mean = (this->Estimates == 0 || !previous) ? nullptr : previous;
   estimate->Activate();
@@ -271,8 +304,39 @@ vtkTextureObject* vtkLightShaftRefinement::Accumulate(vtkLightShaftFrame& frame,
   estimate->Deactivate();
   this->Current = next;
   ++this->Estimates;
-  this->Converged = !rotates || this->Estimates >= frame.Parameters.RefinementFrames;
-  return this->ChoosePicture(frame, previous, target);
+  this->Converged = !rotates || this->Estimates >= frame.Parameters.RefinementFrames * this->Split;
+  vtkTextureObject* picture = this->ChoosePicture(frame, previous, target);
+  if (this->Split > 1 && this->Estimates % this->Split == 0 && !this->Converged)
+  {
+    this->HoldPicture(frame, picture); // shown until the next group is complete
+  }
+  return this->IsHolding() ? this->Held.Object.Get() : picture;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftRefinement::HoldPicture(vtkLightShaftFrame& frame, vtkTextureObject* source)
+{
+  const int w = frame.Size[0];
+  const int h = frame.Size[1];
+  if (static_cast<int>(source->GetWidth()) != w || static_cast<int>(source->GetHeight()) != h)
+  {
+    return; // (the same scene: the same viewport)
+  }
+  vtkTextureObject* held = this->Held.Ensure(frame.Window, TextureKind::RGBA32F, w, h);
+  vtkLightShaftResources::BindTargets(this->Framebuffer, { held }, nullptr, w, h);
+  vtkShaderProgram* copy = this->Average.Ready(frame.Window, vtkLightShaftRefineFS);
+  if (!copy)
+  {
+    return;
+  }
+  source->Activate();
+  copy->SetUniformi("estimate", source->GetTextureUnit());
+  copy->SetUniformi("history", source->GetTextureUnit());
+  copy->SetUniformf("estimateWeight", 1.0f);
+  this->Average.Render();
+  ++frame.Statistics.PostPasses;
+  source->Deactivate();
+  this->Holding = true;
 }
 
 //------------------------------------------------------------------------------
@@ -296,7 +360,7 @@ vtkTextureObject* vtkLightShaftRefinement::ChoosePicture(vtkLightShaftFrame& fra
   this->Sigma = this->Estimates > 1 ? PictureSigma(this->FirstSamples, this->Estimates) : 0.0;
   this->Sigma *= static_cast<double>(w) / frame.Reduced[0];
   this->Picture = average;
-  if (this->Estimates == 2 && !this->Converged)
+  if (this->Estimates == 2 && !this->Converged && this->Split == 1)
   {
     this->Picture = previous;
     this->Sigma = 0.0;
@@ -316,6 +380,10 @@ vtkTextureObject* vtkLightShaftRefinement::ChoosePicture(vtkLightShaftFrame& fra
 //------------------------------------------------------------------------------
 vtkTextureObject* vtkLightShaftRefinement::GetHistory() const
 {
+  if (this->IsHolding())
+  {
+    return this->Held.Object.Get();
+  }
   return this->Picture ? this->Picture : this->History[this->Current].Object.Get();
 }
 
@@ -327,11 +395,15 @@ void vtkLightShaftRefinement::Reset()
   this->Converged = false;
   this->Picture = nullptr;
   this->Sigma = 0.0;
+  this->HoldSource = nullptr;
+  this->Holding = false;
+  this->Split = 1;
 }
 
 void vtkLightShaftRefinement::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Reset();
+  this->Held.Release(window);
   this->History[0].Release(window);
   this->History[1].Release(window);
   this->Average.Release(window);

@@ -101,6 +101,25 @@ public:
   vtkTextureObject* GetHistory() const;
   /// Estimates in the picture the last frame showed (0: refinement off).
   int GetEstimates() const { return this->Estimates; }
+  /// Estimates per frame of the still setting (frame.RefinementSplit at the history's start).
+  int GetSplit() const { return this->Split; }
+  /**
+   * Whether the picture shown is an earlier one, held: a split still setting
+   * (frame.RefinementSplit > 1) shows the picture before its history (where that shows the same
+   * scene) until its estimates add up to one frame of the setting, whose picture the error
+   * model predicts (never worse when the camera stops, docs/quality-and-cost.md), and then the
+   * picture of its last complete group of estimates (a partial group's lookups cover only part
+   * of each piece).
+   */
+  bool IsHolding() const
+  {
+    return this->Holding && this->Estimates % this->Split != 0 && !this->Converged;
+  }
+  /// Whether the picture held is the one before the history (no group of estimates complete).
+  bool IsHoldingEarlierPicture() const
+  {
+    return this->IsHolding() && this->Estimates < this->Split;
+  }
   /// The standard deviation, in pixels, of the Gaussian that filtered the last picture's
   /// average (0: none).
   double GetPictureSigma() const { return this->Sigma; }
@@ -125,11 +144,17 @@ private:
   vtkTextureObject* ChoosePicture(vtkLightShaftFrame& frame,
     vtkTextureObject* previous,
     vtkTextureObject* average);
+  /// `source` (the picture before the history, or a complete group's) copied into Held.
+  void HoldPicture(vtkLightShaftFrame& frame, vtkTextureObject* source);
 
   Signature Last;
   bool HasLast = false;
   int Estimates = 0;
   bool Converged = false;
+  int Split = 1;                          ///< estimates per frame of the still setting
+  vtkTextureObject* HoldSource = nullptr; ///< the picture to hold, until the first estimate
+  bool Holding = false;                   ///< Held holds a picture to show
+  vtkLightShaftResources::OwnedTexture Held;
   int Current = 0; ///< which of History holds the average
   vtkLightShaftResources::OwnedTexture History[2];
   double FirstSamples = 1.0; ///< the first estimate's filters, along an axis

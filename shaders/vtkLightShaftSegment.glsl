@@ -73,6 +73,7 @@ float lightShaftAttenuationIntegral(float x0, float x1, float h2)
 // medium from data at the midpoint always.
 #ifdef LIGHTSHAFT_REFINE
 uniform float lookupFraction; // where in a piece (of u) its lookups are; 0.5: the midpoint
+uniform float lookupShare;    // the part of the piece a lookup stands for (a split setting's)
 #endif
 
 //VTK::LightShaft::CameraLayers
@@ -118,8 +119,12 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
 #ifdef LIGHTSHAFT_LIGHT_SPACE
   // The sample stands for a pixel-wide, segment-long footprint: its size in light-square widths
   // picks the mip level, so cookie and noise are pre-filtered instead of aliasing.
+  float pieceLength = x1 - x0;
+#ifdef LIGHTSHAFT_REFINE
+  pieceLength *= lookupShare;
+#endif
   float footprint = max(pixelFootprint.x * (-sampleVC.z) + pixelFootprint.y,
-    (x1 - x0) * sampleSinTheta);
+    pieceLength * sampleSinTheta);
   float footprintInSquares =
     footprint / max(lightSquareWidth.x * sampleR + lightSquareWidth.y, 1e-30);
 #endif

@@ -101,7 +101,8 @@ def render_converged(window, shafts, max_frames=None):
     """Render `window` until the still picture of `shafts` (a vtkLightShaftPass) is converged:
     switches its ProgressiveRefinement on (and leaves it on) and renders until
     GetLastFrame().GetRefinementConverged(), at most `max_frames` estimates (default: its
-    RefinementFrames). With ExactFinish on it also waits for the exact finish to complete,
+    RefinementFrames, times the frame's GetRefinementSplit() where a still view after frames
+    under a budget splits its setting among estimates). With ExactFinish on it also waits for the exact finish to complete,
     rendering every 50 ms once the estimates are done.
     Returns the number of frames rendered. For offscreen batch renders:
 
@@ -113,11 +114,13 @@ def render_converged(window, shafts, max_frames=None):
     shafts.ProgressiveRefinementOn()
     limit = shafts.GetRefinementFrames() if max_frames is None else int(max_frames)
     frames = estimates = 0
-    while estimates < max(limit, 1):
+    split = 1
+    while estimates < max(limit * split, 1):
         window.Render()
         frames += 1
         # Converged, or nothing to refine (no shafts were computed).
         frame = shafts.GetLastFrame()
+        split = frame.GetRefinementSplit() if max_frames is None else 1
         if frame.GetRefinementConverged() or frame.GetRefinementEstimates() == 0:
             break
         if _finishing_only(shafts):

@@ -246,3 +246,106 @@ def test_a_still_view_takes_its_own_setting_where_the_model_cannot_compare():
     window.Render()
     assert setting_name(shafts) == "M256 i1 m2048"
     assert shafts.GetLastFrame().GetDownsampleFactor() == 1
+
+
+FINAL_STEPS = 256  # the Final preset's ray march ("M256 i1 m2048")
+
+
+def final_after_moving(rate, refinement_frames=2):
+    """The sphere scene at the Final preset, refined while still, after frames under `rate`
+    (an interactor's DesiredUpdateRate) and one still frame."""
+    renderer, window, info, shafts = budget_scene(RefinementFrames=refinement_frames)
+    shafts.SetQualityToFinal()
+    shafts.ProgressiveRefinementOn()
+    moving = move_under_rate(renderer, window, shafts, rate)
+    window.Render()  # the camera stopped
+    return renderer, window, shafts, moving
+
+
+def test_a_still_setting_that_overruns_the_budget_is_split_among_estimates():
+    # Moving under a budget nothing fits (a microsecond), the still Final frame would overrun
+    # it: each estimate marches a power-of-two share of its steps, the fewest predicted to fit
+    # and 8 steps at least (here: none fits, so 8 steps, 32 estimates a Final frame). The
+    # picture shown is the moving one, bit for bit, until they add up to one Final frame.
+    renderer, window, shafts, (_, factor, _, moving) = final_after_moving(rate=1e6)
+    assert factor == 4
+    split = FINAL_STEPS // 8
+    for estimates in range(1, split):
+        frame = shafts.GetLastFrame()
+        assert (frame.GetRefinementSplit(), frame.GetNumberOfSteps()) == (split, 8)
+        assert setting_name(shafts) == "M256 i1 m2048"
+        assert frame.GetRefinementEstimates() == estimates and frame.GetRefinementHeld()
+        assert frame.GetPredictedError() == -1.0  # the moving picture's: at 1/4, unknown
+        np.testing.assert_array_equal(rh.in_scatter(shafts), moving)
+        window.Render()
+    frame = shafts.GetLastFrame()
+    assert frame.GetRefinementEstimates() == split and not frame.GetRefinementHeld()
+    assert frame.GetPredictedError() > 0.0 and not frame.GetRefinementConverged()
+    split_picture = rh.in_scatter(shafts)
+    exact = rh.scene_reference(renderer, shafts)
+    split_error = ref.relative_rms_error(split_picture, exact)[0]
+    # The split estimates sample as one Final frame does.
+    whole = vtkLightShaftPass()
+    whole.GetMedium().SetScatteringCoefficient(0.05)
+    whole.SetQualityToFinal()
+    renderer.SetPass(whole)
+    window.Render()
+    whole_error = ref.relative_rms_error(rh.in_scatter(whole), exact)[0]
+    print(f"split into {split}: {100 * split_error:.3f}%, one Final frame: "
+          f"{100 * whole_error:.3f}%")
+    assert split_error <= 1.1 * whole_error
+    # Refinement goes on to RefinementFrames (2) Final frames' worth, showing the first one's
+    # picture until the second is complete (a partial group looks up only part of each piece).
+    renderer.SetPass(shafts)
+    for estimates in range(split + 1, 2 * split):
+        window.Render()
+        frame = shafts.GetLastFrame()
+        assert frame.GetRefinementEstimates() == estimates and frame.GetRefinementHeld()
+        assert not frame.GetRefinementConverged()
+        np.testing.assert_array_equal(rh.in_scatter(shafts), split_picture)
+    window.Render()
+    frame = shafts.GetLastFrame()
+    assert frame.GetRefinementEstimates() == 2 * split and frame.GetRefinementConverged()
+    assert not frame.GetRefinementHeld()
+    assert ref.relative_rms_error(rh.in_scatter(shafts), exact)[0] < split_error
+
+
+def test_a_still_setting_within_the_budget_is_not_split():
+    # A budget of seconds: the moving frames ran Final themselves, and so does the still view.
+    renderer, window, shafts, (name, factor, _, _) = final_after_moving(rate=0.2)
+    assert (name, factor) == ("M256 i1 m2048", 1)
+    frame = shafts.GetLastFrame()
+    assert (frame.GetRefinementSplit(), frame.GetNumberOfSteps()) == (1, FINAL_STEPS)
+    assert not frame.GetRefinementHeld()
+
+
+def test_without_frames_under_a_budget_nothing_is_split():
+    renderer, window, info, shafts = budget_scene(RefinementFrames=2)
+    shafts.SetQualityToFinal()
+    shafts.ProgressiveRefinementOn()
+    for _ in range(2):
+        window.Render()
+        frame = shafts.GetLastFrame()
+        assert (frame.GetRefinementSplit(), frame.GetNumberOfSteps()) == (1, FINAL_STEPS)
+        assert not frame.GetRefinementHeld()
+
+
+@pytest.mark.parametrize("change", ["camera", "time", "light", "off"])
+def test_any_change_ends_a_split_still_view_and_its_held_picture(change):
+    renderer, window, shafts, _ = final_after_moving(rate=1e6)
+    window.Render()
+    assert shafts.GetLastFrame().GetRefinementHeld()
+    if change == "camera":
+        renderer.GetActiveCamera().Azimuth(1.0)
+    elif change == "time":
+        parameter_owner(shafts, "Time").SetTime(1.0)
+    elif change == "light":
+        renderer.GetLights().GetItemAsObject(0).SetIntensity(0.5)
+    else:
+        shafts.ProgressiveRefinementOff()
+    window.Render()
+    frame = shafts.GetLastFrame()
+    # No budget now: the setting asked for, whole, its own picture.
+    assert (frame.GetRefinementSplit(), frame.GetNumberOfSteps()) == (1, FINAL_STEPS)
+    assert not frame.GetRefinementHeld()
+    assert frame.GetRefinementEstimates() == (0 if change == "off" else 1)

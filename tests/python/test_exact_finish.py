@@ -187,6 +187,31 @@ def test_the_first_still_frame_after_a_budget_shows_the_moving_picture():
     assert np.abs(rh.in_scatter(shafts) - exact).max() <= 1e-6 * exact.max()
 
 
+def test_a_split_still_setting_holds_the_moving_picture_under_the_tiles():
+    # Final after a budget nothing fits: the frame that starts the finish shows the moving
+    # picture, the split estimates that follow hold it (with the finished tiles over it) until
+    # they add up to a Final frame, and the finish completes at the reference.
+    renderer, window, shafts, _ = finishing_scene()
+    shafts.SetQualityToFinal()
+    try:
+        window.SetDesiredUpdateRate(1e6)
+        for _ in range(3):
+            renderer.GetActiveCamera().Azimuth(0.5)
+            window.Render()
+    finally:
+        window.SetDesiredUpdateRate(0.0001)
+    window.Render()
+    assert shafts.GetLastFrame().GetExactFinishState() == RUNNING
+    window.Render()
+    frame = shafts.GetLastFrame()
+    assert frame.GetRefinementSplit() == 32 and frame.GetRefinementEstimates() == 1
+    assert frame.GetRefinementHeld() or frame.GetExactFinishState() == COMPLETE
+    frame = render_until_complete(window, shafts)
+    assert frame.GetExactFinishState() == COMPLETE
+    exact = rh.scene_reference(renderer, shafts)
+    assert np.abs(rh.in_scatter(shafts) - exact).max() <= 1e-6 * exact.max()
+
+
 def test_render_converged_waits_for_the_finish():
     # The batch helper renders until the picture is final: with ExactFinish, the reference's.
     from lightshafts import render_converged

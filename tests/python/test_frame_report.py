@@ -26,7 +26,7 @@ BEFORE_ANY_FRAME = {
     "BeamWidthInPixels": 0.0, "OpticalDepth": 0.0, "ShadowTexelInPixels": 0.0,
     "LightInView": False, "TimeBudget": 0.0, "PredictedFrameTime": -1.0, "FrameTime": -1.0,
     "RefinementEstimates": 0, "RefinementConverged": False, "InScatterReused": False,
-    "RefinementFilterWidth": 0.0,
+    "RefinementFilterWidth": 0.0, "RefinementSplit": 1, "RefinementHeld": False,
     "NumberOfUsedLights": 0,
 }
 # Per-light read-out -> its documented value out of range.
