@@ -16,6 +16,9 @@
 #   tools/measure.sh exact-finish      # a still view with and without the exact finish after
 #                                      # the camera stops (docs/exact-finish.md; --scene sphere:
 #                                      # docs/exact-finish-sphere.md; about 1 min each)
+#   tools/measure.sh still-final       # the Final preset in a still view after frames under a
+#                                      # budget, whole or split among estimates
+#                                      # (docs/still-final.md; about 2 min)
 #   tools/measure.sh reprojection      # what carrying the picture to the next camera costs
 #                                      # (docs/reprojection.md)
 #   tools/measure.sh resolution-cost   # how the budget's settings' time follows the resolution
@@ -79,6 +82,7 @@ case "$what" in
   refinement-floor) run tests/benchmarks/refinement_floor.py --output-dir docs "$@" ;;
   refinement-filters) run tests/benchmarks/refinement_filters.py --output-dir docs "$@" ;;
   budget) run tests/benchmarks/budget.py --output-dir docs "$@" ;;
+  still-final) run tests/benchmarks/still_final.py --output-dir docs "$@" ;;
   reprojection) run tests/benchmarks/reprojection_bound.py --output docs/reprojection.md "$@" ;;
   resolution-cost) run tests/benchmarks/resolution_cost.py "$@" ;;
   medium-field) run tests/benchmarks/medium_field_cost.py "$@" ;;

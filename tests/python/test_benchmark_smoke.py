@@ -274,3 +274,21 @@ def test_translucent_cost_smoke():
             if line.startswith("| ") and not line.startswith("| panes")]
     assert [int(row[1]) for row in rows] == [0, 1, 2]
     assert [int(row[2]) for row in rows] == [0, 1, 2]
+
+
+def test_still_final_benchmark_smoke(tmp_path):
+    # The Final preset still, whole and split: under a budget nothing fits (an interactor's
+    # rate of a million) the still view splits Final into 32 estimates of 8 steps, shows the
+    # moving picture until they add up to one Final frame, and then reaches its error.
+    script = os.path.join(os.path.dirname(BENCHMARK), "still_final.py")
+    result = subprocess.run([sys.executable, script, "--size", "96", "54", "--frames", "3",
+                             "--rate", "1e6", "--seconds", "60", "--output-dir", str(tmp_path)],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    text = (tmp_path / "still-final.md").read_text()
+    whole, split = [line for line in text.splitlines() if line.startswith(("- Whole", "- Split"))]
+    assert "split 1)" in whole and "split 32)" in split
+    assert "not within the run" not in split
+    rows = [line.split("|") for line in text.splitlines() if line.startswith("| ") and " ms |" in line]
+    held = [row for row in rows if row[8].strip() == "yes"]
+    assert held and all(int(row[7]) < 32 for row in held)
