@@ -278,7 +278,7 @@ def test_translucent_cost_smoke():
 
 def test_still_final_benchmark_smoke(tmp_path):
     # The Final preset still, whole and split: under a budget nothing fits (an interactor's
-    # rate of a million) the still view splits Final into 32 estimates of 8 steps, shows the
+    # rate of a million) the still view splits Final into 16 estimates of 16 steps, shows the
     # moving picture until they add up to one Final frame, and then reaches its error.
     script = os.path.join(os.path.dirname(BENCHMARK), "still_final.py")
     result = subprocess.run([sys.executable, script, "--size", "96", "54", "--frames", "3",
@@ -287,8 +287,8 @@ def test_still_final_benchmark_smoke(tmp_path):
     assert result.returncode == 0, result.stderr
     text = (tmp_path / "still-final.md").read_text()
     whole, split = [line for line in text.splitlines() if line.startswith(("- Whole", "- Split"))]
-    assert "split 1)" in whole and "split 32)" in split
+    assert "split 1)" in whole and "split 16)" in split
     assert "not within the run" not in split
     rows = [line.split("|") for line in text.splitlines() if line.startswith("| ") and " ms |" in line]
     held = [row for row in rows if row[8].strip() == "yes"]
-    assert held and all(int(row[7]) < 32 for row in held)
+    assert held and all(int(row[7]) < 16 for row in held)

@@ -204,7 +204,7 @@ def test_a_split_still_setting_holds_the_moving_picture_under_the_tiles():
     assert shafts.GetLastFrame().GetExactFinishState() == RUNNING
     window.Render()
     frame = shafts.GetLastFrame()
-    assert frame.GetRefinementSplit() == 32 and frame.GetRefinementEstimates() == 1
+    assert frame.GetRefinementSplit() == 16 and frame.GetRefinementEstimates() == 1
     assert frame.GetRefinementHeld() or frame.GetExactFinishState() == COMPLETE
     frame = render_until_complete(window, shafts)
     assert frame.GetExactFinishState() == COMPLETE
