@@ -116,7 +116,7 @@ struct vtkLightShaftStatistics
   bool InScatterReused = false;
   double RefinementFilterWidth = 0.0;
   /// Estimates per frame of the still setting (1: not split) and whether the picture shown is
-  /// the moving one, held until they add up to one.
+  /// an earlier one, held (the moving one, or the last complete group's of a split setting).
   int RefinementSplit = 1;
   bool RefinementHeld = false;
   /// The exact finish: its state (vtkLightShaftExactFinish::State as an int: 0 off, 1
@@ -221,7 +221,8 @@ struct vtkLightShaftFrame
   /// Estimates that add up to one frame of the still setting: a still view after frames under
   /// a budget marches a RefinementSplit-th of its steps per estimate where one frame of them
   /// would overrun the budget, and refinement shows the moving picture until they add up to
-  /// one (vtkLightShaftPass::Internals::SplitStillSetting). 1: not split.
+  /// one, then each complete group's (vtkLightShaftPass::Internals::SplitStillSetting). 1: not
+  /// split.
   int RefinementSplit = 1;
 
   /// The method whose slab program the frame readied (the frame report's GetShaderVariant names

@@ -146,8 +146,9 @@ public:
    * are not: docs/quality-and-cost.md#interaction-frame-budget-and-refinement); the estimates
    * that make one frame of the still setting (more than 1 where a still view after frames under
    * a budget splits a ray march that would overrun the budget's frame among estimates), and
-   * whether the picture shown is the moving one, held until they add up to one. Defaults are 0,
-   * false, false, 0, 1 and false.
+   * whether the picture shown is an earlier one, held (the moving one until they add up to one
+   * frame of the setting, then the last complete group's). Defaults are 0, false, false, 0, 1
+   * and false.
    */
   vtkGetMacro(RefinementEstimates, int);
   vtkGetMacro(RefinementConverged, bool);

@@ -288,10 +288,11 @@ void vtkLightShaftPass::Internals::KeepMovingSampling(vtkLightShaftFrame& frame,
 // Final without blocking: a still view after frames under a budget whose setting is a ray march
 // the cost model predicts longer than the budget's frame marches a power-of-two share of its
 // steps per estimate, the fewest shares whose frame fits (MinimumSplitSteps steps at least).
-// Each estimate shifts its steps' offset (R4), so that the shares interleave: together they
-// sample as one frame of the setting; refinement shows the moving picture until they add up to
-// one, and goes on to RefinementFrames such frames. Not through a medium from data or a volume:
-// their density is sampled at the pieces' midpoints, which longer pieces would coarsen.
+// Each group of that many estimates samples as one frame of the setting (each looks up its part
+// of the longer pieces: vtkLightShaftRefinement::Begin); refinement shows the moving picture
+// until a group is complete, and goes on to RefinementFrames groups. Not through a medium from data
+// or a volume: their density is sampled at the pieces' midpoints, which longer pieces would
+// coarsen.
 void vtkLightShaftPass::Internals::SplitStillSetting(vtkLightShaftFrame& frame)
 {
   vtkLightShaftParameters& p = frame.Parameters;

@@ -318,6 +318,11 @@ void vtkLightShaftRefinement::HoldPicture(vtkLightShaftFrame& frame, vtkTextureO
 {
   const int w = frame.Size[0];
   const int h = frame.Size[1];
+  if (source == this->Held.Object)
+  {
+    this->Holding = true; // (already held)
+    return;
+  }
   if (static_cast<int>(source->GetWidth()) != w || static_cast<int>(source->GetHeight()) != h)
   {
     return; // (the same scene: the same viewport)
