@@ -105,11 +105,8 @@ int vtkLightShaftInScatter::ChooseMethod(const vtkLightShaftFrame& frame)
 }
 
 //------------------------------------------------------------------------------
-void vtkLightShaftInScatter::Begin(vtkLightShaftFrame& frame)
+std::vector<vtkProp*> vtkLightShaftInScatter::TranslucentProps(const vtkLightShaftFrame& frame)
 {
-  this->Target.PrepareDepth(frame);
-  // The translucent surfaces in front of the opaque scene, as the camera sees them: what lies
-  // behind them, shafts included, is dimmed by VTK's blending.
   std::vector<vtkProp*> translucent;
   const vtkRenderState* s = frame.State;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
@@ -120,8 +117,17 @@ void vtkLightShaftInScatter::Begin(vtkLightShaftFrame& frame)
       translucent.push_back(prop);
     }
   }
+  return translucent;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftInScatter::Begin(vtkLightShaftFrame& frame)
+{
+  this->Target.PrepareDepth(frame);
+  // The translucent surfaces in front of the opaque scene, as the camera sees them: what lies
+  // behind them, shafts included, is dimmed by VTK's blending.
   frame.CameraLayerCount = this->CameraLayers.RenderCamera(frame,
-    std::move(translucent),
+    TranslucentProps(frame),
     frame.Scene.ShaftDepth,
     frame.Parameters.CameraLayers,
     frame.Renderer->GetActiveCamera());

@@ -18,6 +18,9 @@
 #include "vtkLightShaftSlicesMethod.h"      // For a method held
 #include "vtkLightShaftTranslucentLayers.h" // For the camera leg's layers held
 
+#include <vector> // For the translucent props
+
+class vtkProp;
 class vtkTextureObject;
 class vtkWindow;
 struct vtkLightShaftFrame;
@@ -47,6 +50,9 @@ public:
   /// Start the frame: the depth the shafts read, the camera leg's translucent layers
   /// (frame.CameraLayers), no light added.
   void Begin(vtkLightShaftFrame& frame);
+  /// The frame's visible props with translucent surfaces: the camera leg's layers are peeled
+  /// from them.
+  static std::vector<vtkProp*> TranslucentProps(const vtkLightShaftFrame& frame);
 
   /**
    * Add the in-scatter of the frame's current light computed with `method`. Records what it
