@@ -29,6 +29,7 @@ set(lightshafts_private_classes
   vtkLightShaftReferenceJob
   vtkLightShaftReferenceScene
   vtkLightShaftRefinement
+  vtkLightShaftRendererStep
   vtkLightShaftResources
   vtkLightShaftSceneCheck
   vtkLightShaftSceneRenderer

@@ -8,6 +8,7 @@
 #include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightShaftOpenGL.h"
+#include "vtkLightShaftRendererStep.h"
 #include "vtkOpenGLFXAAFilter.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderPass.h"
@@ -31,7 +32,17 @@
 using vtkLightShaftResources::TextureKind;
 
 //------------------------------------------------------------------------------
-vtkLightShaftSceneRenderer::vtkLightShaftSceneRenderer() = default;
+vtkLightShaftSceneRenderer::vtkLightShaftSceneRenderer()
+{
+  // VTK's default steps, with each step drawn as the renderer draws it.
+  this->DefaultOpaque->SetStage(vtkLightShaftRendererStep::OPAQUE);
+  this->DefaultTranslucent->SetStage(vtkLightShaftRendererStep::TRANSLUCENT);
+  this->DefaultVolumes->SetStage(vtkLightShaftRendererStep::VOLUMETRIC, this->DefaultTranslucent);
+  this->DefaultDelegate->SetOpaquePass(this->DefaultOpaque);
+  this->DefaultDelegate->SetTranslucentPass(this->DefaultTranslucent);
+  this->DefaultDelegate->SetVolumetricPass(this->DefaultVolumes);
+}
+
 vtkLightShaftSceneRenderer::~vtkLightShaftSceneRenderer() = default;
 
 //------------------------------------------------------------------------------

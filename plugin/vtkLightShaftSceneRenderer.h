@@ -6,9 +6,10 @@
 #ifndef vtkLightShaftSceneRenderer_h
 #define vtkLightShaftSceneRenderer_h
 
-#include "vtkLightShaftResources.h" // For the owned targets and passes
-#include "vtkNew.h"                 // For the delegates held
-#include "vtkSmartPointer.h"        // For the framebuffers held
+#include "vtkLightShaftRendererStep.h" // For the default delegate's steps
+#include "vtkLightShaftResources.h"    // For the owned targets and passes
+#include "vtkNew.h"                    // For the delegates held
+#include "vtkSmartPointer.h"           // For the framebuffers held
 
 class vtkLight;
 class vtkOpenGLFXAAFilter;
@@ -24,9 +25,10 @@ struct vtkLightShaftFrame;
 /**
  * @class   vtkLightShaftSceneRenderer
  * @brief   Renders the scene the shafts go into: the delegate (or, with none, VTK's default
- *          steps), into targets multisampled like the pass's own target, with all its lights
- *          and, for the surface light of a shadowed or cookie-shaped light, without that light;
- *          and the renders that must stay plain (selection, enclosing passes).
+ *          steps, translucency and volumes as the renderer's own render draws them), into targets
+ * multisampled like the pass's own target, with all its lights and, for the surface light of a
+ * shadowed or cookie-shaped light, without that light; and the renders that must stay plain
+ * (selection, enclosing passes).
  *
  * The 2D overlay step of the delegate's vtkRenderStepsPass is held back while the scene renders,
  * so that the pass can draw it after compositing (on top, unfogged); the renderer's FXAA is
@@ -102,6 +104,9 @@ private:
   vtkTextureObject* ResolveDepth(vtkLightShaftFrame& frame, vtkTextureObject* depthSamples);
 
   vtkNew<vtkRenderStepsPass> DefaultDelegate;
+  vtkNew<vtkLightShaftRendererStep> DefaultOpaque;
+  vtkNew<vtkLightShaftRendererStep> DefaultTranslucent;
+  vtkNew<vtkLightShaftRendererStep> DefaultVolumes;
   vtkRenderStepsPass* OverlayOwner = nullptr;
   vtkSmartPointer<vtkRenderPass> HeldOverlay;
   vtkSmartPointer<vtkOpenGLFXAAFilter> FXAA;
