@@ -155,7 +155,7 @@ private:
 
 // Cuts the segment [a, b] (world) where it leaves `bounds`, where they are set: a view ray
 // that reaches the scene's box ends on a surface within it (a ray that misses the box goes on
-// to the far plane). The medium in front of the box is seen (a floor's box is flat: the air
+// to the backdrop). The medium in front of the box is seen (a floor's box is flat: the air
 // above it is all in front). False when the segment starts past the box: the ray ended on a
 // surface before it.
 bool WithinBounds(const double bounds[6], const glm::dvec3& a, glm::dvec3& b)

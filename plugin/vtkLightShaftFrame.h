@@ -42,6 +42,7 @@ class vtkVolume;
 struct vtkLightShaftParameters
 {
   int Method{};
+  bool MethodNamed{}; ///< Method set by the user (warns where unusable), not chosen
   double Exposure{};
   bool AttenuateScene{};
   int NumberOfSlices{};
@@ -168,7 +169,13 @@ struct vtkLightShaftFrame
   int Number = 0; ///< counts the pass's frames (what was readied this frame is kept)
   vtkLightShaftParameters Parameters;
   vtkLightShaftModel::Medium Medium;
+  /// The scene camera; its FarDepth is the backdrop (vtkLightShaftModel::BackdropDepth).
   vtkLightShaftGeometry::CameraFrame Camera;
+  /// Whether some of the scene's box (vtkLightShaftModel::SceneBounds) lies in front of the
+  /// camera: a renderer with no 3D prop, or with its scene behind the camera, is left as it is.
+  bool SceneInView = false;
+  /// Whether the frame chose the medium from the scene (vtkLightShaftPass::FitMediumToScene).
+  bool MediumFitted = false;
   vtkLightShaftSceneImage Scene;
   /// Whether the frame shows the scene of the last frame, the same way (its sampling aside).
   bool ViewStill = false;

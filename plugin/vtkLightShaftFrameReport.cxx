@@ -57,6 +57,8 @@ void vtkLightShaftFrameReport::Publish(const vtkLightShaftFrame& frame,
   this->RendererFXAA = stats.RendererFXAA;
   this->SliceDepthRange[0] = stats.SliceDepthRange[0];
   this->SliceDepthRange[1] = stats.SliceDepthRange[1];
+  this->BackdropDepth = frame.SceneInView ? frame.Camera.FarDepth : 0.0;
+  this->MediumFitted = frame.MediumFitted;
   this->RadialGuardBand = stats.RadialGuardBand;
   this->PredictedError = stats.PredictedError;
   this->ErrorModelSetting = stats.ErrorModelSetting;
@@ -152,6 +154,12 @@ int vtkLightShaftFrameReport::GetLightMethod(int index)
   return light ? light->Method : -1;
 }
 
+const char* vtkLightShaftFrameReport::GetLightMethodFallback(int index)
+{
+  const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
+  return light ? light->MethodFallback.c_str() : "";
+}
+
 int vtkLightShaftFrameReport::GetLightSlicesDrawn(int index)
 {
   const vtkLightShaftLightStatistics* light = this->Impl->Light(index);
@@ -235,6 +243,8 @@ void vtkLightShaftFrameReport::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSlicesDrawn: " << this->NumberOfSlicesDrawn << "\n";
   os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
   os << indent << "DownsampleFactor: " << this->DownsampleFactor << "\n";
+  os << indent << "BackdropDepth: " << this->BackdropDepth << "\n";
+  os << indent << "MediumFitted: " << this->MediumFitted << "\n";
   os << indent << "ShadowMapRendered: " << this->ShadowMapRendered << "\n";
   os << indent << "PredictedError: " << this->PredictedError << "\n";
   os << indent << "ErrorModelSetting: "

@@ -78,6 +78,22 @@ public:
   vtkGetMacro(DownsampleFactor, int);
   ///@}
 
+  /**
+   * The backdrop: the view depth where a ray that hits no surface ends, the deepest corner of
+   * the scene's bounds (the visible props', the distributed scene's and the density field's),
+   * whatever the camera's clipping range. The renderer's background stands there, dimmed by the
+   * medium in front of it. 0 when no 3D prop is in front of the camera (the picture is then
+   * left as it is). Default is 0.
+   */
+  vtkGetMacro(BackdropDepth, double);
+
+  /**
+   * Whether this frame chose the medium's ScatteringCoefficient and the pass's Exposure from
+   * the scene (vtkLightShaftPass::SetFitMediumToScene); their getters give the values. Default
+   * is false.
+   */
+  vtkGetMacro(MediumFitted, bool);
+
   ///@{
   /**
    * The shader variants compiled (each light's features, e.g. "method=slices phase=isotropic
@@ -209,6 +225,13 @@ public:
   vtkLight* GetUsedLight(int index = 0);
   int GetLightKind(int index);
   int GetLightMethod(int index);
+  /**
+   * Why the i-th light's method gave way to the one GetLightMethod reports, or is used with a
+   * caveat (ANALYTIC ignoring shadows), as the warning a named method gives; "" when the
+   * method was used as set, and out of range. A method chosen by a preset, a target error or
+   * the budget gives way silently: this says so.
+   */
+  const char* GetLightMethodFallback(int index);
   int GetLightSlicesDrawn(int index);
   bool GetLightShadowMapRendered(int index);
   bool GetLightShadowMapReused(int index);
@@ -235,6 +258,8 @@ protected:
   int GLErrorCount = 0;
   int NumberOfSlicesDrawn = 0;
   double SliceDepthRange[2] = { 0.0, 0.0 };
+  double BackdropDepth = 0.0;
+  bool MediumFitted = false;
   int NumberOfSlabBatches = 0;
   int LatticeResolution = 0;
   int NumberOfSteps = 0;

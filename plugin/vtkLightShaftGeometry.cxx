@@ -224,7 +224,7 @@ void SetDepthRange(LightFrame& frame, const CameraFrame& camera, double nearest,
 {
   if (deepest <= 0.0)
   {
-    deepest = std::max(FarthestViewPoint(camera.ClipToView, frame.PositionVC), 1e-30);
+    deepest = std::max(FarthestViewPoint(camera, frame.PositionVC), 1e-30);
     nearest = 0.0;
   }
   frame.Far = deepest * 1.001;
@@ -661,12 +661,11 @@ namespace
 // The part of `polytope` inside the view volume, and its view-depth range.
 LitVolume ClipToViewVolume(ConvexPolytope polytope, const CameraFrame& camera)
 {
-  // Clipped to the view volume: the four sides, the far plane, and a depth just in front of
-  // the camera plane (slabs must project).
+  // Clipped to the view volume: the four sides, the far depth (where rays that hit nothing
+  // end), and a depth just in front of the camera plane (slabs must project).
   const glm::dmat4 clipT = glm::transpose(camera.ViewToClip); // rows of the projection
   const glm::dvec4 row0 = clipT[0];
   const glm::dvec4 row1 = clipT[1];
-  const glm::dvec4 row2 = clipT[2];
   const glm::dvec4 row3 = clipT[3];
   const double minimumDepth = camera.FarDepth * 1e-7;
   LitVolume lit;
@@ -675,7 +674,7 @@ LitVolume ClipToViewVolume(ConvexPolytope polytope, const CameraFrame& camera)
          row3 - row0,
          row3 + row1,
          row3 - row1,
-         row3 - row2,
+         glm::dvec4(0.0, 0.0, 1.0, camera.FarDepth),
          glm::dvec4(0.0, 0.0, -1.0, -minimumDepth) })
   {
     lit.Polytope.Clip(plane);
@@ -727,8 +726,7 @@ LitVolume ComputeLitVolume(const LightFrame& light, const CameraFrame& camera)
   {
     // The view volume (inside a cube about the eye that holds it), beyond a directional
     // light's plane.
-    const double reach =
-      std::max(FarthestViewPoint(camera.ClipToView, glm::dvec3(0.0)), 1e-30) * 1.01;
+    const double reach = std::max(FarthestViewPoint(camera, glm::dvec3(0.0)), 1e-30) * 1.01;
     ConvexPolytope volume = Cube(glm::dvec3(0.0), reach);
     if (light.Model.Kind == vtkLightShaftModel::LightKind::Directional)
     {
@@ -739,7 +737,7 @@ LitVolume ComputeLitVolume(const LightFrame& light, const CameraFrame& camera)
   const Pyramid& pyramid = light.BoundsVC;
 
   // The pyramid, its base beyond everything the view can see.
-  const double reach = std::max(FarthestViewPoint(camera.ClipToView, pyramid.Apex), 1e-30);
+  const double reach = std::max(FarthestViewPoint(camera, pyramid.Apex), 1e-30);
   const double halfSide = reach * pyramid.Tangent;
   const glm::dvec3& u = pyramid.U;
   const glm::dvec3& v = pyramid.V;
@@ -908,20 +906,22 @@ int AffordableSamples(int requested, long long pixels, int lights)
 }
 
 //------------------------------------------------------------------------------
-double FarthestViewPoint(const glm::dmat4& clipToView, const glm::dvec3& pointVC)
+double FarthestViewPoint(const CameraFrame& camera, const glm::dvec3& pointVC)
 {
   double farthest = 0.0;
   for (int corner = 0; corner < 4; ++corner)
   {
     const double sx = (corner & 1) ? 1.0 : -1.0;
     const double sy = (corner & 2) ? 1.0 : -1.0;
-    const glm::dvec4 nearPoint = clipToView * glm::dvec4(sx, sy, -1.0, 1.0);
-    const glm::dvec4 farPoint = clipToView * glm::dvec4(sx, sy, 1.0, 1.0);
+    const glm::dvec4 nearPoint = camera.ClipToView * glm::dvec4(sx, sy, -1.0, 1.0);
+    const glm::dvec4 farPoint = camera.ClipToView * glm::dvec4(sx, sy, 1.0, 1.0);
     const glm::dvec3 n3 = glm::dvec3(nearPoint) / nearPoint.w;
     const glm::dvec3 f3 = glm::dvec3(farPoint) / farPoint.w;
     const glm::dvec3 dir = f3 - n3;
     const glm::dvec3 start = n3 - dir * (n3.z / dir.z);
-    farthest = std::max({ farthest, glm::length(start - pointVC), glm::length(f3 - pointVC) });
+    // The corner's ray at the far depth (the backdrop, beyond or before the far plane).
+    const glm::dvec3 end = start + dir * ((-camera.FarDepth - start.z) / dir.z);
+    farthest = std::max({ farthest, glm::length(start - pointVC), glm::length(end - pointVC) });
   }
   return farthest;
 }

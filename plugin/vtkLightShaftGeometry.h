@@ -43,7 +43,10 @@ struct CameraFrame
   glm::dmat4 ViewToClip{ 1.0 };
   glm::dmat4 ClipToView{ 1.0 };
   bool Perspective = true; ///< else parallel (orthographic)
-  double FarDepth = 1.0;   ///< view depth of the far clipping plane
+  /// The view depth where the medium seen ends, for rays that hit nothing too: the far
+  /// clipping plane's from FromMatrices; the pass sets the scene's backdrop
+  /// (vtkLightShaftModel::BackdropDepth), which no clipping range changes.
+  double FarDepth = 1.0;
 
   static CameraFrame FromMatrices(const glm::dmat4& worldToView, const glm::dmat4& viewToClip);
 
@@ -240,8 +243,8 @@ constexpr long long SegmentBudget = 1LL << 30;
 /// afford within SegmentBudget: `requested`, or fewer (at least 1).
 int AffordableSamples(int requested, long long pixels, int lights = 1);
 
-/// The farthest point of the view volume (camera plane to far plane) from `pointVC`.
-double FarthestViewPoint(const glm::dmat4& clipToView, const glm::dvec3& pointVC);
+/// The farthest point of the view volume (camera plane to the camera's FarDepth) from `pointVC`.
+double FarthestViewPoint(const CameraFrame& camera, const glm::dvec3& pointVC);
 }
 
 #endif

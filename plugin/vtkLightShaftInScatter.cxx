@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <initializer_list>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -47,41 +48,47 @@ bool vtkLightShaftInScatter::RendersField(int method)
 //------------------------------------------------------------------------------
 // AUTOMATIC takes the exact unshadowed integral when nothing can shadow the light's volume and
 // the medium is homogeneous, else the slabs; RAY_MARCH for a medium from data, which the
-// methods that cannot render one give way to (saying so once). ANALYTIC says once that it ignores
-// the shadows props could cast; LIGHT_VOLUME says once that it gives way to RAY_MARCH.
-int vtkLightShaftInScatter::ChooseMethod(const vtkLightShaftFrame& frame)
+// methods that cannot render one give way to; LIGHT_VOLUME gives way to RAY_MARCH where it has
+// no closed form; ANALYTIC ignores the shadows props could cast. Each reason goes into the
+// light's report; a method the user named also says it once, as a warning (one chosen by a
+// preset, a target error or the budget gives way silently).
+int vtkLightShaftInScatter::ChooseMethod(vtkLightShaftFrame& frame)
 {
-  int method = frame.Parameters.Method;
+  const vtkLightShaftParameters& p = frame.Parameters;
+  int method = p.Method;
+  std::string& fallback = frame.LightStatistics->MethodFallback;
+  auto say = [&frame, &fallback](bool& warned, const std::string& why)
+  {
+    fallback = why;
+    if (frame.Parameters.MethodNamed && !warned)
+    {
+      vtkWarningWithObjectMacro(frame.Owner, "" << why);
+      warned = true;
+    }
+  };
   if (method == vtkLightShaftPass::AUTOMATIC)
   {
-    const bool noise = frame.Parameters.NoiseAmplitude > 0.0;
+    const bool noise = p.NoiseAmplitude > 0.0;
     method = frame.Density                              ? vtkLightShaftPass::RAY_MARCH
              : (!frame.Light.ShadowsPossible && !noise) ? vtkLightShaftPass::ANALYTIC
                                                         : vtkLightShaftPass::SLICES;
   }
   if (frame.Density && !vtkLightShaftInScatter::RendersField(method))
   {
-    if (!this->WarnedFieldMethod)
-    {
-      vtkWarningWithObjectMacro(frame.Owner,
-        "A medium from data (MediumDensity) is rendered by SLICES, RAY_MARCH and EPIPOLAR: "
-        "RAY_MARCH computes the shafts instead of method "
-          << vtkLightShaftPass::GetMethodName(method) << ".");
-      this->WarnedFieldMethod = true;
-    }
+    say(this->WarnedFieldMethod,
+      std::string("A medium from data (MediumDensity) is rendered by SLICES, RAY_MARCH and "
+                  "EPIPOLAR: RAY_MARCH computes the shafts instead of method ") +
+        vtkLightShaftPass::GetMethodName(method) + ".");
     return vtkLightShaftPass::RAY_MARCH;
   }
-  if (method == vtkLightShaftPass::ANALYTIC && !frame.Light.Casters.empty() &&
-      !this->WarnedAnalyticShadows)
+  if (method == vtkLightShaftPass::ANALYTIC && !frame.Light.Casters.empty())
   {
-    vtkWarningWithObjectMacro(frame.Owner,
-      "Method ANALYTIC ignores shadows, but "
-        << frame.Light.Casters.size()
-        << " prop(s) reach into the light's volume: use SLICES or AUTOMATIC for shadowed shafts.");
-    this->WarnedAnalyticShadows = true;
+    say(this->WarnedAnalyticShadows,
+      "Method ANALYTIC ignores shadows, but " + std::to_string(frame.Light.Casters.size()) +
+        " prop(s) reach into the light's volume: use SLICES or AUTOMATIC for shadowed shafts.");
   }
   const bool translucent =
-    frame.Parameters.TranslucentLayers > 0 &&
+    p.TranslucentLayers > 0 &&
     std::any_of(frame.Light.Casters.begin(),
       frame.Light.Casters.end(),
       [](vtkProp* prop) { return prop->HasTranslucentPolygonalGeometry() != 0; });
@@ -89,16 +96,12 @@ int vtkLightShaftInScatter::ChooseMethod(const vtkLightShaftFrame& frame)
   {
     // The unshadowed integral up to a crossing is in closed form only without them; its mesh
     // is the opaque casters' shadow.
-    if (!this->WarnedLightVolumeFeatures)
-    {
-      vtkWarningWithObjectMacro(frame.Owner,
-        "Method LIGHT_VOLUME has no closed form with "
-          << (frame.Cookie   ? "a cookie"
-               : frame.Noise ? "density noise"
-                             : "translucent casters")
-          << ": RAY_MARCH computes the shafts of a light that has one.");
-      this->WarnedLightVolumeFeatures = true;
-    }
+    say(this->WarnedLightVolumeFeatures,
+      std::string("Method LIGHT_VOLUME has no closed form with ") +
+        (frame.Cookie   ? "a cookie"
+          : frame.Noise ? "density noise"
+                        : "translucent casters") +
+        ": RAY_MARCH computes the shafts of a light that has one.");
     method = vtkLightShaftPass::RAY_MARCH;
   }
   return method;

@@ -42,9 +42,10 @@ public:
   ~vtkLightShaftInScatter();
 
   /// The method for the frame's current light (AUTOMATIC resolved; see
-  /// vtkLightShaftPass::SetMethod), with one warning when ANALYTIC ignores possible shadows,
-  /// and one when LIGHT_VOLUME gives way to RAY_MARCH for a cookie or noise.
-  int ChooseMethod(const vtkLightShaftFrame& frame);
+  /// vtkLightShaftPass::SetMethod). Where it gives way to another (or ANALYTIC ignores
+  /// possible shadows) the reason goes into the light's statistics, and, for a method the user
+  /// named, into one warning.
+  int ChooseMethod(vtkLightShaftFrame& frame);
   /// Whether `method` renders a medium from data (the others give way to RAY_MARCH).
   static bool RendersField(int method);
   /// Start the frame: the depth the shafts read, the camera leg's translucent layers

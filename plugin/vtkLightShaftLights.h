@@ -52,6 +52,8 @@ struct vtkLightShaftLightStatistics
   double TranslucentBytes = 0.0;
   bool TranslucentLayersRendered = false;
   std::string ShaderVariant;
+  /// Why the light's method gave way to another, or was used with a caveat (empty: as set).
+  std::string MethodFallback;
   vtkWeakPointer<vtkLight> Light;
 };
 

@@ -34,6 +34,7 @@ vtkLightShaftMedium::~vtkLightShaftMedium() = default;
 //------------------------------------------------------------------------------
 void vtkLightShaftMedium::SetScatteringCoefficient(double r, double g, double b)
 {
+  this->Impl->CoefficientsSet.Modified();
   SetClamped(this,
     "ScatteringCoefficient",
     this->ScatteringCoefficient,
@@ -54,6 +55,7 @@ void vtkLightShaftMedium::SetScatteringCoefficient(double grey)
 
 void vtkLightShaftMedium::SetAbsorptionCoefficient(double r, double g, double b)
 {
+  this->Impl->CoefficientsSet.Modified();
   SetClamped(this,
     "AbsorptionCoefficient",
     this->AbsorptionCoefficient,
@@ -70,6 +72,11 @@ void vtkLightShaftMedium::SetAbsorptionCoefficient(const double rgb[3])
 void vtkLightShaftMedium::SetAbsorptionCoefficient(double grey)
 {
   this->SetAbsorptionCoefficient(grey, grey, grey);
+}
+
+vtkMTimeType vtkLightShaftMedium::GetCoefficientsSetTime()
+{
+  return this->Impl->CoefficientsSet.GetMTime();
 }
 
 void vtkLightShaftMedium::SetAnisotropy(double g)

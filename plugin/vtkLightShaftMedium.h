@@ -71,6 +71,14 @@ public:
   vtkGetVector3Macro(AbsorptionCoefficient, double);
   ///@}
 
+  /**
+   * When a coefficient setter (SetScatteringCoefficient, SetAbsorptionCoefficient) was last
+   * called, whatever the value, as a VTK modification time (0: never): a pass choosing the
+   * medium from the scene keeps coefficients set after it was asked to
+   * (vtkLightShaftPass::SetFitMediumToScene).
+   */
+  vtkMTimeType GetCoefficientsSetTime();
+
   ///@{
   /**
    * Phase function: ISOTROPIC, HENYEY_GREENSTEIN or RAYLEIGH (values outside are clamped).

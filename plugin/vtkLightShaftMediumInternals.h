@@ -14,6 +14,7 @@
 #include "vtkLightShaftDensityField.h" // For the field read by the setter
 #include "vtkSmartPointer.h"           // For vtkSmartPointer
 #include "vtkTexture.h"                // For the noise image
+#include "vtkTimeStamp.h"              // For the coefficients' time
 #include "vtkVolume.h"                 // For the density volume
 
 #include <string> // For the array name and the last error
@@ -35,6 +36,7 @@ public:
   vtkMTimeType VolumeTime = 0;
   std::string VolumeArrayName;
   std::string VolumeError;
+  vtkTimeStamp CoefficientsSet; ///< the coefficient setters' last call
 
   /// The density volume's opacity image, built again when the volume changed (the last usable
   /// one kept, with one error from `caller`, when it gives none).

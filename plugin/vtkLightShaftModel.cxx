@@ -1,11 +1,16 @@
 #include "vtkLightShaftModel.h"
 
+#include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkProp.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <limits>
 #include <sstream>
 
 namespace vtkLightShaftModel
@@ -126,6 +131,108 @@ bool UsableBounds(const double bounds[6])
 {
   return AllFinite(bounds, 6, false) && bounds[0] <= bounds[1] && bounds[2] <= bounds[3] &&
          bounds[4] <= bounds[5];
+}
+
+namespace
+{
+// `bounds` grown to hold `more` where that is a box (VTK's uninitialised and huge bounds are not).
+void Grow(double bounds[6], const double* more)
+{
+  if (!more || !UsableBounds(more) ||
+      std::any_of(more, more + 6, [](double v) { return std::abs(v) > 1e299; }))
+  {
+    return;
+  }
+  const bool had = UsableBounds(bounds);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    bounds[2 * axis] = had ? std::min(bounds[2 * axis], more[2 * axis]) : more[2 * axis];
+    bounds[2 * axis + 1] =
+      had ? std::max(bounds[2 * axis + 1], more[2 * axis + 1]) : more[2 * axis + 1];
+  }
+}
+}
+
+bool SceneBounds(vtkRenderer* renderer, const double* given, vtkImageData* field, double bounds[6])
+{
+  // As vtkRenderer::ComputeVisiblePropBounds, without its event (a parallel render manager
+  // may answer that one with a collective reduction).
+  std::fill(bounds, bounds + 6, 0.0);
+  bounds[0] = bounds[2] = bounds[4] = 1.0;
+  bounds[1] = bounds[3] = bounds[5] = -1.0;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (prop->GetVisibility() && prop->GetUseBounds())
+    {
+      Grow(bounds, prop->GetBounds());
+    }
+  }
+  Grow(bounds, given);
+  Grow(bounds, field ? field->GetBounds() : nullptr);
+  return UsableBounds(bounds);
+}
+
+double BackdropDepth(const glm::dmat4& worldToView, const double bounds[6])
+{
+  double deepest = -std::numeric_limits<double>::max();
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const glm::dvec4 cornerWC(
+      bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)], 1.0);
+    const glm::dvec4 cornerVC = worldToView * cornerWC;
+    deepest = std::max(deepest, -cornerVC.z / cornerVC.w);
+  }
+  return deepest;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// The scene's box grown to hold a positional light: its diagonal.
+double FittedLength(const double bounds[6], const Light& light)
+{
+  double box[6];
+  std::copy(bounds, bounds + 6, box);
+  if (light.Kind != LightKind::Directional)
+  {
+    const double at[6] = { light.Position.x,
+      light.Position.x,
+      light.Position.y,
+      light.Position.y,
+      light.Position.z,
+      light.Position.z };
+    Grow(box, at);
+  }
+  return glm::length(glm::dvec3(box[1] - box[0], box[3] - box[2], box[5] - box[4]));
+}
+}
+
+double FittedScattering(const double bounds[6], const Light& light)
+{
+  const double length = FittedLength(bounds, light);
+  return std::isfinite(length) && length > 0.0 ? FittedOpticalDepth / length : 0.0;
+}
+
+double FittedExposure(const double bounds[6], const Light& light, double sigmaS)
+{
+  const double length = FittedLength(bounds, light);
+  const glm::dvec3 centre(
+    0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
+  const double d = light.Kind == LightKind::Directional ? 0.0 : light.Distance(centre);
+  const double width = light.Kind == LightKind::Spot
+                         ? std::min(2.0 * d * std::tan(light.ConeHalfAngle), length)
+                         : length;
+  const double falloff =
+    light.Kind == LightKind::Directional
+      ? 1.0
+      : 1.0 / (light.Attenuation[0] + light.Attenuation[1] * d + light.Attenuation[2] * d * d);
+  const double intensity = *std::max_element(light.RadiantIntensity, light.RadiantIntensity + 3);
+  const double inScatter = sigmaS / (4.0 * vtkMath::Pi()) * intensity * falloff * width;
+  const double exposure = FittedInScatter / inScatter;
+  return std::isfinite(exposure) && exposure > 0.0 ? exposure : 0.0;
 }
 
 //------------------------------------------------------------------------------

@@ -17,6 +17,7 @@
 #include <string> // For the reason a light is unusable
 #include <vector> // For the lights chosen
 
+class vtkImageData;
 class vtkLight;
 class vtkRenderer;
 
@@ -69,6 +70,22 @@ std::string UnusableLightValue(vtkLight* light);
 
 /// Whether the six bounds are all finite and initialised (min <= max).
 bool UsableBounds(const double bounds[6]);
+
+/**
+ * The box of the scene the medium is seen in: the visible props' bounds of `renderer`, grown
+ * to hold `given` (the whole distributed scene's bounds, when set; else nullptr) and `field`
+ * (the medium's density image, or nullptr). False when there is none (no visible 3D prop and
+ * nothing given): the pass then leaves the picture as it is.
+ */
+bool SceneBounds(vtkRenderer* renderer, const double* given, vtkImageData* field, double bounds[6]);
+
+/**
+ * The backdrop: the view depth where a ray that hits no surface ends, the deepest corner of
+ * the scene's box `bounds` as `worldToView` sees it (at most 0 when the whole box is behind the
+ * camera). What shows where nothing is drawn (the renderer's background) stands there: the
+ * medium in front of it scatters into the ray and dims it, and no clipping range changes it.
+ */
+double BackdropDepth(const glm::dmat4& worldToView, const double bounds[6]);
 
 /**
  * A light as the model sees it, in world coordinates.
@@ -127,6 +144,22 @@ struct Light
 
 /// `light` as the model sees it.
 Light DescribeLight(vtkLight* light);
+
+/**
+ * The medium chosen from the scene (vtkLightShaftPass::FitMediumToScene), so that a scene 1,
+ * 100 or 10,000 units across gives the same picture up to scale. FittedScattering: the grey
+ * sigma_s whose optical depth across the scene's box `bounds` (its diagonal; the box grown to
+ * hold a positional light) is FittedOpticalDepth. FittedExposure: the exposure that brings the
+ * in-scatter of a ray crossing `light`'s beam through the box's centre, in a medium of
+ * `sigmaS`, to FittedInScatter: sigma_s / (4 pi) I A(d) w, with I the brightest channel of the
+ * light's radiant intensity, A(d) its falloff at the centre's distance d and w the beam's width
+ * there (a spot's 2 d tan(cone), at most the diagonal; the diagonal for the other kinds). Both
+ * are 0 where they cannot be chosen (a flat or empty box, a dark light).
+ */
+constexpr double FittedOpticalDepth = 0.9;
+constexpr double FittedInScatter = 0.6;
+double FittedScattering(const double bounds[6], const Light& light);
+double FittedExposure(const double bounds[6], const Light& light, double sigmaS);
 
 /**
  * The participating medium: sigma_t = sigma_s + sigma_a per colour channel, and the phase.

@@ -203,7 +203,68 @@ vtkLightShaftFrameReport* vtkLightShaftPass::GetLastFrame()
 
 void vtkLightShaftPass::SetExposure(double exposure)
 {
+  this->Impl->ExposureSet.Modified();
   SetClamped(this, "Exposure", &this->Exposure, { exposure }, 0.0, MaximumExposure);
+}
+
+void vtkLightShaftPass::SetFitMediumToScene(bool fit)
+{
+  this->Impl->FitPending = fit;
+  if (fit)
+  {
+    this->Impl->FitRequested.Modified();
+  }
+  if (fit != this->FitMediumToScene)
+  {
+    this->FitMediumToScene = fit;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+// The medium and exposure from the scene's box and its first light (vtkLightShaftModel's
+// rule), leaving what the user set since the request; once, when there is a scene and a light.
+bool vtkLightShaftPass::FitMedium(vtkRenderer* renderer)
+{
+  Internals& impl = *this->Impl;
+  vtkLightShaftMedium* medium = impl.Medium;
+  double bounds[6];
+  double given[6];
+  const bool distributed = this->GetShadowCasterBounds(given);
+  if (!vtkLightShaftModel::SceneBounds(
+        renderer, distributed ? given : nullptr, medium->GetDensityField(), bounds))
+  {
+    return false;
+  }
+  std::vector<vtkLight*> requested;
+  for (int i = 0; i < this->GetNumberOfLights(); ++i)
+  {
+    requested.push_back(this->GetLight(i));
+  }
+  for (vtkLight* light : vtkLightShaftModel::FindLights(requested, renderer))
+  {
+    const vtkLightShaftModel::Light model = vtkLightShaftModel::DescribeLight(light);
+    if (!vtkLightShaftModel::UnusableLightValue(light).empty() || !model.Radiates())
+    {
+      continue;
+    }
+    const vtkMTimeType requestedAt = impl.FitRequested.GetMTime();
+    impl.FitPending = false;
+    if (medium->GetCoefficientsSetTime() < requestedAt)
+    {
+      const double sigma = vtkLightShaftModel::FittedScattering(bounds, model);
+      medium->SetScatteringCoefficient(sigma);
+      medium->SetAbsorptionCoefficient(0.0);
+    }
+    if (impl.ExposureSet.GetMTime() < requestedAt)
+    {
+      const double* sigmaS = medium->GetScatteringCoefficient();
+      this->SetExposure(vtkLightShaftModel::FittedExposure(
+        bounds, model, std::max(sigmaS[0], std::max(sigmaS[1], sigmaS[2]))));
+    }
+    return true;
+  }
+  return false;
 }
 
 void vtkLightShaftPass::SetRadialGuardBand(double extent)
@@ -305,16 +366,30 @@ void ApplyQuality(vtkLightShaftPass* pass, vtkLightShaftErrorModel::Preset prese
 void vtkLightShaftPass::SetQualityToDraft()
 {
   ApplyQuality(this, vtkLightShaftErrorModel::Preset::Draft);
+  this->MethodNamed = false;
 }
 
 void vtkLightShaftPass::SetQualityToInteractive()
 {
   ApplyQuality(this, vtkLightShaftErrorModel::Preset::Interactive);
+  this->MethodNamed = false;
 }
 
 void vtkLightShaftPass::SetQualityToFinal()
 {
   ApplyQuality(this, vtkLightShaftErrorModel::Preset::Final);
+  this->MethodNamed = false;
+}
+
+void vtkLightShaftPass::SetMethod(int method)
+{
+  method = std::min(std::max(method, static_cast<int>(SLICES)), static_cast<int>(LIGHT_VOLUME));
+  if (method != this->Method || !this->MethodNamed)
+  {
+    this->Method = method;
+    this->MethodNamed = true;
+    this->Modified();
+  }
 }
 
 void vtkLightShaftPass::SetDownsampleFactor(int factor)
@@ -458,6 +533,7 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   impl.FinalInScatter = nullptr;
   vtkLightShaftFrame frame;
   frame.Number = ++impl.FrameCounter;
+  frame.MediumFitted = impl.FitPending && this->FitMedium(s->GetRenderer());
   // The frame's read-outs, with the shader variants it compiled.
   auto publish = [this, &impl](const vtkLightShaftFrame& done)
   {
@@ -492,7 +568,7 @@ void vtkLightShaftPass::RenderFrame(const vtkRenderState* s)
   const bool cameraUsable = impl.Check.CheckCamera(this, frame);
   impl.Check.CheckProps(this, frame);
   impl.Scene.HoldOverlay(delegate);
-  if (lights.empty() || !(medium || this->ShadowSurfaces) || !cameraUsable)
+  if (lights.empty() || !(medium || this->ShadowSurfaces) || !cameraUsable || !frame.SceneInView)
   {
     impl.Scene.RenderUnchanged(frame, delegate); // nothing to add: the delegate's image
   }
@@ -555,6 +631,14 @@ bool vtkLightShaftPass::Internals::BeginFrame(vtkLightShaftPass& self,
   camera->GetKeyMatrices(frame.Renderer, wcvc, normals, vcdc, wcdc);
   frame.Camera = vtkLightShaftGeometry::CameraFrame::FromMatrices(
     vtkLightShaftGeometry::FromKeyMatrix(wcvc), vtkLightShaftGeometry::FromKeyMatrix(vcdc));
+  // Rays that hit nothing end at the scene's backdrop, not at the far clipping plane.
+  double bounds[6];
+  if (vtkLightShaftModel::SceneBounds(
+        frame.Renderer, frame.Parameters.ShadowCasterBounds, medium->GetDensityField(), bounds))
+  {
+    frame.Camera.FarDepth = vtkLightShaftModel::BackdropDepth(frame.Camera.WorldToView, bounds);
+    frame.SceneInView = frame.Camera.FarDepth > 0.0;
+  }
   return true;
 }
 
@@ -564,6 +648,7 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
 {
   vtkLightShaftParameters p;
   p.Method = self.Method;
+  p.MethodNamed = self.MethodNamed;
   p.Exposure = self.Exposure;
   p.AttenuateScene = self.AttenuateScene;
   p.NumberOfSlices = self.NumberOfSlices;
@@ -849,6 +934,7 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Medium: " << this->Impl->Medium.Get() << "\n";
   this->Impl->Medium->PrintSelf(os, indent.GetNextIndent());
   os << indent << "Exposure: " << this->Exposure << "\n";
+  os << indent << "FitMediumToScene: " << this->FitMediumToScene << "\n";
   os << indent << "AttenuateScene: " << this->AttenuateScene << "\n";
   os << indent << "ShadowSurfaces: " << this->ShadowSurfaces << "\n";
   os << indent << "NumberOfSlices: " << this->NumberOfSlices << "\n";

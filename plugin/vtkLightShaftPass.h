@@ -150,6 +150,24 @@ public:
 
   ///@{
   /**
+   * Choose the medium from the scene: the next frame with a 3D prop and a light sets the
+   * medium's ScatteringCoefficient (grey; AbsorptionCoefficient 0) and the Exposure so that a scene
+   * 1, 100 or 10,000 units across gives the same picture up to scale: an optical depth of 0.9
+   * across the scene's box, and the in-scatter across the first light's beam at the box's centre
+   * brought to 0.6 (vtkLightShaftModel::FittedScattering, FittedExposure; docs/getting-started.md).
+   * The values chosen are then the medium's and the pass's, as their getters report (the frame
+   * report's GetMediumFitted marks the frame that chose them), and stay. A coefficient (scattering
+   * or absorption) or an exposure set after this was switched on wins and is kept; the rest is
+   * chosen around it. Switching it on again chooses again. Default is off (add_light_shafts
+   * and the PyVista and ParaView views switch it on when given no coefficient or exposure).
+   */
+  void SetFitMediumToScene(bool fit);
+  vtkGetMacro(FitMediumToScene, bool);
+  vtkBooleanMacro(FitMediumToScene, bool);
+  ///@}
+
+  ///@{
+  /**
    * Shadow the surfaces too (VTK's lighting has none) with each scattering light's shadow map,
    * for every kind of light: one more render of the scene and a full-screen pass per light
    * with casters, also when the medium is empty (docs/lights-and-cookies.md). Default is off.
@@ -254,13 +272,14 @@ public:
   /**
    * The method that computes the in-scattered radiance (docs/methods.md: how each works, its
    * cost and error); the parameters that are not method-specific mean the same in all.
-   * ANALYTIC ignores shadows and noise (one warning when they would matter); AUTOMATIC is
-   * ANALYTIC when nothing casts a shadow into the light's volume and the noise is off, else
-   * SLICES; LIGHT_VOLUME gives way to RAY_MARCH (one warning) for a light with a cookie, noise,
-   * translucent casters or a density field. GetMethodName names a method ("slices",
-   * "ray-march", ...). Default is SLICES.
+   * ANALYTIC ignores shadows and noise; AUTOMATIC is ANALYTIC when nothing casts a shadow into
+   * the light's volume and the noise is off, else SLICES; LIGHT_VOLUME gives way to RAY_MARCH
+   * for a light with a cookie, noise, translucent casters or a density field. A method set
+   * here warns once where it cannot be used as asked; one chosen by a preset, TargetError or
+   * the budget gives way silently (the frame report's GetLightMethodFallback says why).
+   * GetMethodName names a method ("slices", "ray-march", ...). Default is SLICES.
    */
-  vtkSetClampMacro(Method, int, SLICES, LIGHT_VOLUME);
+  virtual void SetMethod(int method);
   vtkGetMacro(Method, int);
   void SetMethodToSlices() { this->SetMethod(SLICES); }
   void SetMethodToRayMarch() { this->SetMethod(RAY_MARCH); }
@@ -471,6 +490,7 @@ protected:
 
   // Parameters.
   double Exposure = 1.0;
+  bool FitMediumToScene = false;
   bool AttenuateScene = true;
   bool ShadowSurfaces = false;
   bool TranslucentShadows = true;
@@ -484,6 +504,7 @@ protected:
   int DownsampleFactor = 1;
   int AccumulationPrecision = ACCUMULATE_FLOAT32;
   int Method = SLICES;
+  bool MethodNamed = false; ///< set by SetMethod, not by a preset
   int LatticeResolution = 0;
   int NumberOfSteps = 16;
   int InterleaveSize = 2;
@@ -509,6 +530,7 @@ protected:
 
 private:
   void RenderFrame(const vtkRenderState* s);
+  bool FitMedium(vtkRenderer* renderer);
 
   vtkLightShaftPass(const vtkLightShaftPass&) = delete;
   void operator=(const vtkLightShaftPass&) = delete;

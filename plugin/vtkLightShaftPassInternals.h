@@ -32,6 +32,7 @@
 #include "vtkOpenGLFramebufferObject.h" // For the read-back framebuffer
 #include "vtkOpenGLRenderWindow.h"      // For the window
 #include "vtkSmartPointer.h"            // For vtkSmartPointer
+#include "vtkTimeStamp.h"               // For the fit's times
 #include "vtkWeakPointer.h"             // For vtkWeakPointer
 
 #include <string> // For the shader variants
@@ -53,6 +54,11 @@ public:
   unsigned long WindowStartedTag = 0;
   bool WarnedPointCookie = false;
   int FrameCounter = 0;
+  /// FitMediumToScene: whether a fit is due, when it was asked, and when the user last set the
+  /// exposure (a value set after the request wins).
+  bool FitPending = false;
+  vtkTimeStamp FitRequested;
+  vtkTimeStamp ExposureSet;
   /// Each lit light's table error (vtkLightShaftFieldError::TableError) and what it was
   /// measured for: measured again only when the field, the light or the resolution change.
   struct TableErrorEntry

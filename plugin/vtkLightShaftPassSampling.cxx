@@ -42,6 +42,7 @@ void ApplySetting(vtkLightShaftFrame& frame,
     std::none_of(lights.begin(),
       lights.end(),
       [](const vtkLightShaftGeometry::LightFrame& l) { return l.ShadowsPossible; });
+  p.MethodNamed = false; // chosen: a method that cannot be used gives way silently
   p.Method = exact ? p.Method : chosen.Method;
   p.AutomaticSliceCount = false;
   p.NumberOfSlices = chosen.Method == vtkLightShaftPass::SLICES ? chosen.Samples : p.NumberOfSlices;

@@ -6,11 +6,13 @@
 #include "vtkLight.h"
 #include "vtkLightShaftDensityField.h"
 #include "vtkLightShaftFrameReport.h"
+#include "vtkLightShaftGeometry.h"
 #include "vtkLightShaftMedium.h"
 #include "vtkLightShaftModel.h"
 #include "vtkLightShaftPass.h"
 #include "vtkLightShaftVolumeField.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
@@ -113,8 +115,9 @@ struct CameraRays
   int Width = 1;
   int Height = 1;
 
-  CameraRays(vtkCamera* camera, int width, int height)
-    : Width(width)
+  CameraRays(vtkCamera* camera, double backdropDepth, int width, int height)
+    : FarDistance(backdropDepth)
+    , Width(width)
     , Height(height)
   {
     const double* eye = camera->GetPosition();
@@ -124,7 +127,6 @@ struct CameraRays
     this->Forward = Normalized(Vec{ focal[0], focal[1], focal[2] } - this->Eye);
     this->Right = Normalized(Cross(this->Forward, Vec{ viewUp[0], viewUp[1], viewUp[2] }));
     this->Up = Cross(this->Right, this->Forward);
-    this->FarDistance = camera->GetClippingRange()[1];
     this->Parallel = camera->GetParallelProjection() != 0;
     this->HalfHeight = this->Parallel
                          ? camera->GetParallelScale()
@@ -132,7 +134,7 @@ struct CameraRays
     this->Aspect = static_cast<double>(width) / height;
   }
 
-  /// The ray of pixel (i, j): origin, unit direction, and the far plane's parameter.
+  /// The ray of pixel (i, j): origin, unit direction, and the backdrop's parameter.
   void Ray(int i, int j, Vec& origin, Vec& dir, double& tFar) const
   {
     const double sx = (2.0 * (i + 0.5) / this->Width - 1.0) * this->HalfHeight * this->Aspect;
@@ -192,6 +194,22 @@ std::string UseShadowMap(vtkLightShaftPass* pass,
   }
   return problem.str();
 }
+
+/// The backdrop's view depth as the pass takes it (vtkLightShaftModel::BackdropDepth); 0, no
+/// ray, when the scene is not in view.
+double Backdrop(vtkRenderer* renderer, vtkLightShaftPass* pass, vtkImageData* density)
+{
+  double given[6];
+  const bool distributed = pass->GetShadowCasterBounds(given);
+  double bounds[6];
+  if (!vtkLightShaftModel::SceneBounds(renderer, distributed ? given : nullptr, density, bounds))
+  {
+    return 0.0;
+  }
+  const glm::dmat4 worldToView =
+    vtkLightShaftGeometry::FromVTKMatrix(renderer->GetActiveCamera()->GetViewTransformMatrix());
+  return std::max(vtkLightShaftModel::BackdropDepth(worldToView, bounds), 0.0);
+}
 }
 
 struct vtkLightShaftReferenceJob::Rays : CameraRays
@@ -216,7 +234,6 @@ std::string vtkLightShaftReferenceJob::Prepare(vtkRenderer* renderer,
   this->Models.clear();
   this->ClosedForms.clear();
   this->Tracers.reset();
-  this->Camera.reset(new Rays(renderer->GetActiveCamera(), this->Width, this->Height));
 
   // The lights, chosen as the pass chooses them, and the model of each with the medium.
   std::vector<vtkLight*> given;
@@ -225,7 +242,10 @@ std::string vtkLightShaftReferenceJob::Prepare(vtkRenderer* renderer,
     given.push_back(pass->GetLight(i));
   }
   std::shared_ptr<vtkLightShaftDensityField> field;
-  if (vtkImageData* density = pass->GetMedium()->UpdateDensityField(caller))
+  vtkImageData* density = pass->GetMedium()->UpdateDensityField(caller);
+  this->Camera.reset(new Rays(
+    renderer->GetActiveCamera(), Backdrop(renderer, pass, density), this->Width, this->Height));
+  if (density)
   {
     field = std::make_shared<vtkLightShaftDensityField>();
     const std::string why = field->Read(density, pass->GetMedium()->GetDensityArrayName());

@@ -160,6 +160,7 @@ void SetViewUniforms(vtkShaderProgram* program,
 {
   auto invProjection = vtkLightShaftGeometry::ToFloatColumnMajor(camera.ClipToView);
   program->SetUniformMatrix4x4("invProjectionDCVC", invProjection.data());
+  program->SetUniformf("backdropDepthVC", static_cast<float>(camera.FarDepth));
   const float targetSize[2] = { static_cast<float>(width), static_cast<float>(height) };
   program->SetUniform2f("targetSize", targetSize);
 }

@@ -132,9 +132,11 @@ void vtkLightShaftSlabDrawer::Draw(vtkLightShaftFrame& frame,
 {
   vtkOpenGLState* ostate = frame.Window->GetState();
   // Each slab is drawn at the near depth of its footprint: the depth test drops it where it
-  // starts behind the surface. Depth clamping keeps slabs in front of the near plane.
+  // starts behind the surface. Depth clamping keeps slabs in front of the near plane, and those
+  // beyond the far plane (up to the backdrop) at its depth, where nothing drawn is 1 too (the
+  // test passes them: a slab starting at a surface adds nothing, its fragments cut there).
   ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_LESS);
+  ostate->vtkglDepthFunc(GL_LEQUAL);
   ostate->vtkglDepthMask(GL_FALSE);
   const GLboolean depthClampWasOn = glIsEnabled(GL_DEPTH_CLAMP);
   glEnable(GL_DEPTH_CLAMP);

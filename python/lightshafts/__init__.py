@@ -18,7 +18,7 @@ from .vtkLightShafts import (  # noqa: F401
 
 __all__ = ["vtkLightShaftPass", "vtkLightShaftMedium", "vtkLightShaftFrameReport",
            "vtkLightShaftReference", "vtkLightShaftFetchFloor", "add_light_shafts", "configure",
-           "parameter_owner", "write_png", "show_or_save", "render_converged",
+           "parameter_owner", "fit_medium_unless_given", "write_png", "show_or_save", "render_converged",
            "refine_while_still"]
 
 # Every method by the name the pass gives it ("slices", "ray-march", ..., "light-volume").
@@ -42,17 +42,32 @@ def add_light_shafts(renderer, light=None, quality=None, method=None, **params):
     pass or of its medium (vtkLightShaftMedium: ScatteringCoefficient, PhaseFunction, NoiseAmplitude,
     DensityField, ...): Name=value calls SetName(value) on whichever has it, a tuple or list is
     passed as separate arguments (ScatteringCoefficient=(r, g, b)), a bool switches
-    NameOn()/NameOff(). A pass the renderer already had becomes the
+    NameOn()/NameOff(). Given no ScatteringCoefficient, AbsorptionCoefficient or Exposure, the
+    pass chooses them from the scene at its first frame (vtkLightShaftPass.FitMediumToScene:
+    the same picture whatever the scene's size; shafts.GetMedium().GetScatteringCoefficient()
+    and shafts.GetExposure() then report them). A pass the renderer already had becomes the
     delegate, so the scene renders as before, with shafts. (PyVista plotters:
     lightshafts.pyvista.enable_light_shafts, which keeps PyVista's own passes working.)
     """
     shafts = vtkLightShaftPass()
+    fit_medium_unless_given(shafts, params)
     configure(shafts, renderer, light=light, quality=quality, method=method, **params)
     previous = renderer.GetPass()
     if previous is not None:
         shafts.SetDelegatePass(previous)
     renderer.SetPass(shafts)
     return shafts
+
+
+# The parameters that set the medium's scale: given any, the pass does not choose it.
+_MEDIUM_SCALE = ("ScatteringCoefficient", "AbsorptionCoefficient", "Exposure")
+
+
+def fit_medium_unless_given(shafts, params):
+    """Have `shafts` choose its medium and exposure from the scene (FitMediumToScene) unless
+    `params` (keyword parameters, as add_light_shafts takes them) set any of them."""
+    if not any(name in params for name in _MEDIUM_SCALE):
+        shafts.FitMediumToSceneOn()
 
 
 def configure(shafts, renderer, light=None, quality=None, method=None, **params):

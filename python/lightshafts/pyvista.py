@@ -27,7 +27,7 @@ they are on, and nothing at all while they are off.)
 
 import pyvista
 
-from . import configure, vtkLightShaftPass
+from . import configure, fit_medium_unless_given, vtkLightShaftPass
 
 __all__ = ["enable_light_shafts", "disable_light_shafts", "get_light_shafts"]
 
@@ -97,7 +97,8 @@ def enable_light_shafts(plotter, light=None, quality=None, method=None, **params
     and point lights). quality: "draft", "interactive" or "final". method: "slices",
     "ray-march", "radial-blur", "analytic", "automatic", "epipolar" or "light-volume". Every
     other keyword is a parameter of vtkLightShaftPass or of its medium (Name=value calls
-    SetName(value) on whichever has it; lightshafts.add_light_shafts has the rules). Called again
+    SetName(value) on whichever has it; lightshafts.add_light_shafts has the rules, and a new
+    pass given no coefficient or exposure chooses them from the scene). Called again
     on the same renderer, it sets up the pass it already has and returns it. The picture changes at the plotter's next render (show, screenshot, render).
     """
     _render_passes_module()
@@ -111,6 +112,7 @@ def enable_light_shafts(plotter, light=None, quality=None, method=None, **params
     added = shafts is None
     if added:
         shafts = vtkLightShaftPass()
+        fit_medium_unless_given(shafts, params)
     configure(shafts, renderer, light=light, quality=quality, method=method, **params)
     if added:
         chain._add_pass(shafts)

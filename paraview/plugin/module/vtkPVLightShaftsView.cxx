@@ -64,6 +64,43 @@ public:
 
   // The renderer's own FXAA was turned off for this render (AboutToRenderOnLocalProcess).
   bool RestoreRendererFXAA = false;
+
+  // FitMediumToScene: whether it is on and was handed to the pass, and the coefficients and
+  // exposure as given, with the pass's defaults (a value other than its default is the user's).
+  bool FitMedium = true;
+  bool FitAsked = false;
+  double Scattering[3] = { 0.0, 0.0, 0.0 };
+  double Absorption[3] = { 0.0, 0.0, 0.0 };
+  double Exposure = this->Shafts->GetExposure();
+  double DefaultScattering[3] = { 0.0, 0.0, 0.0 };
+  double DefaultAbsorption[3] = { 0.0, 0.0, 0.0 };
+  double DefaultExposure = this->Shafts->GetExposure();
+
+  Internals()
+  {
+    this->Shafts->GetMedium()->GetScatteringCoefficient(this->DefaultScattering);
+    this->Shafts->GetMedium()->GetAbsorptionCoefficient(this->DefaultAbsorption);
+    std::copy(this->DefaultScattering, this->DefaultScattering + 3, this->Scattering);
+    std::copy(this->DefaultAbsorption, this->DefaultAbsorption + 3, this->Absorption);
+  }
+
+  // The coefficients or the exposure as given (all of them, or the user's only).
+  void GiveMedium(bool usersOnly)
+  {
+    vtkLightShaftMedium* medium = this->Shafts->GetMedium();
+    const bool coefficients =
+      !std::equal(this->Scattering, this->Scattering + 3, this->DefaultScattering) ||
+      !std::equal(this->Absorption, this->Absorption + 3, this->DefaultAbsorption);
+    if (!usersOnly || coefficients)
+    {
+      medium->SetScatteringCoefficient(this->Scattering);
+      medium->SetAbsorptionCoefficient(this->Absorption);
+    }
+    if (!usersOnly || this->Exposure != this->DefaultExposure)
+    {
+      this->Shafts->SetExposure(this->Exposure);
+    }
+  }
 };
 
 vtkStandardNewMacro(vtkPVLightShaftsView);
@@ -148,6 +185,14 @@ void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
   }
   this->UpdateMediumVolume();
   vtkLightShaftPass* shafts = this->Impl->Shafts;
+  if (this->Impl->FitMedium && !this->Impl->FitAsked)
+  {
+    // Asked now, after ParaView pushed the properties' defaults; the user's values given
+    // again after the request, so that they win.
+    shafts->FitMediumToSceneOn();
+    this->Impl->GiveMedium(true);
+    this->Impl->FitAsked = true;
+  }
   if (this->DistributedShadowMap && DistributedController() && this->GeometryBounds.IsValid())
   {
     // GeometryBounds holds the union over the processes (vtkPVRenderView reduces it).
@@ -403,13 +448,36 @@ void vtkPVLightShaftsView::SetTranslucentShadows(bool translucent)
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetScatteringCoefficient(double r, double g, double b)
 {
+  this->Impl->Scattering[0] = r;
+  this->Impl->Scattering[1] = g;
+  this->Impl->Scattering[2] = b;
   this->Impl->Shafts->GetMedium()->SetScatteringCoefficient(r, g, b);
 }
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetAbsorptionCoefficient(double r, double g, double b)
 {
+  this->Impl->Absorption[0] = r;
+  this->Impl->Absorption[1] = g;
+  this->Impl->Absorption[2] = b;
   this->Impl->Shafts->GetMedium()->SetAbsorptionCoefficient(r, g, b);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetFitMediumToScene(bool fit)
+{
+  Internals& impl = *this->Impl;
+  if (fit != impl.FitMedium)
+  {
+    impl.FitMedium = fit;
+    impl.FitAsked = false;
+    if (!fit)
+    {
+      impl.Shafts->FitMediumToSceneOff();
+      impl.GiveMedium(false);
+    }
+    this->Modified();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -427,6 +495,7 @@ void vtkPVLightShaftsView::SetAnisotropy(double g)
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetShaftExposure(double exposure)
 {
+  this->Impl->Exposure = exposure;
   this->Impl->Shafts->SetExposure(exposure);
 }
 

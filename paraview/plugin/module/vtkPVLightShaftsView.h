@@ -127,6 +127,15 @@ public:
   ///@}
 
   /**
+   * The medium chosen from the scene (vtkLightShaftPass::SetFitMediumToScene), asked at the
+   * next render after it is switched on: the coefficients and the exposure the view was given
+   * are kept where they differ from the defaults (a script's or the user's values; ParaView
+   * pushes every property's default when it creates the view), and the rest is chosen. Off:
+   * the values as given. Default is on.
+   */
+  void SetFitMediumToScene(bool fit);
+
+  /**
    * Surfaces shadowed by the scattering lights' shadow maps (and shaped by the cookie),
    * forwarded to vtkLightShaftPass::SetShadowSurfaces. Default is off.
    */
