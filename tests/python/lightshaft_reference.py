@@ -46,7 +46,7 @@ class Camera:
     focal_point: tuple
     view_up: tuple
     view_angle: float  # vertical, degrees (VTK's default)
-    clipping_range: tuple
+    clipping_range: tuple  # (near, far): rays that hit nothing end at view depth far
     width: int
     height: int
     # Parallel projection: rays start on the plane through the position across the view (half
@@ -143,7 +143,7 @@ def camera_rays(cam):
 
 def surface_distance(eye, dirs, forward, cam, scene):
     """Distance to the first surface along each ray (origins `eye`: one point or one per ray),
-    or to the far clipping plane."""
+    or to the far depth (the pass's backdrop, render_helpers.backdrop_depth)."""
     t = cam.clipping_range[1] / (dirs @ forward)
     for centre, radius in scene.spheres:
         m = eye - np.asarray(centre, float)

@@ -124,12 +124,95 @@ def screenshot(window, front=False):
     return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, 3).copy()
 
 
-def reference_camera(renderer, window, size=None):
-    """The renderer's camera, for the reference (size: the viewport's, default the window's)."""
+def scene_bounds(renderer, shafts=None):
+    """The scene's box as the pass takes it (its rule, written again here): the visible props'
+    bounds, grown to hold the pass's ShadowCasterBounds (when set) and its medium's density
+    field; None when there is none."""
+    boxes = [renderer.ComputeVisiblePropBounds()]
+    if shafts is not None:
+        given = [0.0] * 6
+        if shafts.GetShadowCasterBounds(given):
+            boxes.append(given)
+        field = shafts.GetMedium().GetDensityField()
+        if field is not None:
+            boxes.append(field.GetBounds())
+    boxes = [b for b in boxes if all(np.isfinite(b)) and b[0] <= b[1] and abs(b[0]) < 1e299]
+    if not boxes:
+        return None
+    lows = np.min([b[0::2] for b in boxes], axis=0)
+    highs = np.max([b[1::2] for b in boxes], axis=0)
+    return [v for pair in zip(lows, highs) for v in pair]
+
+
+def backdrop_depth(renderer, shafts=None):
+    """Where the pass ends a ray that hits nothing: the view depth of the deepest corner of
+    scene_bounds; 0 with no scene."""
+    bounds = scene_bounds(renderer, shafts)
+    if bounds is None:
+        return 0.0
+    view = renderer.GetActiveCamera().GetViewTransformMatrix()
+    m = np.array([[view.GetElement(i, j) for j in range(4)] for i in range(4)])
+    corners = np.array([[bounds[i & 1], bounds[2 + ((i >> 1) & 1)], bounds[4 + ((i >> 2) & 1)], 1.0]
+                        for i in range(8)])
+    return max(0.0, float(np.max(-(corners @ m.T)[:, 2])))
+
+
+def scene_extent(shafts, bounds=(-6.0, 6.0, 0.0, 6.0, -6.0, 6.0)):
+    """Give a scene with no prop (or a small one) an extent: rays that hit nothing end at the
+    scene's far side, and a renderer with no 3D prop is left as it is. The pass's
+    ShadowCasterBounds (the distributed scene's bounds) are part of the scene's box; the
+    default is scenes.sphere_and_floor's floor up to its light."""
+    shafts.SetShadowCasterBounds(bounds)
+
+
+def add_extent_marker(renderer, info=None, centre=(-6.0, 0.25, -6.0), radius=0.25):
+    """A small sphere at the far corner of scenes.sphere_and_floor's floor, outside its spot's
+    volume (it casts nothing): a scene emptied of its props keeps the floor's extent with it
+    (rays that hit nothing end at the scene's far side, and a renderer with no 3D prop is left
+    as it is). Added to info.spheres for the numpy reference when `info` is given."""
+    from vtkmodules.vtkFiltersSources import vtkSphereSource
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
+    sphere = vtkSphereSource()
+    sphere.SetCenter(*centre)
+    sphere.SetRadius(radius)
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(sphere.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    renderer.AddActor(actor)
+    if info is not None:
+        info.spheres = list(info.spheres) + [(tuple(centre), radius)]
+    return actor
+
+
+def hold_bounds(renderer, bounds):
+    """Add a box of opacity 0 (VTK draws none of it and it passes all the light, but it is a
+    translucent prop: LIGHT_VOLUME gives way where it is a caster) that spans `bounds`, and
+    return it. Rays that hit nothing end at the scene's far side (the backdrop), so scenes
+    compared with and without a prop inside `bounds` keep one backdrop with it."""
+    from vtkmodules.vtkFiltersSources import vtkCubeSource
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
+    box = vtkCubeSource()
+    box.SetBounds(*bounds)
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(box.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetOpacity(0.0)
+    renderer.AddActor(actor)
+    return actor
+
+
+def reference_camera(renderer, window, size=None, shafts=None):
+    """The renderer's camera, for the reference (size: the viewport's, default the window's);
+    its far depth is the backdrop's (backdrop_depth, with `shafts`' extent and field), as the
+    pass takes it."""
     cam = renderer.GetActiveCamera()
     w, h = size or window.GetSize()
     return ref.Camera(cam.GetPosition(), cam.GetFocalPoint(), cam.GetViewUp(),
-                      cam.GetViewAngle(), cam.GetClippingRange(), w, h,
+                      cam.GetViewAngle(),
+                      (cam.GetClippingRange()[0], backdrop_depth(renderer, shafts)),
+                      w, h,
                       parallel=bool(cam.GetParallelProjection()),
                       parallel_scale=cam.GetParallelScale())
 
@@ -173,14 +256,15 @@ def reference_for(renderer, window, info, shaft_pass, panels=4, cookie=None, wit
     scene = ref.Scene(spheres=info.spheres, floors=info.floors) if with_props else ref.Scene()
     if lights is None:
         lights = getattr(info, "lights", None) or info.light
-    return ref.in_scattered_radiance(reference_camera(renderer, window, size),
+    return ref.in_scattered_radiance(reference_camera(renderer, window, size, shaft_pass),
                                      reference_lights(lights, cookie),
                                      reference_medium(shaft_pass), scene, panels=panels,
                                      shadows=shadows)
 
 
 def surface_points(renderer, window, info):
-    """World points the pixel-centre rays hit (far plane where nothing), and which are floor."""
+    """World points the pixel-centre rays hit (the backdrop where nothing), and which are
+    floor."""
     camera = reference_camera(renderer, window)
     eye, dirs, forward = ref.camera_rays(camera)
     d = dirs.reshape(-1, 3)

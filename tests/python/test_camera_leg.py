@@ -77,10 +77,13 @@ def covered():
 
 
 def measured(kind, panes, method=None, **params):
-    """(pass, reference) with the panes and (pass, reference) without them."""
+    """(pass, reference) with the panes and (pass, reference) without them (the panes at
+    opacity 0: VTK draws nothing of them, and the scene keeps its bounds, so rays that hit
+    nothing end at the same backdrop)."""
     renderer, _, shafts = render(kind, panes, method, **params)
     with_panes = (rh.in_scatter(shafts), rh.scene_reference(renderer, shafts), shafts)
-    renderer, _, shafts = render(kind, (), method, **params)
+    clear = [(z, color, 0.0) for z, color, _ in panes]
+    renderer, _, shafts = render(kind, clear, method, **params)
     without = (rh.in_scatter(shafts), rh.scene_reference(renderer, shafts), shafts)
     return with_panes, without
 

@@ -275,8 +275,9 @@ def test_automatic_slice_count_follows_the_lit_depth_range():
     renderer, window, info, shafts = shaft_scene(160, 120, AutomaticSliceCount=True,
                                                  MaximumNumberOfSlices=400)
     near, far = shafts.GetLastFrame().GetSliceDepthRange()
-    clip_far = renderer.GetActiveCamera().GetClippingRange()[1]
-    expected = int(np.ceil((far - near) / (clip_far / 400)))
+    backdrop = shafts.GetLastFrame().GetBackdropDepth()
+    assert backdrop == pytest.approx(rh.backdrop_depth(renderer), rel=1e-6)
+    expected = int(np.ceil((far - near) / (backdrop / 400)))
     assert abs(shafts.GetLastFrame().GetNumberOfSlicesDrawn() - expected) <= 1
     # A narrower cone spans less depth: fewer slabs.
     info.light.SetConeAngle(8.0)

@@ -376,6 +376,7 @@ def test_analytic_is_exact_without_shadows(case):
 
 def remove_props(renderer, info, shafts):
     renderer.RemoveAllViewProps()
+    rh.add_extent_marker(renderer)  # (a renderer with no 3D prop is left as it is)
 
 
 def test_automatic_takes_the_exact_path_when_nothing_shadows():
@@ -391,6 +392,7 @@ def test_automatic_uses_slices_with_casters_or_noise():
     assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.SLICES
     assert shafts.GetLastFrame().GetShadowMapRendered()
     renderer.RemoveAllViewProps()
+    rh.add_extent_marker(renderer)
     shafts.GetMedium().SetNoiseAmplitude(0.5)
     window.Render()
     assert shafts.GetLastFrame().GetMethod() == vtkLightShaftPass.SLICES

@@ -79,6 +79,7 @@ def test_closed_form_b_matches_quadrature():
     info.light.SetAttenuationValues(0.0, 0.0, 1.0)
     info.light.SetExponent(0.0)
     renderer.RemoveActor(info.actors[1])  # no floor: nothing shadows, no surface
+    rh.scene_extent(shafts)
     window.Render()
     closed, _, reference = cpp_reference(renderer, shafts, RelativeTolerance=1e-12)
     assert reference.GetLastClosedFormPixels() > 0
@@ -95,6 +96,7 @@ def test_small_extinction_limit():
     info.light.SetAttenuationValues(0.0, 0.0, 1.0)
     info.light.SetExponent(0.0)
     renderer.RemoveActor(info.actors[1])
+    rh.scene_extent(shafts)
     window.Render()
     closed, _, _ = cpp_reference(renderer, shafts, RelativeTolerance=1e-12)
     quadrature, _, _ = cpp_reference(renderer, shafts, UseClosedForms=False,
@@ -211,6 +213,7 @@ def test_closed_forms_near_the_light_line(offset):
     info.light.SetAttenuationValues(0.0, 0.0, 1.0)
     info.light.SetExponent(0.0)
     renderer.RemoveActor(info.actors[1])
+    rh.scene_extent(shafts)
     camera = renderer.GetActiveCamera()
     camera.SetPosition(0.5, 6.0, 10.0)
     camera.SetFocalPoint(0.5 + offset, 6.0, 0.0)
@@ -280,9 +283,11 @@ def test_kinds_agree_with_the_numpy_reference_with_the_sphere_shadow(kind, phase
 
 
 def no_props_scene(kind, **medium):
-    """kind_scene without sphere or floor: nothing shadows, rays run to the far plane."""
+    """kind_scene without sphere or floor: nothing shadows, rays run to the backdrop of the
+    floor's extent (rh.scene_extent)."""
     renderer, window, info, shafts, lights = kind_scene(kind, sphere=False, **medium)
     renderer.RemoveActor(info.actors[1])
+    rh.scene_extent(shafts)
     info.floors = []
     window.Render()
     return renderer, window, info, shafts, lights
@@ -496,7 +501,7 @@ def test_exact_shadow_edges_equal_bisected_ones(kind):
     # Where only opaque surfaces shadow, the reference places each change of visibility along a
     # ray exactly (the ray clipped by the shadowing triangles' shadow volumes); with a
     # translucent surface in the scene it bisects them to 1e-12 of the interval. A translucent
-    # triangle far out of the light and the view changes nothing else: the two must agree to
+    # triangle far out of the light and behind the view changes nothing else: the two must agree to
     # the bisection's precision, over the tessellated sphere's shared edges and the window
     # scene's wall. (Enough samples that neither misses a shadow thinner than their spacing:
     # at the default 32 a point light behind the window's bars is missed by both, in different
@@ -517,7 +522,13 @@ def test_exact_shadow_edges_equal_bisected_ones(kind):
             renderer, window, _, shafts, _ = kind_scene(kind, 96, 72)
         exact, _, _ = cpp_reference(renderer, shafts, VisibilitySamples=512)
         assert exact.max() > 0.0
-        far_away = rh.add_sphere(renderer, (1e4, 1e4, 1e4), 1.0, (1.0, 1.0, 1.0), resolution=4)
+        # Behind the camera: it leaves the scene's far side, where rays that hit nothing end,
+        # where it was.
+        camera = renderer.GetActiveCamera()
+        eye = np.asarray(camera.GetPosition())
+        forward = np.asarray(camera.GetFocalPoint()) - eye
+        far_away = rh.add_sphere(renderer, tuple(eye - 100.0 * forward / np.linalg.norm(forward)),
+                                 1.0, (1.0, 1.0, 1.0), resolution=4)
         far_away.GetProperty().SetOpacity(0.5)
         bisected, _, _ = cpp_reference(renderer, shafts, VisibilitySamples=512)
         assert max_relative(exact, bisected) <= 1e-9, (make, kind)

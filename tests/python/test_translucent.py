@@ -27,7 +27,7 @@ RED = (1.0, 0.0, 0.0)
 GREEN = (0.0, 1.0, 0.0)
 
 
-def add_pane(renderer, height, color, opacity, half=50.0):
+def add_pane(renderer, height, color, opacity, half=20.0):
     """A horizontal square pane of side 2 * half at y = height, centred on the y axis (by
     default across the whole scene: all the light below it has passed it)."""
     pane = vtkPlaneSource()
@@ -44,7 +44,7 @@ def add_pane(renderer, height, color, opacity, half=50.0):
     return actor
 
 
-def make_scene(kind, panes=(), half=50.0, **params):
+def make_scene(kind, panes=(), half=20.0, **params):
     """The scene with `panes` ((height, colour, opacity) each, of side 2 * half), rendered once
     at Final."""
     renderer, window = rh.make_window(WIDTH, HEIGHT)
@@ -52,6 +52,8 @@ def make_scene(kind, panes=(), half=50.0, **params):
     renderer.RemoveActor(info.actors[0])
     info.spheres = []
     lights = rh.make_light_kind(renderer, info, kind, POINT_POSITION)
+    # One backdrop with and without the panes.
+    rh.hold_bounds(renderer, (-20.0, 20.0, -0.5, 4.5, -20.0, 20.0))
     actors = [add_pane(renderer, *pane, half=half) for pane in panes]
     shafts = vtkLightShaftPass()
     shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)

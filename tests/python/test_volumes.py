@@ -238,6 +238,8 @@ def test_a_changed_opacity_function_is_read_again():
     opacity.AddPoint(2.0, 0.0)
     window.Render()
     after = rh.in_scatter(shafts)
+    # Without it (its bounds held: rays that hit nothing end at the scene's far side).
+    rh.hold_bounds(renderer, volume.GetBounds())
     renderer.RemoveVolume(volume)
     window.Render()
     assert shafts.GetLastFrame().GetVolume() is None
