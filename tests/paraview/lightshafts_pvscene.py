@@ -55,8 +55,9 @@ def window_class(view):
     return view.GetRenderWindow().GetClassName()
 
 
-def make_scene(view=None, occluder=True, **shaft_properties):
-    """The test scene in a LightShaftsRenderView (created when `view` is None). Returns
+def make_scene(view=None, occluder=True, medium=True, **shaft_properties):
+    """The test scene in a LightShaftsRenderView (created when `view` is None); `medium`: its
+    coefficients and exposure set (else the view chooses them from the scene). Returns
     (view, light, sphere display)."""
     from paraview import simple
     if view is None:
@@ -87,8 +88,9 @@ def make_scene(view=None, occluder=True, **shaft_properties):
     light.ConeAngle = CONE_ANGLE
     light.Intensity = 1.0
     if view.GetXMLName() == "LightShaftsRenderView":
-        view.ScatteringCoefficient = [0.08, 0.08, 0.08]
-        view.ShaftExposure = 12.0
+        if medium:
+            view.ScatteringCoefficient = [0.08, 0.08, 0.08]
+            view.ShaftExposure = 12.0
         view.ShaftQuality = 0
         view.NumberOfSlices = 128
         view.ShadowMapSize = 1024

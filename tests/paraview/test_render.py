@@ -9,7 +9,9 @@ Checks, on a spotlight above a floor with a sphere nearly filling its cone:
   3. LightShafts = 0 is the plain render view (pixel-identical to a RenderView), and so is an
      empty medium (ScatteringCoefficient 0, AttenuateScene on; ParaView's FXAA on);
   4. tone mapping chains after the shafts: with UseToneMapping on (Reinhard) the shafts are
-     still there and the picture is the Reinhard curve of the picture without it.
+     still there and the picture is the Reinhard curve of the picture without it;
+  5. a view given no coefficient or exposure chooses them from the scene, and keeps one set
+     after.
 Usage: pvbatch test_render.py OUTPUT_DIR [--update]
 """
 
@@ -131,6 +133,24 @@ def main():
         failures.append("no shafts with tone mapping on")
     if not (curve_change > 1.0 and off_curve < 0.35 * curve_change):
         failures.append("tone mapping does not map the light-shaft picture")
+
+    # 5. The medium chosen from the scene (FitMediumToScene, on by default): a view given no
+    # coefficient or exposure; then one set in the script is kept.
+    chosen, _, _ = scene.make_scene(medium=False)
+    scene.screenshot(chosen, os.path.join(out, "medium_from_scene.png"))
+    def in_use():
+        chosen.UpdatePropertyInformation()
+        return (list(chosen.GetPropertyValue("ScatteringCoefficientInUse")),
+                chosen.GetPropertyValue("ShaftExposureInUse"))
+
+    sigma, fitted_exposure = in_use()
+    print(f"medium from the scene: sigma_s {sigma[0]:.4f}, exposure {fitted_exposure:.1f}")
+    if not (sigma[0] == sigma[1] == sigma[2] and 0.0 < sigma[0] < 0.1 and fitted_exposure > 1.0):
+        failures.append(f"no medium chosen from the scene: {sigma}, {fitted_exposure}")
+    chosen.ScatteringCoefficient = [0.03, 0.03, 0.03]
+    scene.screenshot(chosen, os.path.join(out, "medium_set.png"))
+    if in_use() != ([0.03, 0.03, 0.03], fitted_exposure):
+        failures.append(f"a coefficient set after the choice is not kept: {in_use()}")
 
     return scene.report(failures)
 

@@ -309,6 +309,16 @@ double vtkPVLightShaftsView::GetLastMediumShadowBuildTime()
   return this->Impl->Shafts->GetLastFrame()->GetLightFieldShadowBuildTime(0);
 }
 
+double* vtkPVLightShaftsView::GetScatteringCoefficientInUse()
+{
+  return this->Impl->Shafts->GetMedium()->GetScatteringCoefficient();
+}
+
+double vtkPVLightShaftsView::GetShaftExposureInUse()
+{
+  return this->Impl->Shafts->GetExposure();
+}
+
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::UpdateImageProcessing()
 {

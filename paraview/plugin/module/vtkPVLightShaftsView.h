@@ -82,6 +82,16 @@ public:
 
   ///@{
   /**
+   * The scattering coefficient and the exposure in use (those chosen from the scene, or set),
+   * for scripts and the GUI: the information properties ScatteringCoefficientInUse and
+   * ShaftExposureInUse.
+   */
+  double* GetScatteringCoefficientInUse() VTK_SIZEHINT(3);
+  double GetShaftExposureInUse();
+  ///@}
+
+  ///@{
+  /**
    * Light shafts on or off. Off: the view renders exactly as a plain render view (tone mapping
    * included). Default is on.
    */
