@@ -89,8 +89,9 @@ def paraview_properties():
 
 PARAVIEW = paraview_properties()
 # The view's defaults that differ from the pass's, on purpose: ParaView's GUI renders a still
-# view again until it converges (paraview/plugin/gui), so refinement is on there.
-PARAVIEW_OWN_DEFAULTS = {"ProgressiveRefinement": (1,)}
+# view again until it converges (paraview/plugin/gui), so refinement is on there; a new view is
+# given no coefficient, so it chooses them from the scene (as add_light_shafts does).
+PARAVIEW_OWN_DEFAULTS = {"ProgressiveRefinement": (1,), "FitMediumToScene": (1,)}
 
 
 def test_the_paraview_view_exposes_the_pass_parameters():
