@@ -19,6 +19,8 @@
 #   tools/measure.sh still-final       # the Final preset in a still view after frames under a
 #                                      # budget, whole or split among estimates
 #                                      # (docs/still-final.md; about 2 min)
+#   tools/measure.sh any-scene         # the one-liner's medium at three scales, and the far
+#                                      # plane moved (docs/any-scene.md; seconds)
 #   tools/measure.sh reprojection      # what carrying the picture to the next camera costs
 #                                      # (docs/reprojection.md)
 #   tools/measure.sh resolution-cost   # how the budget's settings' time follows the resolution
@@ -83,6 +85,7 @@ case "$what" in
   refinement-filters) run tests/benchmarks/refinement_filters.py --output-dir docs "$@" ;;
   budget) run tests/benchmarks/budget.py --output-dir docs "$@" ;;
   still-final) run tests/benchmarks/still_final.py --output-dir docs "$@" ;;
+  any-scene) run tests/benchmarks/any_scene.py "$@" ;;
   reprojection) run tests/benchmarks/reprojection_bound.py --output docs/reprojection.md "$@" ;;
   resolution-cost) run tests/benchmarks/resolution_cost.py "$@" ;;
   medium-field) run tests/benchmarks/medium_field_cost.py "$@" ;;

@@ -292,3 +292,11 @@ def test_still_final_benchmark_smoke(tmp_path):
     rows = [line.split("|") for line in text.splitlines() if line.startswith("| ") and " ms |" in line]
     held = [row for row in rows if row[8].strip() == "yes"]
     assert held and all(int(row[7]) < 16 for row in held)
+
+
+def test_any_scene_figures_smoke():
+    script = os.path.join(os.path.dirname(BENCHMARK), "any_scene.py")
+    result = subprocess.run([sys.executable, script, "--scales", "1", "10"],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.count("| 1") >= 1 and "far plane 1000.0" in result.stdout
