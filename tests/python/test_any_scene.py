@@ -17,8 +17,9 @@ from vtk_output import LIGHT_VOLUME_GIVES_WAY
 WIDTH, HEIGHT = 200, 150
 
 
-def gallery_window(name):
+def gallery_window(name, samples=0):
     renderer, window = rh.make_window(WIDTH, HEIGHT)
+    window.SetMultiSamples(samples)
     window.SetNumberOfLayers(1)
     renderer.SetBackground(0.15, 0.2, 0.35)
     shafted = gallery_scenes.GALLERY[name](renderer, window)
@@ -34,9 +35,18 @@ def spotlight(position=(0.3, 6.0, 0.2), focal=(0.0, 0.0, 0.0), cone=25.0):
     return spot
 
 
-@pytest.mark.parametrize("name", list(gallery_scenes.GALLERY))
-def test_the_gallery_is_vtks_picture_at_zero_scattering_and_renders_shafts(name):
-    renderer, window = gallery_window(name)
+# Multisampled too, but for two of VTK 9.1's own faults (docs/known-issues.md): its render of a
+# multisampled window with FXAA is black (llvmpipe), and its depth peeling of one raises
+# GL_INVALID_OPERATION (a depth blit between formats), with or without the pass.
+NOT_MULTISAMPLED = ("FXAA", "translucent, depth peeling", "volume and translucent, peeled together")
+GALLERY_RUNS = [(name, 0) for name in gallery_scenes.GALLERY] + \
+    [(name, 4) for name in gallery_scenes.GALLERY if name not in NOT_MULTISAMPLED]
+
+
+@pytest.mark.parametrize("name,samples", GALLERY_RUNS,
+                         ids=[f"{name}, {samples} samples" for name, samples in GALLERY_RUNS])
+def test_the_gallery_is_vtks_picture_at_zero_scattering_and_renders_shafts(name, samples):
+    renderer, window = gallery_window(name, samples)
     spot = spotlight()
     renderer.AddLight(spot)  # (a positional light: VTK adds no headlight)
     window.Render()
@@ -65,6 +75,7 @@ def test_the_gallery_is_vtks_picture_at_zero_scattering_and_renders_shafts(name)
     in_scatter = rh.in_scatter(shafts)
     assert np.all(np.isfinite(in_scatter))
     assert in_scatter.max() > 0.0, name
+    window.SetMultiSamples(0)  # (the shared window, as the other tests expect it)
 
 
 def test_a_preset_gives_way_silently_and_the_report_says_why():
