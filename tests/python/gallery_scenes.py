@@ -150,7 +150,7 @@ def text_2d(renderer, window):
     text.GetTextProperty().SetFontSize(18)
     text.GetTextProperty().SetColor(1.0, 1.0, 0.0)
     text.SetDisplayPosition(10, 10)
-    renderer.AddActor2D(text)
+    renderer.AddViewProp(text)
     return renderer
 
 
@@ -436,7 +436,7 @@ def scalars_and_scalar_bar(renderer, window):
     bar.SetLookupTable(mapper.GetLookupTable())
     bar.SetWidth(0.12)
     bar.SetHeight(0.6)
-    renderer.AddActor2D(bar)
+    renderer.AddViewProp(bar)
     _camera(renderer)
     return renderer
 

@@ -184,7 +184,7 @@ def test_a_renderer_with_only_2d_actors_is_left_as_it_is():
     text = vtkTextActor()
     text.SetInput("2D only")
     text.SetDisplayPosition(10, 10)
-    renderer.AddActor2D(text)
+    renderer.AddViewProp(text)
     renderer.GetActiveCamera().SetClippingRange(0.1, 1000.0)
     window.Render()
     plain = rh.screenshot(window)
