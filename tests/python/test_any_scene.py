@@ -12,7 +12,7 @@ from lightshafts import add_light_shafts, scenes, vtkLightShaftPass
 
 import gallery_scenes
 import render_helpers as rh
-from vtk_output import LIGHT_VOLUME_GIVES_WAY
+from vtk_output import LIGHT_VOLUME_GIVES_WAY, VTK_OUTPUT
 
 WIDTH, HEIGHT = 200, 150
 
@@ -94,7 +94,6 @@ def test_a_preset_gives_way_silently_and_the_report_says_why():
     shafts.SetTargetError(0.0)
     # The same method named by the user: one warning.
     shafts.SetMethodToLightVolume()
-    from vtk_output import VTK_OUTPUT
     VTK_OUTPUT.expect(LIGHT_VOLUME_GIVES_WAY)
     window.Render()
     assert any("LIGHT_VOLUME" in text for _, text in VTK_OUTPUT.messages)
