@@ -29,11 +29,13 @@ uniform sampler2DMS sceneDepthSamples;
 ivec2 sceneSize() { return textureSize(sceneColorSamples); }
 vec4 sceneColorAt(ivec2 pixel) { return texelFetch(sceneColorSamples, pixel, gl_SampleID); }
 float sceneDepthAt(ivec2 pixel) { return texelFetch(sceneDepthSamples, pixel, gl_SampleID).r; }
+vec2 sampleOffset() { return gl_SamplePosition; } // where the sample's depth was taken
 #else
 uniform sampler2D sceneColor;
 ivec2 sceneSize() { return textureSize(sceneColor, 0); }
 vec4 sceneColorAt(ivec2 pixel) { return texelFetch(sceneColor, pixel, 0); }
 float sceneDepthAt(ivec2 pixel) { return texelFetch(sceneDepth, pixel, 0).r; }
+vec2 sampleOffset() { return vec2(0.5); }
 #endif
 
 #ifdef LIGHTSHAFT_SURFACE_CORRECTION
@@ -66,7 +68,7 @@ void main()
   vec3 originVC;
   vec3 dirVC;
   vec2 ndc;
-  lightShaftViewRay(vec2(pixel) + 0.5, originVC, dirVC, ndc);
+  lightShaftViewRay(vec2(pixel) + sampleOffset(), originVC, dirVC, ndc);
   float surfaceDistance = lightShaftSurfaceDistance(ndc, depth, dirVC);
 #ifdef LIGHTSHAFT_FIELD
   // A medium from data: its optical depth up to the surface.

@@ -37,6 +37,10 @@ ivec2 sceneSize() { return textureSize(sceneColorSamples); }
 vec3 litAt(ivec2 pixel) { return texelFetch(sceneColorSamples, pixel, gl_SampleID).rgb; }
 vec3 unlitAt(ivec2 pixel) { return texelFetch(sceneColorUnlitSamples, pixel, gl_SampleID).rgb; }
 float depthAt(ivec2 pixel) { return texelFetch(sceneDepthSamples, pixel, gl_SampleID).r; }
+// Where in its pixel this sample lies: its depth is the surface's there, not at the centre (read
+// at the centre, a sloped surface's point is off by up to half a pixel's slope, which the map's
+// tolerance does not cover: acne).
+vec2 sampleOffset() { return gl_SamplePosition; }
 #else
 uniform sampler2D sceneColor;
 uniform sampler2D sceneColorUnlit;
@@ -44,12 +48,13 @@ ivec2 sceneSize() { return textureSize(sceneColor, 0); }
 vec3 litAt(ivec2 pixel) { return texelFetch(sceneColor, pixel, 0).rgb; }
 vec3 unlitAt(ivec2 pixel) { return texelFetch(sceneColorUnlit, pixel, 0).rgb; }
 float depthAt(ivec2 pixel) { return texelFetch(sceneDepth, pixel, 0).r; }
+vec2 sampleOffset() { return vec2(0.5); }
 #endif
 
-// The surface point (view coordinates) seen at `pixel`.
+// The surface point (view coordinates) this fragment's sample sees in `pixel`.
 vec3 surfaceAt(ivec2 pixel, float depth)
 {
-  vec2 ndc = 2.0 * (vec2(pixel) + 0.5) / vec2(sceneSize()) - 1.0;
+  vec2 ndc = 2.0 * (vec2(pixel) + sampleOffset()) / vec2(sceneSize()) - 1.0;
   vec4 pointVC = invProjectionDCVC * vec4(ndc, 2.0 * depth - 1.0, 1.0);
   return pointVC.xyz / pointVC.w;
 }
