@@ -45,6 +45,7 @@ struct vtkLightShaftParameters
   bool MethodNamed{}; ///< Method set by the user (warns where unusable), not chosen
   double Exposure{};
   bool AttenuateScene{};
+  bool AttenuateSurfaceLight{}; ///< (with ShadowSurfaces)
   int NumberOfSlices{};
   bool AutomaticSliceCount{};
   int MaximumNumberOfSlices{};
@@ -150,6 +151,10 @@ struct vtkLightShaftSceneImage
   /// light's surface contribution times (1 - its visibility * cookie); nullptr: nothing.
   vtkTextureObject* SurfaceCorrection = nullptr;
   int Samples = 0;
+  /// Color (and the scene without a light) in half float, unclamped: set where the surface
+  /// light takes a light's share as lit - unlit, so that a surface lit beyond white keeps its
+  /// whole share (and gets its whole shadow); the composite clamps.
+  bool HighRange = false;
 };
 
 /**

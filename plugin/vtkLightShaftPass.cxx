@@ -651,6 +651,7 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
   p.MethodNamed = self.MethodNamed;
   p.Exposure = self.Exposure;
   p.AttenuateScene = self.AttenuateScene;
+  p.AttenuateSurfaceLight = self.AttenuateSurfaceLight;
   p.NumberOfSlices = self.NumberOfSlices;
   p.AutomaticSliceCount = self.AutomaticSliceCount;
   p.MaximumNumberOfSlices = self.MaximumNumberOfSlices;
@@ -736,6 +737,7 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   // The scene, with the samples of the target it is composited into.
   frame.Scene.Samples = vtkLightShaftResources::TargetSamples();
   frame.Statistics.MultiSamples = frame.Scene.Samples;
+  frame.Scene.HighRange = shadowSurfaces || cookie;
   ostate->PushFramebufferBindings();
   this->Scene.Render(frame, delegate);
 
@@ -902,15 +904,21 @@ void vtkLightShaftPass::Internals::RenderLight(vtkLightShaftFrame& frame,
     state.Timer.ReusableStart();
   }
   this->ReadyVolumeShadow(frame, state.VolumeShadow); // (the shafts' and the surfaces')
-  if (frame.Medium.Scatters())
+  // The surfaces' light leg through the medium (its field's table, as the shafts').
+  const bool lightLeg =
+    shadowSurfaces && frame.Parameters.AttenuateSurfaceLight && frame.Medium.Extinguishes();
+  if (frame.Medium.Scatters() || lightLeg)
   {
     this->ReadyFieldShadow(frame, state.FieldShadow, state.RefinedFieldShadow);
+  }
+  if (frame.Medium.Scatters())
+  {
     this->InScatter.Add(frame, this->InScatter.ChooseMethod(frame));
   }
   if (shadowSurfaces || frame.Cookie)
   {
     vtkTextureObject* map = shadowSurfaces ? frame.ShadowMap->Ready(frame) : nullptr;
-    this->SurfaceLight.Add(frame, this->Scene, delegate, light, map);
+    this->SurfaceLight.Add(frame, this->Scene, delegate, light, map, lightLeg);
   }
   if (timed)
   {
@@ -937,6 +945,7 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FitMediumToScene: " << this->FitMediumToScene << "\n";
   os << indent << "AttenuateScene: " << this->AttenuateScene << "\n";
   os << indent << "ShadowSurfaces: " << this->ShadowSurfaces << "\n";
+  os << indent << "AttenuateSurfaceLight: " << this->AttenuateSurfaceLight << "\n";
   os << indent << "NumberOfSlices: " << this->NumberOfSlices << "\n";
   os << indent << "ShadowMapSize: " << this->ShadowMapSize << "\n";
   os << indent << "Cookie: " << this->Impl->Textures.GetCookie() << "\n";

@@ -168,13 +168,21 @@ public:
 
   ///@{
   /**
-   * Shadow the surfaces too (VTK's lighting has none) with each scattering light's shadow map,
-   * for every kind of light: one more render of the scene and a full-screen pass per light
-   * with casters, also when the medium is empty (docs/lights-and-cookies.md). Default is off.
+   * ShadowSurfaces: light the surfaces as the shafts are lit (VTK's lighting has no shadows):
+   * each light's share of a surface's colour is shadowed by its shadow map (opaque and
+   * translucent casters, the scene's volume) and, with AttenuateSurfaceLight, dimmed by the
+   * medium on the light's way to the surface: exp(-sigma_t times the optical depth of that
+   * leg), homogeneous or through the density field. For every kind of light: one more render
+   * of the scene and a full-screen pass per light, also when the medium is empty
+   * (docs/lights-and-cookies.md). AttenuateSurfaceLight off keeps VTK's own surface lighting
+   * but for the shadows. Defaults are off and on.
    */
   vtkSetMacro(ShadowSurfaces, bool);
   vtkGetMacro(ShadowSurfaces, bool);
   vtkBooleanMacro(ShadowSurfaces, bool);
+  vtkSetMacro(AttenuateSurfaceLight, bool);
+  vtkGetMacro(AttenuateSurfaceLight, bool);
+  vtkBooleanMacro(AttenuateSurfaceLight, bool);
   ///@}
 
   ///@{
@@ -493,6 +501,7 @@ protected:
   bool FitMediumToScene = false;
   bool AttenuateScene = true;
   bool ShadowSurfaces = false;
+  bool AttenuateSurfaceLight = true;
   bool TranslucentShadows = true;
   int TranslucentShadowLayers = 4;
   int NumberOfSlices = 64;

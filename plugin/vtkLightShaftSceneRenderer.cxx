@@ -226,7 +226,8 @@ void vtkLightShaftSceneRenderer::Render(vtkLightShaftFrame& frame, vtkRenderPass
   const int h = frame.Size[1];
   const int samples = frame.Scene.Samples;
   vtkLightShaftSceneImage& scene = frame.Scene;
-  scene.Color = this->Color.Ensure(window, TextureKind::RGBA8, w, h, samples);
+  const TextureKind colorKind = scene.HighRange ? TextureKind::RGBA16F : TextureKind::RGBA8;
+  scene.Color = this->Color.Ensure(window, colorKind, w, h, samples);
   scene.Depth = this->Depth.Ensure(window, TextureKind::Depth, w, h, samples);
   this->RenderInto(frame, delegate, scene.Color, scene.Depth);
   // The composite copies the depth from the framebuffer holding the scene.
@@ -244,7 +245,8 @@ vtkTextureObject* vtkLightShaftSceneRenderer::RenderWithout(vtkLightShaftFrame& 
   const int w = frame.Size[0];
   const int h = frame.Size[1];
   const int samples = frame.Scene.Samples;
-  vtkTextureObject* unlit = this->ColorUnlit.Ensure(window, TextureKind::RGBA8, w, h, samples);
+  vtkTextureObject* unlit = this->ColorUnlit.Ensure(
+    window, frame.Scene.HighRange ? TextureKind::RGBA16F : TextureKind::RGBA8, w, h, samples);
   vtkTextureObject* depth = this->DepthUnlit.Ensure(window, TextureKind::Depth, w, h, samples);
   const double intensity = light->GetIntensity();
   light->SetIntensity(0.0);

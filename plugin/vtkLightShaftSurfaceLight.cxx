@@ -38,9 +38,10 @@ void vtkLightShaftSurfaceLight::Add(vtkLightShaftFrame& frame,
   vtkLightShaftSceneRenderer& scene,
   vtkRenderPass* delegate,
   vtkLight* light,
-  vtkTextureObject* shadowMap)
+  vtkTextureObject* shadowMap,
+  bool lightLeg)
 {
-  if (!shadowMap && !frame.Cookie)
+  if (!shadowMap && !frame.Cookie && !lightLeg)
   {
     return;
   }
@@ -76,6 +77,10 @@ void vtkLightShaftSurfaceLight::Add(vtkLightShaftFrame& frame,
     shadowMap != nullptr && frame.Translucency, "LIGHTSHAFT_TRANSLUCENT", "translucent");
   variant.Feature(frame.VolumeShadow != nullptr, "LIGHTSHAFT_VOLUME_SHADOW", "volume");
   variant.Feature(frame.Cookie != nullptr, "LIGHTSHAFT_COOKIE", "cookie");
+  variant.Feature(lightLeg, "LIGHTSHAFT_LIGHT_LEG", "light-leg");
+  variant.Feature(lightLeg && frame.Density, "LIGHTSHAFT_FIELD", "field");
+  variant.Feature(
+    lightLeg && frame.Density && frame.FieldShadow, "LIGHTSHAFT_FIELD_SHADOW", "field-shadow");
   variant.Feature(multisample, "LIGHTSHAFT_MULTISAMPLE", "multisample");
   vtkLightShaftResources::FullScreenPass& pass =
     this->Pass[static_cast<int>(frame.Light.Model.Kind)];
@@ -120,6 +125,19 @@ void vtkLightShaftSurfaceLight::Add(vtkLightShaftFrame& frame,
       program, "volumeShadow", *frame.VolumeShadowLayout, frame);
     frame.VolumeShadow->Activate();
     program->SetUniformi("volumeShadowTexture", frame.VolumeShadow->GetTextureUnit());
+  }
+  if (lightLeg)
+  {
+    program->SetUniform3f("sigmaT", frame.Medium.SigmaT);
+    if (frame.Density)
+    {
+      vtkLightShaftShaders::SetDensityUniforms(program, frame); // (activates its textures)
+      active.push_back(frame.Density);
+      if (frame.FieldShadow)
+      {
+        active.push_back(frame.FieldShadow);
+      }
+    }
   }
   if (frame.Cookie)
   {

@@ -23,11 +23,13 @@ struct vtkLightShaftFrame;
  * @brief   Takes away, from the scene's surfaces, the light their lights' shadow maps shadow and
  *          the cookie darkens: with any delegate, for every light kind.
  *
- * VTK's lighting has no shadows. For each light whose surface light must change (ShadowSurfaces
- * and the light has a shadow map; or a cookie shapes it), the scene is rendered again without
- * that light, and a full-screen pass adds (1 - visibility * cookie) * (lit - unlit) into a
- * float correction buffer (multisampled like the scene, per sample), which the composite
- * subtracts. The visibility is the shafts' own shadow map, so surfaces and shafts agree.
+ * VTK's lighting has no shadows. For each light whose surface light must change (ShadowSurfaces,
+ * where the light has a shadow map or the medium dims its way to the surfaces; or a cookie
+ * shapes it), the scene is rendered again without that light, and a full-screen pass adds
+ * (1 - visibility * cookie * transmittance) * (lit - unlit) into a float correction buffer
+ * (multisampled like the scene, per sample), which the composite subtracts. The visibility is
+ * the shafts' own shadow map, and the transmittance their light leg's (exp(-sigma_t times its
+ * optical depth), from the field's table where they use it), so surfaces and shafts agree.
  * Costs one scene render and one full-screen pass per such light; nothing for the others.
  */
 class vtkLightShaftSurfaceLight
@@ -41,14 +43,16 @@ public:
 
   /**
    * Add the frame's current light's correction (`light`, its shadow map `shadowMap` or nullptr,
-   * the frame's cookie for it or none): renders the scene without the light through `scene`.
-   * Does nothing when there is neither a map nor a cookie.
+   * the frame's cookie for it or none, and with `lightLeg` the medium's transmittance from the
+   * light): renders the scene without the light through `scene`. Does nothing when there is
+   * none of the three.
    */
   void Add(vtkLightShaftFrame& frame,
     vtkLightShaftSceneRenderer& scene,
     vtkRenderPass* delegate,
     vtkLight* light,
-    vtkTextureObject* shadowMap);
+    vtkTextureObject* shadowMap,
+    bool lightLeg);
 
   /// The correction this frame added up, nullptr when none.
   vtkTextureObject* GetCorrection();

@@ -1,12 +1,15 @@
 //VTK::System::Dec
-// One light's surface light where its shadow map shadows the visible surfaces or the cookie
-// darkens them: the light's share of each surface's colour, lit - unlit (the scene rendered
-// with and without that light), times what it loses there, 1 - visibility * cookie; added into
-// the correction the composite subtracts from the scene. The visibility is the shafts' own
-// shadow map, with a depth tolerance that grows with the surface's slope to the light (its
-// normal from the depth of the neighbouring pixels). Features (#defines): LIGHTSHAFT_SHADOW,
-// LIGHTSHAFT_TRANSLUCENT, LIGHTSHAFT_VOLUME_SHADOW (the light's leg through the scene's volume),
-// LIGHTSHAFT_COOKIE, LIGHTSHAFT_MULTISAMPLE (per sample), the light's kind.
+// One light's surface light where its shadow map shadows the visible surfaces, the medium dims
+// the light on its way to them or the cookie darkens them: the light's share of each surface's
+// colour, lit - unlit (the scene rendered with and without that light), times what it loses
+// there, 1 - visibility * cookie * transmittance; added into the correction the composite
+// subtracts from the scene. The visibility is the shafts' own shadow map, with a depth
+// tolerance that grows with the surface's slope to the light (its normal from the depth of the
+// neighbouring pixels). Features (#defines): LIGHTSHAFT_SHADOW, LIGHTSHAFT_TRANSLUCENT,
+// LIGHTSHAFT_VOLUME_SHADOW (the light's leg through the scene's volume), LIGHTSHAFT_LIGHT_LEG
+// (the medium's: homogeneous, or with LIGHTSHAFT_FIELD and LIGHTSHAFT_FIELD_SHADOW its field,
+// as the shafts' light leg), LIGHTSHAFT_COOKIE, LIGHTSHAFT_MULTISAMPLE (per sample), the light's
+// kind.
 //VTK::LightShaft::Features
 #ifdef LIGHTSHAFT_MULTISAMPLE
 #extension GL_ARB_sample_shading : require
@@ -22,6 +25,31 @@ in vec2 texCoord;
 #ifdef LIGHTSHAFT_VOLUME_SHADOW
 uniform sampler3D volumeShadowTexture;
 uniform LightShaftTable volumeShadow;
+#endif
+
+#ifdef LIGHTSHAFT_LIGHT_LEG
+uniform vec3 sigmaT;
+
+// The medium's optical depth (in units of sigma_t) from the light to pointVC, at light distance
+// r: to a spot or point light, or back to a directional light's plane.
+float lightShaftLightLeg(vec3 pointVC, float r)
+{
+  float leg = max(r, 0.0);
+#ifdef LIGHTSHAFT_FIELD
+#ifdef LIGHTSHAFT_DIRECTIONAL
+  vec3 sourceVC = pointVC - leg * lightAxisVC;
+#else
+  vec3 sourceVC = lightPositionVC;
+#endif
+#ifdef LIGHTSHAFT_FIELD_SHADOW
+  return densityBackground * leg + densityScale * lightShaftFieldShadow(pointVC);
+#else
+  return lightShaftOpticalDepth(pointVC, sourceVC);
+#endif
+#else
+  return leg;
+#endif
+}
 #endif
 
 #ifdef LIGHTSHAFT_SHADOW
@@ -102,6 +130,9 @@ void main()
 #endif
 #ifdef LIGHTSHAFT_VOLUME_SHADOW
   cookie *= exp(-lightShaftTableLookup(volumeShadowTexture, volumeShadow, surfaceVC));
+#endif
+#ifdef LIGHTSHAFT_LIGHT_LEG
+  cookie *= exp(-sigmaT * lightShaftLightLeg(surfaceVC, r));
 #endif
 #ifdef LIGHTSHAFT_COOKIE
   float footprint = pixelFootprint.x * (-surfaceVC.z) + pixelFootprint.y;
