@@ -151,9 +151,10 @@ struct vtkLightShaftSceneImage
   /// light's surface contribution times (1 - its visibility * cookie); nullptr: nothing.
   vtkTextureObject* SurfaceCorrection = nullptr;
   int Samples = 0;
-  /// Color (and the scene without a light) in half float, unclamped: set where the surface
-  /// light takes a light's share as lit - unlit, so that a surface lit beyond white keeps its
-  /// whole share (and gets its whole shadow); the composite clamps.
+  /// Color (and the scene without a light) in float, unclamped: set where the surface light
+  /// takes a light's share as lit - unlit, so that a surface lit beyond white keeps its whole
+  /// share (and gets its whole shadow); the composite clamps. (Not half float: a value within
+  /// its rounding of an 8-bit level's edge came out a level off VTK's picture.)
   bool HighRange = false;
 };
 

@@ -194,10 +194,10 @@ double Model::NoiseLayers(double u, double v) const
   return n1 * n2;
 }
 
-RGB Model::Modulation(const Vec& x) const
+RGB Model::Modulation(const Vec& x, bool withNoise) const
 {
   RGB out{ 1.0, 1.0, 1.0 };
-  if (this->Cookie.empty() && this->Noise.empty())
+  if (this->Cookie.empty() && (this->Noise.empty() || !withNoise))
   {
     return out;
   }
@@ -206,7 +206,7 @@ RGB Model::Modulation(const Vec& x) const
   {
     // No cookie; the noise on the three planes across the unit sphere of directions.
     const double r = Norm(d);
-    if (this->Noise.empty() || r <= 0.0)
+    if (this->Noise.empty() || !withNoise || r <= 0.0)
     {
       return out;
     }
@@ -246,13 +246,28 @@ RGB Model::Modulation(const Vec& x) const
       out[c] = Lookup(this->Cookie, this->CookieWidth, this->CookieHeight, 3, c, cu, cv, repeat);
     }
   }
-  if (!this->Noise.empty())
+  if (!this->Noise.empty() && withNoise)
   {
     const double density = 1.0 + this->NoiseAmplitude * (this->NoiseLayers(u, v) - 1.0);
     for (double& channel : out)
     {
       channel *= density;
     }
+  }
+  return out;
+}
+
+RGB Model::SurfaceLight(const Vec& x) const
+{
+  RGB out = this->Modulation(x, false);
+  const double r = std::max(this->Distance(x), 0.0);
+  const Vec source = this->Directional() ? x - r * this->Axis : this->Light;
+  const double volume =
+    this->Extinction ? this->Extinction->Integral(x.data(), source.data()) : 0.0;
+  const double depth = this->OpticalDepth(x, source);
+  for (int c = 0; c < 3; ++c)
+  {
+    out[c] *= std::exp(-(this->SigmaT[c] * depth + volume));
   }
   return out;
 }

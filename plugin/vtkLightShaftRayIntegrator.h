@@ -125,7 +125,14 @@ struct Model
    * SquareSide centred on the axis through Light, the cookie repeating. Point: no cookie; the
    * noise projected triplanar on the unit sphere of directions, in world axes.
    */
-  RGB Modulation(const Vec& x) const;
+  RGB Modulation(const Vec& x, bool withNoise = true) const;
+  /**
+   * What reaches a surface at x of the light VTK's lighting gives it, besides the scene's
+   * shadows (vtkLightShaftPass::ShadowSurfaces): the cookie's colour (not the noise, which
+   * modulates the scattering, not the extinction), the medium's transmittance along the light
+   * leg, exp(-sigma_t OpticalDepth(x, the light or its plane)), and the scene's volume's.
+   */
+  RGB SurfaceLight(const Vec& x) const;
   double PhaseValue(double cosTheta) const;
   /// The medium's density at x (1 without a field).
   double Density(const Vec& x) const;

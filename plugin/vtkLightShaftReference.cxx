@@ -183,6 +183,19 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
     vtkErrorMacro(<< problem);
     return 0;
   }
+  const int lights = job.GetNumberOfLights();
+  vtkNew<vtkDoubleArray> surfaceLight;
+  surfaceLight->SetName("SurfaceLight");
+  surfaceLight->SetNumberOfComponents(3 * std::max(lights, 1));
+  surfaceLight->SetNumberOfTuples(vtkIdType(width) * height);
+  surfaceLight->Fill(0.0);
+  output->GetPointData()->AddArray(surfaceLight);
+  double* surfaceOut = surfaceLight->GetPointer(0);
+  vtkSMPTools::For(0,
+    vtkIdType(width) * height,
+    [&](vtkIdType first, vtkIdType last)
+    { job.SurfaceLight(first, last, surfaceOut + 3 * lights * first); });
+
   std::atomic<vtkIdType> closedFormPixels(0);
   double* radianceOut = radiance->GetPointer(0);
   double* errorOut = errors->GetPointer(0);

@@ -39,7 +39,11 @@
  * Output: a vtkImageData laid out like vtkLightShaftPass::GetInScatteredRadiance (viewport
  * size, row 0 at the bottom) with "InScatteredRadiance" (double RGB) and "ErrorEstimate" (the
  * quadrature's estimated absolute error per pixel, summed over the pieces and lights, double
- * RGB). Pixels run in parallel with vtkSMPTools.
+ * RGB), and "SurfaceLight": the surface term of vtkLightShaftPass::ShadowSurfaces, 3 doubles
+ * per light (the pass's order), for the first opaque surface each ray hits: the fraction of that
+ * light's VTK lighting that reaches it, V times the cookie (not the noise) times the medium's
+ * transmittance along the light leg, exp(-sigma_t times its optical depth), and the volume's
+ * (0 where the ray hits no surface). Pixels run in parallel with vtkSMPTools.
  *
  * Visibility: EXACT (default) as above, or SHADOW_MAP: the depth map the pass rendered in its
  * last frame, looked up as the pass does (nearest texel, the same bias: relative for a spot's

@@ -369,6 +369,51 @@ vtkIdType vtkLightShaftReferenceJob::Integrate(vtkIdType first,
 }
 
 //------------------------------------------------------------------------------
+void vtkLightShaftReferenceJob::SurfaceLight(vtkIdType first,
+  vtkIdType last,
+  double* surfaceLight) const
+{
+  const size_t lights = this->Models.size();
+  std::fill(surfaceLight, surfaceLight + 3 * lights * (last - first), 0.0);
+  if (lights == 0 || !this->Tracers)
+  {
+    return;
+  }
+  std::unique_ptr<vtkLightShaftReferenceScene::Tracer> tracer = this->Tracers->Take();
+  for (vtkIdType pixel = first; pixel < last; ++pixel)
+  {
+    Vec origin;
+    Vec dir;
+    double tFar;
+    this->Camera->Ray(static_cast<int>(pixel % this->Width),
+      static_cast<int>(pixel / this->Width),
+      origin,
+      dir,
+      tFar);
+    double hit;
+    if (!tracer->FirstHit(origin, origin + tFar * dir, hit))
+    {
+      continue;
+    }
+    // Just in front of the surface, on the camera's side (where a surface lit from that side
+    // is lit): its own polygon is not between it and the light.
+    const Vec x = origin + ((1.0 - 1e-9) * hit * tFar) * dir;
+    double* out = surfaceLight + 3 * lights * (pixel - first);
+    for (size_t l = 0; l < lights; ++l)
+    {
+      const Model& model = this->Models[l];
+      const RGB reaching = tracer->Transmittance(x, model);
+      const RGB surface = model.SurfaceLight(x);
+      for (int c = 0; c < 3; ++c)
+      {
+        out[3 * l + c] = reaching[c] * surface[c];
+      }
+    }
+  }
+  this->Tracers->Give(std::move(tracer));
+}
+
+//------------------------------------------------------------------------------
 void vtkLightShaftReferenceJob::IntegrateRectangle(int x,
   int y,
   int w,

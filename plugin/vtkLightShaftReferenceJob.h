@@ -70,6 +70,14 @@ public:
    */
   vtkIdType Integrate(vtkIdType first, vtkIdType last, double* radiance, double* error) const;
 
+  /**
+   * The surface term of the pixels [first, last) into `surfaceLight`, 3 doubles per light per
+   * pixel: for the first opaque surface each pixel's ray hits, the fraction of each light's
+   * surface light that reaches it (the transmittance of the casters, opaque and translucent,
+   * times Model::SurfaceLight); 0 where the ray hits none. Thread-safe.
+   */
+  void SurfaceLight(vtkIdType first, vtkIdType last, double* surfaceLight) const;
+
   /// Integrate the pixels of the rectangle (x, y, w, h) into `radiance` (w * h * 3, row 0 at
   /// the bottom). Thread-safe.
   void IntegrateRectangle(int x, int y, int w, int h, double* radiance) const;

@@ -226,7 +226,7 @@ void vtkLightShaftSceneRenderer::Render(vtkLightShaftFrame& frame, vtkRenderPass
   const int h = frame.Size[1];
   const int samples = frame.Scene.Samples;
   vtkLightShaftSceneImage& scene = frame.Scene;
-  const TextureKind colorKind = scene.HighRange ? TextureKind::RGBA16F : TextureKind::RGBA8;
+  const TextureKind colorKind = scene.HighRange ? TextureKind::RGBA32F : TextureKind::RGBA8;
   scene.Color = this->Color.Ensure(window, colorKind, w, h, samples);
   scene.Depth = this->Depth.Ensure(window, TextureKind::Depth, w, h, samples);
   this->RenderInto(frame, delegate, scene.Color, scene.Depth);
@@ -246,7 +246,7 @@ vtkTextureObject* vtkLightShaftSceneRenderer::RenderWithout(vtkLightShaftFrame& 
   const int h = frame.Size[1];
   const int samples = frame.Scene.Samples;
   vtkTextureObject* unlit = this->ColorUnlit.Ensure(
-    window, frame.Scene.HighRange ? TextureKind::RGBA16F : TextureKind::RGBA8, w, h, samples);
+    window, frame.Scene.HighRange ? TextureKind::RGBA32F : TextureKind::RGBA8, w, h, samples);
   vtkTextureObject* depth = this->DepthUnlit.Ensure(window, TextureKind::Depth, w, h, samples);
   const double intensity = light->GetIntensity();
   light->SetIntensity(0.0);

@@ -116,16 +116,28 @@ void main()
   float visibility = 1.0;
   vec3 cookie = vec3(1.0); // with the translucent casters' transmittance
 #ifdef LIGHTSHAFT_SHADOW
-  // Nearest-texel depths err by up to a texel's extent times the slope: tolerate that.
+  // Nearest-texel depths err by up to a texel's extent times the slope: tolerate that, and
+  // look up from a point a texel off the surface along its normal (towards the light) as the
+  // slope grows, where the tolerance alone would need to grow without bound (the terminator).
   vec3 normal = cross(surfaceTangent(pixel, surfaceVC, ivec2(1, 0)),
     surfaceTangent(pixel, surfaceVC, ivec2(0, 1)));
+  normal /= max(length(normal), 1e-30);
   vec3 toLight = -lightShaftLightDirection(surfaceVC, r);
-  float cosine = abs(dot(normal, toLight)) / max(length(normal), 1e-30);
-  float slope = sqrt(max(1.0 - cosine * cosine, 0.0)) / max(cosine, 1e-3);
+  float facing = dot(normal, toLight);
+  float cosine = abs(facing);
+  float sine = sqrt(max(1.0 - cosine * cosine, 0.0));
+  float slope = sine / max(cosine, 1e-3);
   float bias = shadowTexel * (1.0 + 1.5 * min(slope, 10.0)) + shadowFloor;
-  visibility = lightShaftVisibility(surfaceVC, r, bias);
+#ifdef LIGHTSHAFT_DIRECTIONAL
+  float texelWC = shadowTexel;
+#else
+  float texelWC = shadowTexel * r;
+#endif
+  vec3 lookupVC = surfaceVC + (facing < 0.0 ? -normal : normal) * (1.5 * texelWC * sine);
+  float lookupR = lightShaftLightDistance(lookupVC);
+  visibility = lightShaftVisibility(lookupVC, lookupR, bias);
 #ifdef LIGHTSHAFT_TRANSLUCENT
-  cookie *= lightShaftTranslucency(surfaceVC, r, bias);
+  cookie *= lightShaftTranslucency(lookupVC, lookupR, bias);
 #endif
 #endif
 #ifdef LIGHTSHAFT_VOLUME_SHADOW
