@@ -257,6 +257,18 @@ RGB Model::Modulation(const Vec& x, bool withNoise) const
   return out;
 }
 
+bool Model::Scatters() const
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (this->SigmaS[c] > 0.0 && this->Intensity[c] > 0.0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 RGB Model::SurfaceLight(const Vec& x) const
 {
   RGB out = this->Modulation(x, false);

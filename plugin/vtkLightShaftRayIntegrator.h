@@ -117,6 +117,8 @@ struct Model
   std::shared_ptr<const vtkLightShaftDensityField> Extinction;
 
   bool Directional() const { return this->Kind == vtkLightShaftModel::LightKind::Directional; }
+  /// Whether the medium scatters this light at all (any sigma_s and intensity above 0).
+  bool Scatters() const;
   /// r at x: the distance from the light, or from a directional light's plane (signed).
   double Distance(const Vec& x) const;
   /**

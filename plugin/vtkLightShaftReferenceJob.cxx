@@ -328,6 +328,10 @@ vtkIdType vtkLightShaftReferenceJob::Integrate(vtkIdType first,
     for (size_t l = 0; l < this->Models.size(); ++l)
     {
       const Model& model = this->Models[l];
+      if (!model.Scatters())
+      {
+        continue; // (an absorbing medium: no in-scatter, only the surfaces' light leg)
+      }
       double t0;
       double t1;
       LitInterval(model, origin, dir, t0, t1);

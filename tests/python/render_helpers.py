@@ -124,6 +124,24 @@ def screenshot(window, front=False):
     return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, 3).copy()
 
 
+def depth_points(renderer, window):
+    """The world points the window's depth buffer holds, as (height, width, 3) (row 0 at the
+    bottom), and the depths (1: nothing drawn)."""
+    from vtkmodules.vtkCommonCore import vtkFloatArray
+    w, h = window.GetSize()
+    values = vtkFloatArray()
+    window.GetZbufferData(0, 0, w - 1, h - 1, values)
+    depth = vtk_to_numpy(values).reshape(h, w).astype(np.float64)
+    matrix = renderer.GetActiveCamera().GetCompositeProjectionTransformMatrix(
+        renderer.GetTiledAspectRatio(), -1, 1)
+    world_to_clip = np.array([[matrix.GetElement(i, j) for j in range(4)] for i in range(4)])
+    ys, xs = np.mgrid[0:h, 0:w]
+    ndc = np.stack([2.0 * (xs + 0.5) / w - 1.0, 2.0 * (ys + 0.5) / h - 1.0, 2.0 * depth - 1.0,
+                    np.ones_like(depth)], -1)
+    points = ndc @ np.linalg.inv(world_to_clip).T
+    return points[..., :3] / points[..., 3:], depth
+
+
 def scene_bounds(renderer, shafts=None):
     """The scene's box as the pass takes it (its rule, written again here): the visible props'
     bounds, grown to hold the pass's ShadowCasterBounds (when set) and its medium's density

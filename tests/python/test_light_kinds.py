@@ -517,6 +517,7 @@ def test_surfaces_shadowed_for_each_of_several_lights():
     shafts = vtkLightShaftPass()
     shafts.SetExposure(0.0)
     shafts.AttenuateSceneOff()
+    shafts.AttenuateSurfaceLightOff()  # VTK's light but for the shadows (compared below)
     shafts.SetShadowMapSize(2048)
     shafts.ShadowSurfacesOn()
     renderer.SetPass(shafts)
