@@ -21,6 +21,8 @@
 #                                      # (docs/still-final.md; about 2 min)
 #   tools/measure.sh any-scene         # the one-liner's medium at three scales, and the far
 #                                      # plane moved (docs/any-scene.md; seconds)
+#   tools/measure.sh surface-light     # what ShadowSurfaces costs on the window scene
+#                                      # (docs/lights-and-cookies.md; about 1 min)
 #   tools/measure.sh reprojection      # what carrying the picture to the next camera costs
 #                                      # (docs/reprojection.md)
 #   tools/measure.sh resolution-cost   # how the budget's settings' time follows the resolution
@@ -86,6 +88,7 @@ case "$what" in
   budget) run tests/benchmarks/budget.py --output-dir docs "$@" ;;
   still-final) run tests/benchmarks/still_final.py --output-dir docs "$@" ;;
   any-scene) run tests/benchmarks/any_scene.py "$@" ;;
+  surface-light) run tests/benchmarks/surface_light_cost.py "$@" ;;
   reprojection) run tests/benchmarks/reprojection_bound.py --output docs/reprojection.md "$@" ;;
   resolution-cost) run tests/benchmarks/resolution_cost.py "$@" ;;
   medium-field) run tests/benchmarks/medium_field_cost.py "$@" ;;

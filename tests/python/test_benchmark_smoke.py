@@ -300,3 +300,12 @@ def test_any_scene_figures_smoke():
                             capture_output=True, text=True, timeout=600)
     assert result.returncode == 0, result.stderr
     assert result.stdout.count("| 1") >= 1 and "far plane 1000.0" in result.stdout
+
+
+def test_surface_light_cost_smoke():
+    script = os.path.join(os.path.dirname(BENCHMARK), "surface_light_cost.py")
+    result = subprocess.run([sys.executable, script, "--size", "160", "90", "--frames", "2"],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    rows = [line for line in result.stdout.splitlines() if line.startswith("| ") and "ms" not in line]
+    assert len(rows) == 3 and rows[0].endswith("| 1.00 |")

@@ -70,7 +70,7 @@ VECTORS = [("ScatteringCoefficient", 3), ("AbsorptionCoefficient", 3),
            ("NoiseVelocity1", 2), ("NoiseVelocity2", 2)]
 BOOLEANS = ["AttenuateScene", "ShadowSurfaces", "AutomaticSliceCount", "Jitter", "RadialJitter",
             "ProgressiveRefinement", "UseAllocatedRenderTime", "TranslucentShadows", "ExactFinish",
-            "FitMediumToScene"]
+            "FitMediumToScene", "AttenuateSurfaceLight"]
 # Setters that refuse non-finite values (with an error naming the parameter).
 REFUSING = {"Exposure", "Anisotropy", "NoiseAmplitude", "NoiseScale", "Time", "Decay",
             "Density", "Weight", "RadialGuardBand", "ScatteringCoefficient",

@@ -450,6 +450,12 @@ void vtkPVLightShaftsView::SetShadowSurfaces(bool shadow)
 }
 
 //------------------------------------------------------------------------------
+void vtkPVLightShaftsView::SetAttenuateSurfaceLight(bool attenuate)
+{
+  this->Impl->Shafts->SetAttenuateSurfaceLight(attenuate);
+}
+
+//------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetTranslucentShadows(bool translucent)
 {
   this->Impl->Shafts->SetTranslucentShadows(translucent);

@@ -152,6 +152,12 @@ public:
   void SetShadowSurfaces(bool shadow);
 
   /**
+   * With ShadowSurfaces, the surfaces' light dimmed by the medium on its way from the light,
+   * forwarded to vtkLightShaftPass::SetAttenuateSurfaceLight. Default is on.
+   */
+  void SetAttenuateSurfaceLight(bool attenuate);
+
+  /**
    * Translucent representations (opacity below 1) dim and tint the light by their opacity and
    * colour, forwarded to vtkLightShaftPass::SetTranslucentShadows. Default is on.
    */
