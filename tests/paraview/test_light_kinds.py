@@ -202,7 +202,9 @@ def check_sun_example(out, failures):
     bars = scene.patch_mean(shot, scene.to_pixel(view, floor_point(3.25, 0.0)), radius=1)
     print(f"sun example: floor under a pane {pane:.1f} levels, under the bars' crossing "
           f"{bars:.1f}")
-    if not (pane > 60.0 and bars < 0.5 * pane):
+    # (The sun's light reaches the floor through about 16 units of the medium from its plane:
+    # e^(-0.05 * 16) = 0.45 of VTK's light, as in its shafts.)
+    if not (pane > 30.0 and bars < 0.5 * pane):
         failures.append("the sun example's floor does not show the window's pattern")
 
 
