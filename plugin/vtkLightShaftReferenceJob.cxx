@@ -305,19 +305,8 @@ vtkIdType vtkLightShaftReferenceJob::Integrate(vtkIdType first,
   {
     Vec origin;
     Vec dir;
-    double tFar;
-    this->Camera->Ray(static_cast<int>(pixel % this->Width),
-      static_cast<int>(pixel / this->Width),
-      origin,
-      dir,
-      tFar);
-    // The first surface along the ray, else the far plane.
-    double tSurface = tFar;
-    double hit;
-    if (tracer->FirstHit(origin, origin + tFar * dir, hit))
-    {
-      tSurface = hit * tFar;
-    }
+    double tSurface;
+    this->PixelRay(*tracer, pixel, origin, dir, tSurface);
     // The camera leg: what lies behind each translucent surface in front of the opaque one
     // reaches the camera dimmed as VTK blends it.
     const auto crossings = tracer->CameraCrossings(origin, origin + tSurface * dir);
@@ -373,6 +362,25 @@ vtkIdType vtkLightShaftReferenceJob::Integrate(vtkIdType first,
 }
 
 //------------------------------------------------------------------------------
+bool vtkLightShaftReferenceJob::PixelRay(vtkLightShaftReferenceScene::Tracer& tracer,
+  vtkIdType pixel,
+  Vec& origin,
+  Vec& dir,
+  double& tSurface) const
+{
+  double tFar;
+  this->Camera->Ray(static_cast<int>(pixel % this->Width),
+    static_cast<int>(pixel / this->Width),
+    origin,
+    dir,
+    tFar);
+  double hit;
+  const bool surface = tracer.FirstHit(origin, origin + tFar * dir, hit);
+  tSurface = surface ? hit * tFar : tFar;
+  return surface;
+}
+
+//------------------------------------------------------------------------------
 void vtkLightShaftReferenceJob::SurfaceLight(vtkIdType first,
   vtkIdType last,
   double* surfaceLight) const
@@ -388,20 +396,14 @@ void vtkLightShaftReferenceJob::SurfaceLight(vtkIdType first,
   {
     Vec origin;
     Vec dir;
-    double tFar;
-    this->Camera->Ray(static_cast<int>(pixel % this->Width),
-      static_cast<int>(pixel / this->Width),
-      origin,
-      dir,
-      tFar);
-    double hit;
-    if (!tracer->FirstHit(origin, origin + tFar * dir, hit))
+    double tSurface;
+    if (!this->PixelRay(*tracer, pixel, origin, dir, tSurface))
     {
       continue;
     }
     // Just in front of the surface, on the camera's side (where a surface lit from that side
     // is lit): its own polygon is not between it and the light.
-    const Vec x = origin + ((1.0 - 1e-9) * hit * tFar) * dir;
+    const Vec x = origin + ((1.0 - 1e-9) * tSurface) * dir;
     double* out = surfaceLight + 3 * lights * (pixel - first);
     for (size_t l = 0; l < lights; ++l)
     {

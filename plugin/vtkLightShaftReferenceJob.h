@@ -86,6 +86,14 @@ private:
   vtkLightShaftReferenceJob(const vtkLightShaftReferenceJob&) = delete;
   void operator=(const vtkLightShaftReferenceJob&) = delete;
 
+  /// Pixel `pixel`'s view ray and the distance along it to the first opaque surface (the far
+  /// plane where it hits none: returns false).
+  bool PixelRay(vtkLightShaftReferenceScene::Tracer& tracer,
+    vtkIdType pixel,
+    vtkLightShaftRayIntegrator::Vec& origin,
+    vtkLightShaftRayIntegrator::Vec& dir,
+    double& tSurface) const;
+
   struct Rays;
   std::unique_ptr<Rays> Camera;
   std::vector<vtkLightShaftRayIntegrator::Model> Models;

@@ -130,3 +130,24 @@ float lightShaftFieldShadow(vec3 pointVC)
   return lightShaftTableLookup(fieldShadowTexture, fieldShadow, pointVC);
 }
 #endif
+
+#if defined(LIGHTSHAFT_FIELD) && defined(LIGHTSHAFT_LIGHT_CHUNK)
+// The light leg's optical depth through the medium (in units of sigma_t) from the light to
+// pointVC, at light distance r: to a spot or point light, or back to a directional light's
+// plane. The background over its length and the field's part from the light's table
+// (LIGHTSHAFT_FIELD_SHADOW), else marched. The shafts' and the surfaces' light leg.
+float lightShaftFieldLightLeg(vec3 pointVC, float r)
+{
+  float leg = max(r, 0.0);
+#ifdef LIGHTSHAFT_FIELD_SHADOW
+  return densityBackground * leg + densityScale * lightShaftFieldShadow(pointVC);
+#else
+#ifdef LIGHTSHAFT_DIRECTIONAL
+  vec3 sourceVC = pointVC - leg * lightAxisVC;
+#else
+  vec3 sourceVC = lightPositionVC;
+#endif
+  return lightShaftOpticalDepth(pointVC, sourceVC);
+#endif
+}
+#endif

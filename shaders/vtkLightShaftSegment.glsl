@@ -153,18 +153,7 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
   // and of the light leg (to the light, or back to a directional light's plane).
   float density = lightShaftDensity(fieldVC);
   float segmentDepth = density * (x1 - x0);
-#ifdef LIGHTSHAFT_DIRECTIONAL
-  vec3 sourceVC = fieldVC - fieldR * lightAxisVC;
-#else
-  vec3 sourceVC = lightPositionVC;
-#endif
-#ifdef LIGHTSHAFT_FIELD_SHADOW
-  // The light leg: the background over its length, the field's part looked up.
-  float lightLeg = densityBackground * length(sourceVC - fieldVC) +
-    densityScale * lightShaftFieldShadow(fieldVC);
-#else
-  float lightLeg = lightShaftOpticalDepth(fieldVC, sourceVC);
-#endif
+  float lightLeg = lightShaftFieldLightLeg(fieldVC, fieldR);
   float depth = lightShaftOpticalDepthSoFar + 0.5 * segmentDepth + lightLeg;
   lightShaftOpticalDepthSoFar += segmentDepth;
   smoothMean *= density * exp(-sigmaT * depth);

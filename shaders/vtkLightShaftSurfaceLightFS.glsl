@@ -31,23 +31,13 @@ uniform LightShaftTable volumeShadow;
 uniform vec3 sigmaT;
 
 // The medium's optical depth (in units of sigma_t) from the light to pointVC, at light distance
-// r: to a spot or point light, or back to a directional light's plane.
+// r: to a spot or point light, or back to a directional light's plane (as the shafts' leg).
 float lightShaftLightLeg(vec3 pointVC, float r)
 {
-  float leg = max(r, 0.0);
 #ifdef LIGHTSHAFT_FIELD
-#ifdef LIGHTSHAFT_DIRECTIONAL
-  vec3 sourceVC = pointVC - leg * lightAxisVC;
+  return lightShaftFieldLightLeg(pointVC, r);
 #else
-  vec3 sourceVC = lightPositionVC;
-#endif
-#ifdef LIGHTSHAFT_FIELD_SHADOW
-  return densityBackground * leg + densityScale * lightShaftFieldShadow(pointVC);
-#else
-  return lightShaftOpticalDepth(pointVC, sourceVC);
-#endif
-#else
-  return leg;
+  return max(r, 0.0);
 #endif
 }
 #endif

@@ -62,9 +62,10 @@ def in_scatter(shaft_pass):
     return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, 3).astype(np.float64)
 
 
-def scene_reference(renderer, shaft_pass):
+def scene_reference(renderer, shaft_pass, array="InScatteredRadiance"):
     """vtkLightShaftReference's image of the renderer's own props (float64 reference, exact
-    visibility) with the pass's light and medium, as (height, width, 3), row 0 at the bottom."""
+    visibility) with the pass's light and medium, as (height, width, components), row 0 at the
+    bottom: its in-scatter, or another of its arrays (SurfaceLight: 3 per light)."""
     from lightshafts import vtkLightShaftReference
     reference = vtkLightShaftReference()
     reference.SetRenderer(renderer)
@@ -72,7 +73,8 @@ def scene_reference(renderer, shaft_pass):
     reference.Update()
     image = reference.GetOutput()
     w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, 3).astype(np.float64)
+    values = vtk_to_numpy(image.GetPointData().GetArray(array))
+    return values.reshape(h, w, -1).astype(np.float64)
 
 
 def add_sphere(renderer, centre, radius, color, resolution=32):

@@ -26,6 +26,7 @@ def test_defaults():
     assert p.GetExposure() == 1.0
     assert p.GetAttenuateScene() is True or p.GetAttenuateScene() == 1
     assert not p.GetShadowSurfaces()
+    assert p.GetAttenuateSurfaceLight()
     assert p.GetNumberOfSlices() == 64
     assert p.GetShadowMapSize() == 1024
     assert p.GetLight() is None
@@ -101,6 +102,10 @@ def test_boolean_macros():
     assert p.GetShadowSurfaces()
     p.SetShadowSurfaces(False)
     assert not p.GetShadowSurfaces()
+    p.AttenuateSurfaceLightOff()
+    assert not p.GetAttenuateSurfaceLight()
+    p.SetAttenuateSurfaceLight(True)
+    assert p.GetAttenuateSurfaceLight()
 
 
 @pytest.mark.parametrize("name,low,high,expect_low,expect_high", [

@@ -18,13 +18,12 @@ import numpy as np
 import pytest
 from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
 from vtkmodules.vtkCommonTransforms import vtkTransform
-from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
 from vtkmodules.vtkFiltersSources import (vtkCubeSource, vtkParametricFunctionSource,
                                           vtkPlaneSource, vtkSphereSource)
 from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper
 
-from lightshafts import add_light_shafts, vtkLightShaftPass, vtkLightShaftReference
+from lightshafts import add_light_shafts, vtkLightShaftPass
 
 import render_helpers as rh
 
@@ -57,6 +56,14 @@ def plane(origin, point1, point2):
 
 def floor(half=6.0):
     return plane((-half, 0.0, -half), (half, 0.0, -half), (-half, 0.0, half))
+
+
+def look(renderer, position, focal_point):
+    """Put the renderer's camera at `position`, looking at `focal_point`."""
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(*position)
+    camera.SetFocalPoint(*focal_point)
+    renderer.ResetCameraClippingRange()
 
 
 def shape_source(shape):
@@ -111,10 +118,7 @@ def shape_pictures(shape, kind, sizes, samples):
     add_surface(renderer, floor(), (0.7, 0.7, 0.7))
     light = make_light(kind, position=(0.3, 6.0, 0.2) if kind == "directional" else (0, 6, 0))
     renderer.AddLight(light)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(2.0, 5.0, 10.0)
-    camera.SetFocalPoint(0.0, 2.5, 0.0)
-    renderer.ResetCameraClippingRange()
+    look(renderer, (2.0, 5.0, 10.0), (0.0, 2.5, 0.0))
     try:
         window.Render()
         plain = rh.screenshot(window).astype(float)
@@ -177,10 +181,7 @@ def readme_scene(map_size, shadow_surfaces, attenuate_surface_light=True):
     shafts.SetShadowMapSize(map_size)
     shafts.SetShadowSurfaces(shadow_surfaces)
     shafts.SetAttenuateSurfaceLight(attenuate_surface_light)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(2.0, 3.5, 14.0)
-    camera.SetFocalPoint(0.0, 2.5, 0.0)
-    renderer.ResetCameraClippingRange()
+    look(renderer, (2.0, 3.5, 14.0), (0.0, 2.5, 0.0))
     try:
         window.Render()
         picture = rh.screenshot(window).astype(float)
@@ -240,10 +241,7 @@ def test_the_contact_shadow_starts_at_the_contact_line():
     shafts.GetMedium().SetScatteringCoefficient(0.0)
     shafts.ShadowSurfacesOn()
     renderer.SetPass(shafts)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(-7.0, 4.0, 5.0)
-    camera.SetFocalPoint(0.0, 0.5, 0.0)
-    renderer.ResetCameraClippingRange()
+    look(renderer, (-7.0, 4.0, 5.0), (0.0, 0.5, 0.0))
     window.Render()
     picture = rh.screenshot(window).astype(float).sum(-1)
     points, depth = rh.depth_points(renderer, window)
@@ -267,18 +265,6 @@ def test_the_contact_shadow_starts_at_the_contact_line():
     assert picture[touching].max() <= 3.0
 
 
-def surface_term(renderer, shafts):
-    """The float64 reference's SurfaceLight of the pass's first light, (height, width, 3)."""
-    reference = vtkLightShaftReference()
-    reference.SetRenderer(renderer)
-    reference.SetLightShaftPass(shafts)
-    reference.Update()
-    image = reference.GetOutput()
-    w, h, _ = image.GetDimensions()
-    values = vtk_to_numpy(image.GetPointData().GetArray("SurfaceLight")).reshape(h, w, -1)
-    return values[..., :3].astype(float)
-
-
 def surface_against_reference(renderer, window, light, shafts):
     """The floor lit through the medium: the pass's picture and what the reference's surface
     term makes of VTK's own pictures with and without the light, unlit + F (lit - unlit)."""
@@ -294,7 +280,7 @@ def surface_against_reference(renderer, window, light, shafts):
     window.Render()
     assert shafts.GetLastFrame().GetGLErrorCount() == 0
     picture = rh.screenshot(window).astype(float)
-    factor = surface_term(renderer, shafts)
+    factor = rh.scene_reference(renderer, shafts, "SurfaceLight")[..., :3]  # first light
     expected = unlit + factor * (lit - unlit)
     points, depth = rh.depth_points(renderer, window)
     on_floor = (depth < 1.0) & (np.abs(points[..., 1]) < 0.01)
@@ -321,18 +307,15 @@ def test_the_floor_under_an_absorbing_medium_has_the_reference_surface_term():
     shafts.GetMedium().SetAbsorptionCoefficient(1.0 / 6.0)  # optical depth 1 light -> floor
     shafts.AttenuateSceneOff()
     shafts.ShadowSurfacesOn()
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(2.0, 6.0, 10.0)
-    camera.SetFocalPoint(0.0, 1.0, 0.0)
-    renderer.ResetCameraClippingRange()
+    look(renderer, (2.0, 6.0, 10.0), (0.0, 1.0, 0.0))
     picture, expected, lit, region = surface_against_reference(renderer, window, spot, shafts)
     assert region.sum() > 3000
     # Below the light the floor gets e^-1 of VTK's light.
     points = rh.depth_points(renderer, window)[0]
     r = np.linalg.norm(points - (0.0, 6.0, 0.0), axis=-1)
     beside = region & (np.abs(points[..., [0, 2]]).max(-1) > 2.0)  # (not the slab's shadow)
-    assert np.allclose(picture[beside].sum() / (lit[beside] * np.exp(-r[beside] / 6.0)[:, None]).sum(),
-                       1.0, atol=0.02)
+    dimmed = lit[beside] * np.exp(-r[beside] / 6.0)[:, None]
+    assert np.allclose(picture[beside].sum() / dimmed.sum(), 1.0, atol=0.02)
     error = np.abs(picture[region].mean(0) - expected[region].mean(0)) / expected[region].mean(0)
     assert error.max() < 0.02, error
     assert np.percentile(np.abs(picture - expected)[region], 99) <= 3.0
@@ -367,10 +350,7 @@ def test_the_floor_under_the_plume_has_the_reference_surface_term():
     medium.SetBackgroundDensity(0.08)
     shafts.AttenuateSceneOff()
     shafts.ShadowSurfacesOn()
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(0.5, 7.0, 14.0)
-    camera.SetFocalPoint(1.0, 0.0, 0.0)
-    renderer.ResetCameraClippingRange()
+    look(renderer, (0.5, 7.0, 14.0), (1.0, 0.0, 0.0))
     picture, expected, lit, region = surface_against_reference(renderer, window, spot, shafts)
     assert region.sum() > 1000
     # The plume takes a good part of the light (the test means something).
@@ -395,10 +375,7 @@ def test_a_floor_lit_beyond_white_keeps_its_whole_shadow(samples):
     shafts.GetMedium().SetScatteringCoefficient(0.0)
     shafts.ShadowSurfacesOn()
     renderer.SetPass(shafts)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(0.0, 2.0, 12.0)  # below the square: the floor seen past it
-    camera.SetFocalPoint(0.0, 0.0, 0.0)
-    renderer.ResetCameraClippingRange()
+    look(renderer, (0.0, 2.0, 12.0), (0.0, 0.0, 0.0))  # below the square: the floor seen past it
     levels = {}
     try:
         for intensity in (1.0, 1.6):
