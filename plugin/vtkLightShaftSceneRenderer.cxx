@@ -31,6 +31,16 @@
 
 using vtkLightShaftResources::TextureKind;
 
+namespace
+{
+// The scene's colour, with and without a light: float while the surface light is taken from them
+// (vtkLightShaftSceneImage::HighRange), else as the window's.
+TextureKind ColorKind(const vtkLightShaftSceneImage& scene)
+{
+  return scene.HighRange ? TextureKind::RGBA32F : TextureKind::RGBA8;
+}
+}
+
 //------------------------------------------------------------------------------
 vtkLightShaftSceneRenderer::vtkLightShaftSceneRenderer()
 {
@@ -226,8 +236,7 @@ void vtkLightShaftSceneRenderer::Render(vtkLightShaftFrame& frame, vtkRenderPass
   const int h = frame.Size[1];
   const int samples = frame.Scene.Samples;
   vtkLightShaftSceneImage& scene = frame.Scene;
-  const TextureKind colorKind = scene.HighRange ? TextureKind::RGBA32F : TextureKind::RGBA8;
-  scene.Color = this->Color.Ensure(window, colorKind, w, h, samples);
+  scene.Color = this->Color.Ensure(window, ColorKind(scene), w, h, samples);
   scene.Depth = this->Depth.Ensure(window, TextureKind::Depth, w, h, samples);
   this->RenderInto(frame, delegate, scene.Color, scene.Depth);
   // The composite copies the depth from the framebuffer holding the scene.
@@ -245,8 +254,7 @@ vtkTextureObject* vtkLightShaftSceneRenderer::RenderWithout(vtkLightShaftFrame& 
   const int w = frame.Size[0];
   const int h = frame.Size[1];
   const int samples = frame.Scene.Samples;
-  vtkTextureObject* unlit = this->ColorUnlit.Ensure(
-    window, frame.Scene.HighRange ? TextureKind::RGBA32F : TextureKind::RGBA8, w, h, samples);
+  vtkTextureObject* unlit = this->ColorUnlit.Ensure(window, ColorKind(frame.Scene), w, h, samples);
   vtkTextureObject* depth = this->DepthUnlit.Ensure(window, TextureKind::Depth, w, h, samples);
   const double intensity = light->GetIntensity();
   light->SetIntensity(0.0);
