@@ -62,6 +62,9 @@ struct vtkLightShaftExactFinish::Work
   std::vector<Tile> Tiles;
   std::atomic<int> Next{ 0 };
   std::atomic<bool> Cancel{ false };
+  /// Pixels whose integration the reference's evaluation bound ended (their error estimate
+  /// then above the tolerance).
+  std::atomic<long long> ExhaustedPixels{ 0 };
   /// Set while the render thread renders a frame: the workers wait, so that the frame has the
   /// processors (and their caches) to itself.
   std::atomic<bool> Held{ false };
@@ -122,10 +125,18 @@ struct vtkLightShaftExactFinish::Work
         this->WaitWhileHeld();
         if (this->Cancel)
         {
-          return; // a change of the view: within a row of pixels
+          return; // a change of the view
         }
         const vtkIdType first = vtkIdType(tile.Y + row) * this->Job.GetWidth() + tile.X;
-        this->Job.Integrate(first, first + tile.W, rgb.data() + 3 * size_t(row) * tile.W, nullptr);
+        // The cancel request is watched inside each pixel: Stop() waits milliseconds, however
+        // slow a pixel is, and the tile in flight is dropped.
+        const vtkLightShaftReferenceJob::Tally tally = this->Job.Integrate(
+          first, first + tile.W, rgb.data() + 3 * size_t(row) * tile.W, nullptr, &this->Cancel);
+        if (tally.Cancelled)
+        {
+          return;
+        }
+        this->ExhaustedPixels += tally.ExhaustedPixels;
       }
       for (int row = 0; row < tile.H; ++row)
       {
@@ -325,8 +336,10 @@ void vtkLightShaftExactFinish::OrderTiles(vtkLightShaftFrame& frame, vtkTextureO
 }
 
 //------------------------------------------------------------------------------
-void vtkLightShaftExactFinish::Stop()
+double vtkLightShaftExactFinish::Stop()
 {
+  const auto start = std::chrono::steady_clock::now();
+  const bool running = !this->Workers.empty();
   if (this->Shared)
   {
     this->Shared->Cancel = true;
@@ -341,10 +354,13 @@ void vtkLightShaftExactFinish::Stop()
   this->Tiles.clear();
   this->Shown = 0;
   this->FinishedPixels = 0;
+  this->Exhausted = 0;
   this->MixedValid = false;
   this->MixedEstimate = nullptr;
   this->Current = State::Off;
   this->Problem.clear();
+  return running ? std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+                 : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -422,6 +438,7 @@ vtkTextureObject* vtkLightShaftExactFinish::Apply(vtkLightShaftFrame& frame,
         worker.join(); // they have no tile left: they are returning
       }
       this->Workers.clear();
+      this->Exhausted = this->Shared->ExhaustedPixels;
       this->Shared.reset();
       this->Current = State::Complete;
     }
@@ -479,6 +496,12 @@ void vtkLightShaftExactFinish::Hold(bool held)
   {
     this->Shared->SetHeld(held);
   }
+}
+
+//------------------------------------------------------------------------------
+long long vtkLightShaftExactFinish::GetExhaustedPixels() const
+{
+  return this->Shared ? this->Shared->ExhaustedPixels.load() : this->Exhausted;
 }
 
 //------------------------------------------------------------------------------

@@ -32,9 +32,10 @@ struct vtkLightShaftFrame;
  * The workers run at the idle scheduling class where the system has one (Linux's SCHED_IDLE):
  * they take only the processor time rendering leaves, so the frames keep their pace. The
  * scene is captured when the finish starts (copies: the workers never read VTK's objects);
- * Stop() (any change of the view) cancels the workers within a row of pixels and forgets
- * what they computed. A scene the reference cannot model (a visible prop other than a
- * polygonal vtkActor or a vtkVolume) is not finished: Start() records why.
+ * Stop() (any change of the view) cancels the workers within milliseconds (they watch the
+ * request inside each pixel's integration) and forgets what they computed. A scene the reference
+ * cannot model (a visible prop other than a polygonal vtkActor or a vtkVolume) is not finished:
+ * Start() records why.
  */
 class vtkLightShaftExactFinish
 {
@@ -57,8 +58,16 @@ public:
    * `estimate` (the picture shown, full resolution; read back once). Does nothing unless Off.
    */
   void Start(vtkLightShaftFrame& frame, vtkLightShaftPass* pass, vtkTextureObject* estimate);
-  /// Cancel the workers and forget what they computed: the next Start() begins again.
-  void Stop();
+  /**
+   * Cancel the workers and forget what they computed: the next Start() begins again. The
+   * workers watch the request inside each pixel's integration, so this returns within
+   * milliseconds however slow the pixels in flight are. Returns how long it waited for them
+   * (seconds; 0 when none ran).
+   */
+  double Stop();
+  /// Pixels finished so far whose integration the reference's bound on evaluations ended
+  /// (vtkLightShaftReferenceJob::Options::MaximumEvaluations).
+  long long GetExhaustedPixels() const;
   /// Hold the workers (within a row of pixels; a second at most) while a frame renders, or let
   /// them go on.
   void Hold(bool held);
@@ -116,6 +125,7 @@ private:
   int Shown = 0;
   int Size[2] = { 0, 0 };
   long long FinishedPixels = 0;
+  long long Exhausted = 0;                    ///< GetExhaustedPixels once the workers are gone
   vtkLightShaftResources::OwnedTexture Exact; ///< rgb: the exact in-scatter, a: 1 where exact
   vtkLightShaftResources::OwnedTexture Mixed; ///< the estimate with the finished tiles
   vtkTextureObject* MixedEstimate = nullptr;  ///< the estimate Mixed was made of

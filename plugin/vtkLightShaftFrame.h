@@ -127,6 +127,10 @@ struct vtkLightShaftStatistics
   int ExactFinishState = 0;
   double ExactFinishFraction = 0.0;
   std::string ExactFinishProblem;
+  /// How long this frame waited for the finish's workers to stop (seconds; 0: none ran), and
+  /// the finished pixels whose integration the reference's bound on evaluations ended.
+  double ExactFinishStopTime = 0.0;
+  long long ExactFinishExhaustedPixels = 0;
   /// The frame budget (seconds; 0: none), the frame time the cost model predicted for the
   /// choice (-1: none), the measured time of the shafts' part of the frame (-1: not measured,
   /// measured only under a budget), and the lit lights the budget counted.

@@ -71,6 +71,8 @@ void vtkLightShaftFrameReport::Publish(const vtkLightShaftFrame& frame,
   this->ExactFinishState = stats.ExactFinishState;
   this->ExactFinishFraction = stats.ExactFinishFraction;
   this->Impl->ExactFinishProblem = stats.ExactFinishProblem;
+  this->ExactFinishStopTime = stats.ExactFinishStopTime;
+  this->ExactFinishExhaustedPixels = static_cast<vtkIdType>(stats.ExactFinishExhaustedPixels);
   this->CameraTranslucentLayers = stats.CameraLayers;
   this->CameraTranslucentBytes = stats.CameraLayerBytes;
   this->Impl->Volume = stats.Volume;
@@ -259,6 +261,8 @@ void vtkLightShaftFrameReport::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ExactFinishState: " << this->ExactFinishState << "\n";
   os << indent << "ExactFinishFraction: " << this->ExactFinishFraction << "\n";
   os << indent << "ExactFinishProblem: " << this->Impl->ExactFinishProblem << "\n";
+  os << indent << "ExactFinishStopTime: " << this->ExactFinishStopTime << "\n";
+  os << indent << "ExactFinishExhaustedPixels: " << this->ExactFinishExhaustedPixels << "\n";
   os << indent << "UsedLights: " << this->Impl->Lights.size() << "\n";
   os << indent << "ShaderVariant: " << this->Impl->Variant << "\n";
 }

@@ -197,6 +197,18 @@ public:
 
   ///@{
   /**
+   * The exact finish's responsiveness and bounds: how long this frame waited for its workers
+   * to stop after a change (seconds; 0 when none ran: the workers watch the request inside
+   * each pixel, so this is milliseconds), and the pixels finished so far whose integration the
+   * reference's bound on evaluations ended (their error then above the tolerance; see
+   * vtkLightShaftReference::SetMaximumEvaluations). Defaults are 0 and 0.
+   */
+  vtkGetMacro(ExactFinishStopTime, double);
+  vtkGetMacro(ExactFinishExhaustedPixels, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
    * The camera leg through translucent surfaces: the layers of translucent surfaces in front of
    * the opaque scene that the frame peeled from the camera (0: none in view, or no shafts
    * computed) and the GL memory they hold, bytes; the vtkVolume that dimmed the shafts behind
@@ -289,6 +301,8 @@ protected:
   bool InScatterReused = false;
   int ExactFinishState = EXACT_FINISH_OFF;
   double ExactFinishFraction = 0.0;
+  double ExactFinishStopTime = 0.0;
+  vtkIdType ExactFinishExhaustedPixels = 0;
   int CameraTranslucentLayers = 0;
   double CameraTranslucentBytes = 0.0;
 

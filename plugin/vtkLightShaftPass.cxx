@@ -831,6 +831,7 @@ void vtkLightShaftPass::Internals::PublishRefinement(vtkLightShaftFrame& frame)
   frame.Statistics.ExactFinishState = static_cast<int>(finish);
   frame.Statistics.ExactFinishFraction = this->Finish.GetFinishedFraction();
   frame.Statistics.ExactFinishProblem = this->Finish.GetProblem();
+  frame.Statistics.ExactFinishExhaustedPixels = this->Finish.GetExhaustedPixels();
   if (finish == State::Complete)
   {
     frame.Statistics.PredictedError = 0.0; // the reference's, to float rounding

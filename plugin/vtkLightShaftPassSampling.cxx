@@ -140,7 +140,7 @@ vtkTextureObject* vtkLightShaftPass::Internals::ChooseSampling(vtkLightShaftFram
   }
   else
   {
-    this->Finish.Stop();
+    frame.Statistics.ExactFinishStopTime = this->Finish.Stop();
   }
   this->KeepMovingSampling(frame, lightFrames, finishes);
   this->SplitStillSetting(frame);

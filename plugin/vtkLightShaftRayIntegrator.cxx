@@ -84,7 +84,7 @@ double Lookup(const std::vector<float>& texels,
 /**
  * F(u, v) = int_0^v exp(-u tan xi) d xi (Sun et al. 2005), by adaptive quadrature.
  */
-double SunF(double u, double v, double tolerance)
+double SunF(double u, double v, double tolerance, Effort& effort)
 {
   RGB sum{};
   RGB error{};
@@ -97,7 +97,7 @@ double SunF(double u, double v, double tolerance)
     0.0,
     v,
     tolerance,
-    0,
+    effort,
     sum,
     error);
   return sum[0];
@@ -110,13 +110,20 @@ Vec ToVec(const glm::dvec3& v)
 }
 
 //------------------------------------------------------------------------------
-void Integrate(const std::function<RGB(double)>& f,
-  double a,
-  double b,
-  double relativeTolerance,
-  int depth,
-  RGB& sum,
-  RGB& error)
+namespace
+{
+/// One Gauss-Kronrod panel: its interval, halvings, estimates and their difference.
+struct Panel
+{
+  double A;
+  double B;
+  int Depth;
+  RGB Kronrod;
+  RGB Error;
+  double Worst; ///< the largest channel's error: the panel split first is the worst
+};
+
+Panel EvaluatePanel(const std::function<RGB(double)>& f, double a, double b, int depth)
 {
   const double half = 0.5 * (b - a);
   const double centre = 0.5 * (a + b);
@@ -141,28 +148,78 @@ void Integrate(const std::function<RGB(double)>& f,
       }
     }
   }
-  bool converged = true;
+  Panel panel{ a, b, depth, {}, {}, 0.0 };
   for (int c = 0; c < 3; ++c)
   {
-    kronrod[c] *= half;
-    gauss[c] *= half;
-    const double e = std::abs(kronrod[c] - gauss[c]);
-    if (e > relativeTolerance * std::abs(kronrod[c]) && e > 1e-300)
+    panel.Kronrod[c] = kronrod[c] * half;
+    panel.Error[c] = std::abs(kronrod[c] - gauss[c]) * std::abs(half);
+    panel.Worst = std::max(panel.Worst, panel.Error[c]);
+  }
+  return panel;
+}
+
+bool Converged(const Panel& panel, double relativeTolerance)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    const double e = panel.Error[c];
+    if (e > relativeTolerance * std::abs(panel.Kronrod[c]) && e > 1e-300)
     {
-      converged = false;
+      return false;
     }
   }
-  if (converged || depth >= 40)
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+void Integrate(const std::function<RGB(double)>& f,
+  double a,
+  double b,
+  double relativeTolerance,
+  Effort& effort,
+  RGB& sum,
+  RGB& error)
+{
+  constexpr int PanelEvaluations = 15;
+  constexpr int MaximumDepth = 40;
+  auto accept = [&](const Panel& panel)
   {
     for (int c = 0; c < 3; ++c)
     {
-      sum[c] += kronrod[c];
-      error[c] += std::abs(kronrod[c] - gauss[c]);
+      sum[c] += panel.Kronrod[c];
+      error[c] += panel.Error[c];
     }
-    return;
+  };
+  auto worse = [](const Panel& x, const Panel& y) { return x.Worst < y.Worst; };
+  // The panels still to refine, worst on top.
+  std::vector<Panel> open;
+  auto consider = [&](Panel&& panel)
+  {
+    effort.Evaluations += PanelEvaluations;
+    if (Converged(panel, relativeTolerance) || panel.Depth >= MaximumDepth)
+    {
+      accept(panel);
+      return;
+    }
+    open.push_back(std::move(panel));
+    std::push_heap(open.begin(), open.end(), worse);
+  };
+  consider(EvaluatePanel(f, a, b, 0));
+  while (!open.empty() && !effort.Spent())
+  {
+    std::pop_heap(open.begin(), open.end(), worse);
+    const Panel worst = open.back();
+    open.pop_back();
+    const double centre = 0.5 * (worst.A + worst.B);
+    consider(EvaluatePanel(f, worst.A, centre, worst.Depth + 1));
+    consider(EvaluatePanel(f, centre, worst.B, worst.Depth + 1));
   }
-  Integrate(f, a, centre, relativeTolerance, depth + 1, sum, error);
-  Integrate(f, centre, b, relativeTolerance, depth + 1, sum, error);
+  // Where the effort ended it: the panels as they are, with their errors.
+  for (const Panel& panel : open)
+  {
+    accept(panel);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -635,7 +692,8 @@ std::vector<Piece> FindLitPieces(const Transmittance& transmittance,
   const Vec& dir,
   double u0,
   double u1,
-  int samples)
+  int samples,
+  Effort& effort)
 {
   std::vector<Piece> lit;
   RGB previous = transmittance(origin + toT(u0) * dir);
@@ -650,6 +708,11 @@ std::vector<Piece> FindLitPieces(const Transmittance& transmittance,
   };
   for (int k = 1; k <= samples; ++k)
   {
+    if (effort.Cancel && effort.Cancel->load(std::memory_order_relaxed))
+    {
+      effort.Cancelled = true; // the ray is discarded: what is lit no longer matters
+      return lit;
+    }
     const double u = u0 + (u1 - u0) * k / samples;
     const RGB now = transmittance(origin + toT(u) * dir);
     double lo = uPrevious;
@@ -701,6 +764,7 @@ bool PositionalClosedForm(const Model& model,
   double ta,
   double tb,
   double tolerance,
+  Effort& effort,
   RGB& sum)
 {
   const Vec m = origin - model.Light;
@@ -734,7 +798,7 @@ bool PositionalClosedForm(const Model& model,
       { return Pi / 4.0 + 0.5 * std::atan((model.SigmaT[c] * t - T * cosGamma) / a1); };
       const double a0 =
         model.SigmaT[c] * std::exp(-T * cosGamma) / (2.0 * Pi * a1) * (4.0 * Pi * scale);
-      sum[c] += a0 * (SunF(a1, v(tb), tolerance) - SunF(a1, v(ta), tolerance));
+      sum[c] += a0 * (SunF(a1, v(tb), tolerance, effort) - SunF(a1, v(ta), tolerance, effort));
     }
   }
   return true;
@@ -775,6 +839,7 @@ Result IntegrateRay(const Model& model,
   int samples,
   double tolerance,
   bool closedForms,
+  Effort& effort,
   const Transition& transition)
 {
   // Integration variable: the equiangular angle about the light when A falls off, else t. A
@@ -790,8 +855,8 @@ Result IntegrateRay(const Model& model,
   const std::function<double(double)> toT = [&](double u)
   { return angle ? h * std::tan(u) - b : u; };
 
-  std::vector<Piece> lit =
-    FindLitPieces(transmittance, transition, toT, toU, origin, dir, toU(t0), toU(t1), samples);
+  std::vector<Piece> lit = FindLitPieces(
+    transmittance, transition, toT, toU, origin, dir, toU(t0), toU(t1), samples, effort);
   if (model.Field || model.Extinction)
   {
     // Split where the density (or the volume's extinction) stops being one cubic along the ray
@@ -840,6 +905,10 @@ Result IntegrateRay(const Model& model,
   bool usedClosedForm = false;
   for (const Piece& piece : lit)
   {
+    if (effort.Cancelled)
+    {
+      break; // the ray is discarded
+    }
     // Each piece's integral, times the light's transmittance to it.
     RGB pieceSum{};
     RGB pieceError{};
@@ -850,7 +919,8 @@ Result IntegrateRay(const Model& model,
       DirectionalClosedForm(model, origin, dir, ta, tb, pieceSum);
       usedClosedForm = true;
     }
-    else if (closedForms && PositionalClosedForm(model, origin, dir, ta, tb, tolerance, pieceSum))
+    else if (closedForms &&
+             PositionalClosedForm(model, origin, dir, ta, tb, tolerance, effort, pieceSum))
     {
       usedClosedForm = true;
     }
@@ -873,7 +943,7 @@ Result IntegrateRay(const Model& model,
         piece.First,
         piece.Second,
         tolerance,
-        0,
+        effort,
         pieceSum,
         pieceError);
     }

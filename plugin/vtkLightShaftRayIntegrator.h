@@ -12,6 +12,7 @@
 #include "vtkLightShaftModel.h" // For LightKind
 
 #include <array>      // For Vec and RGB
+#include <atomic>     // For the cancel request an effort watches
 #include <cmath>      // For std::sqrt
 #include <functional> // For the visibility and integrand callbacks
 #include <memory>     // For the density field shared by the lights' models
@@ -57,14 +58,47 @@ inline Vec Normalized(const Vec& a)
 }
 
 /**
+ * What one ray's integration may spend, and what it spent: integrand evaluations, bounded by
+ * Limit (0: no bound), and a request to stop, looked at between quadrature panels (15
+ * evaluations) and visibility samples, so that a ray returns within a few milliseconds of it.
+ * Where either ends a piece's refinement, the panels not refined are kept with their error
+ * estimates (Exhausted), or the whole ray is to be discarded (Cancelled).
+ */
+struct Effort
+{
+  long long Limit = 0;
+  const std::atomic<bool>* Cancel = nullptr;
+  long long Evaluations = 0;
+  bool Exhausted = false;
+  bool Cancelled = false;
+
+  /// Whether the ray should stop refining now (and why, recorded).
+  bool Spent()
+  {
+    if (this->Cancel && this->Cancel->load(std::memory_order_relaxed))
+    {
+      this->Cancelled = true;
+    }
+    else if (this->Limit > 0 && this->Evaluations >= this->Limit)
+    {
+      this->Exhausted = true;
+    }
+    return this->Cancelled || this->Exhausted;
+  }
+};
+
+/**
  * Adaptive Gauss-Kronrod (7/15) of a vector-valued f over [a, b]; adds the integral to `sum`
- * and the estimated absolute error to `error`.
+ * and the estimated absolute error to `error`. A panel is accepted when its error is within
+ * `relativeTolerance` of its integral (or at 40 halvings); the panel of largest error is split
+ * first, so that where `effort` ends the refinement, the error left is as small as its
+ * evaluations allow.
  */
 void Integrate(const std::function<RGB(double)>& f,
   double a,
   double b,
   double relativeTolerance,
-  int depth,
+  Effort& effort,
   RGB& sum,
   RGB& error);
 
@@ -205,6 +239,7 @@ using Transition =
  * pieces of a spot or point light are split where the ray passes closest to the light (the
  * phase function's peak); a ray through (within 1e-6 of its length of) a light whose A is
  * finite there (c0 > 0) is integrated in t, since the angle would crowd it into the ends.
+ * `effort` bounds the work (its evaluations accumulate over calls: one per ray and light).
  */
 Result IntegrateRay(const Model& model,
   const Vec& origin,
@@ -215,6 +250,7 @@ Result IntegrateRay(const Model& model,
   int samples,
   double tolerance,
   bool closedForms,
+  Effort& effort,
   const Transition& transition = nullptr);
 }
 

@@ -21,6 +21,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -74,6 +76,21 @@ void vtkLightShaftReference::SetRelativeTolerance(double tolerance)
   if (tolerance != this->RelativeTolerance)
   {
     this->RelativeTolerance = tolerance;
+    this->Modified();
+  }
+}
+
+void vtkLightShaftReference::SetMaximumEvaluations(double evaluations)
+{
+  if (!std::isfinite(evaluations))
+  {
+    vtkErrorMacro("MaximumEvaluations: non-finite value refused; the previous value is kept.");
+    return;
+  }
+  evaluations = std::min(std::max(std::floor(evaluations), 1000.0), 1e12);
+  if (evaluations != this->MaximumEvaluations)
+  {
+    this->MaximumEvaluations = evaluations;
     this->Modified();
   }
 }
@@ -148,6 +165,8 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
   vtkRenderer* ren = this->Renderer;
   vtkLightShaftPass* pass = this->Pass;
   this->LastClosedFormPixels = 0;
+  this->LastExhaustedPixels = 0;
+  this->LastMostEvaluations = 0.0;
   this->LastNumberOfLights = 0;
   if (!ren || !pass)
   {
@@ -175,6 +194,7 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
   options.RelativeTolerance = this->RelativeTolerance;
   options.VisibilitySamples = this->VisibilitySamples;
   options.UseClosedForms = this->UseClosedForms;
+  options.MaximumEvaluations = static_cast<long long>(this->MaximumEvaluations);
   vtkLightShaftReferenceJob job;
   const std::string problem = job.Prepare(ren, pass, this, width, height, options);
   this->LastNumberOfLights = job.GetNumberOfLights();
@@ -190,22 +210,63 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
   surfaceLight->SetNumberOfTuples(vtkIdType(width) * height);
   surfaceLight->Fill(0.0);
   output->GetPointData()->AddArray(surfaceLight);
-  double* surfaceOut = surfaceLight->GetPointer(0);
-  vtkSMPTools::For(0,
-    vtkIdType(width) * height,
-    [&](vtkIdType first, vtkIdType last)
-    { job.SurfaceLight(first, last, surfaceOut + 3 * lights * first); });
+  this->IntegrateInBatches(job, width, height, surfaceLight, radiance, errors);
+  return 1;
+}
 
-  std::atomic<vtkIdType> closedFormPixels(0);
+//------------------------------------------------------------------------------
+// The pixels in batches of rows sized to about BatchSeconds each: progress is reported and an
+// abort honoured between batches, and the next batch is sized by the last one's pace.
+void vtkLightShaftReference::IntegrateInBatches(const vtkLightShaftReferenceJob& job,
+  int width,
+  int height,
+  vtkDoubleArray* surfaceLight,
+  vtkDoubleArray* radiance,
+  vtkDoubleArray* errors)
+{
+  using Clock = std::chrono::steady_clock;
+  constexpr double BatchSeconds = 0.2;
+  const int lights = job.GetNumberOfLights();
+  double* surfaceOut = surfaceLight->GetPointer(0);
   double* radianceOut = radiance->GetPointer(0);
   double* errorOut = errors->GetPointer(0);
-  vtkSMPTools::For(0,
-    vtkIdType(width) * height,
-    [&](vtkIdType first, vtkIdType last) {
-      closedFormPixels += job.Integrate(first, last, radianceOut + 3 * first, errorOut + 3 * first);
-    });
+  const vtkIdType total = vtkIdType(width) * height;
+  std::atomic<vtkIdType> closedFormPixels(0);
+  std::atomic<vtkIdType> exhaustedPixels(0);
+  std::atomic<long long> mostEvaluations(0);
+  vtkIdType rows = 1;
+  vtkIdType next = 0;
+  this->UpdateProgress(0.0);
+  while (next < total && !this->GetAbortExecute())
+  {
+    const vtkIdType end = std::min(total, next + rows * width);
+    const Clock::time_point start = Clock::now();
+    vtkSMPTools::For(next,
+      end,
+      [&](vtkIdType first, vtkIdType last)
+      {
+        job.SurfaceLight(first, last, surfaceOut + 3 * lights * first);
+        const vtkLightShaftReferenceJob::Tally tally =
+          job.Integrate(first, last, radianceOut + 3 * first, errorOut + 3 * first);
+        closedFormPixels += tally.ClosedFormPixels;
+        exhaustedPixels += tally.ExhaustedPixels;
+        long long most = mostEvaluations.load();
+        while (tally.MostEvaluations > most &&
+               !mostEvaluations.compare_exchange_weak(most, tally.MostEvaluations))
+        {
+        }
+      });
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const double rowSeconds = seconds / double((end - next + width - 1) / width);
+    rows = std::max<vtkIdType>(1,
+      std::min<vtkIdType>(
+        height, static_cast<vtkIdType>(BatchSeconds / std::max(rowSeconds, 1e-6))));
+    next = end;
+    this->UpdateProgress(double(next) / double(total));
+  }
   this->LastClosedFormPixels = closedFormPixels;
-  return 1;
+  this->LastExhaustedPixels = exhaustedPixels;
+  this->LastMostEvaluations = static_cast<double>(mostEvaluations.load());
 }
 
 //------------------------------------------------------------------------------
@@ -220,4 +281,7 @@ void vtkLightShaftReference::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseClosedForms: " << this->UseClosedForms << "\n";
   os << indent << "LastNumberOfLights: " << this->LastNumberOfLights << "\n";
   os << indent << "LastClosedFormPixels: " << this->LastClosedFormPixels << "\n";
+  os << indent << "MaximumEvaluations: " << this->MaximumEvaluations << "\n";
+  os << indent << "LastExhaustedPixels: " << this->LastExhaustedPixels << "\n";
+  os << indent << "LastMostEvaluations: " << this->LastMostEvaluations << "\n";
 }

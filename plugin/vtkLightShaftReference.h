@@ -43,7 +43,11 @@
  * per light (the pass's order), for the first opaque surface each ray hits: the fraction of that
  * light's VTK lighting that reaches it, V times the cookie (not the noise) times the medium's
  * transmittance along the light leg, exp(-sigma_t times its optical depth), and the volume's
- * (0 where the ray hits no surface). Pixels run in parallel with vtkSMPTools.
+ * (0 where the ray hits no surface). Pixels run in parallel with vtkSMPTools, in batches of
+ * rows of about a fifth of a second each: between batches the filter reports its progress
+ * (UpdateProgress, ProgressEvent) and honours AbortExecute (set it, for example from a
+ * ProgressEvent observer, and the filter stops within a batch: its output is then incomplete
+ * and Update() reports no error). Each pixel's work is bounded (SetMaximumEvaluations).
  *
  * Visibility: EXACT (default) as above, or SHADOW_MAP: the depth map the pass rendered in its
  * last frame, looked up as the pass does (nearest texel, the same bias: relative for a spot's
@@ -68,7 +72,9 @@
 #include "vtkLightShaftsModule.h" // For the export macro
 #include "vtkSmartPointer.h"      // For the renderer and pass held
 
+class vtkDoubleArray;
 class vtkLightShaftPass;
+class vtkLightShaftReferenceJob;
 class vtkRenderer;
 
 class VTKLIGHTSHAFTS_EXPORT vtkLightShaftReference : public vtkImageAlgorithm
@@ -142,11 +148,36 @@ public:
   vtkBooleanMacro(UseClosedForms, bool);
   ///@}
 
+  ///@{
+  /**
+   * The most integrand evaluations one pixel's ray may spend over its lights, in [1000,
+   * 1e12]: the adaptive quadrature refines the panel of largest error first, and where this
+   * bound ends it the pixel keeps what it has, its estimated error in "ErrorEstimate" and the
+   * pixel counted in LastExhaustedPixels. It bounds the time of a pixel (about a second of a
+   * core at the slowest evaluations measured: a dense density field on both legs); converged
+   * pixels of ordinary scenes spend far fewer. Non-finite values are refused (error, previous
+   * value kept). Default is 1000000.
+   */
+  void SetMaximumEvaluations(double evaluations);
+  vtkGetMacro(MaximumEvaluations, double);
+  ///@}
+
   /**
    * Number of pixels of the last Update() where a closed form computed at least one light's
    * share.
    */
   vtkGetMacro(LastClosedFormPixels, vtkIdType);
+
+  /**
+   * Number of pixels of the last Update() whose integration MaximumEvaluations ended (their
+   * error estimate may then exceed the tolerance).
+   */
+  vtkGetMacro(LastExhaustedPixels, vtkIdType);
+
+  /**
+   * The most evaluations one pixel of the last Update() spent.
+   */
+  vtkGetMacro(LastMostEvaluations, double);
 
   /**
    * Number of lights the last Update() integrated (the pass's choice; 0 when none is usable).
@@ -165,12 +196,22 @@ protected:
   double RelativeTolerance = 1e-9;
   int VisibilitySamples = 32;
   bool UseClosedForms = true;
+  double MaximumEvaluations = 1e6;
   vtkIdType LastClosedFormPixels = 0;
+  vtkIdType LastExhaustedPixels = 0;
+  double LastMostEvaluations = 0.0;
   int LastNumberOfLights = 0;
 
 private:
   vtkLightShaftReference(const vtkLightShaftReference&) = delete;
   void operator=(const vtkLightShaftReference&) = delete;
+
+  void IntegrateInBatches(const vtkLightShaftReferenceJob& job,
+    int width,
+    int height,
+    vtkDoubleArray* surfaceLight,
+    vtkDoubleArray* radiance,
+    vtkDoubleArray* errors);
 
   vtkSmartPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkLightShaftPass> Pass;

@@ -75,19 +75,29 @@ Result IntegrateBehindCrossings(const Model& model,
   const vtkLightShaftRayIntegrator::Transition& transition,
   int samples,
   double tolerance,
-  bool closedForms)
+  bool closedForms,
+  vtkLightShaftRayIntegrator::Effort& effort)
 {
   Result sum;
   double kept = 1.0;
   double ta = t0;
-  for (size_t k = 0; k <= crossings.size() && ta < t1 && kept > 0.0; ++k)
+  for (size_t k = 0; k <= crossings.size() && ta < t1 && kept > 0.0 && !effort.Cancelled; ++k)
   {
     const double tk = k < crossings.size() ? crossings[k].first * tSurface : t1;
     const double tb = std::min(tk, t1);
     if (tb > ta)
     {
-      const Result piece = IntegrateRay(
-        model, origin, dir, ta, tb, transmittance, samples, tolerance, closedForms, transition);
+      const Result piece = IntegrateRay(model,
+        origin,
+        dir,
+        ta,
+        tb,
+        transmittance,
+        samples,
+        tolerance,
+        closedForms,
+        effort,
+        transition);
       sum.ClosedForm = sum.ClosedForm || piece.ClosedForm;
       for (int c = 0; c < 3; ++c)
       {
@@ -290,75 +300,109 @@ std::string vtkLightShaftReferenceJob::Prepare(vtkRenderer* renderer,
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkLightShaftReferenceJob::Integrate(vtkIdType first,
+vtkLightShaftReferenceJob::Tally vtkLightShaftReferenceJob::Integrate(vtkIdType first,
   vtkIdType last,
   double* radiance,
-  double* error) const
+  double* error,
+  const std::atomic<bool>* cancel) const
 {
+  Tally tally;
   if (this->Models.empty() || !this->Tracers)
   {
-    return 0;
+    tally.Pixels = last - first;
+    return tally;
   }
   std::unique_ptr<vtkLightShaftReferenceScene::Tracer> tracer = this->Tracers->Take();
-  vtkIdType closedPixels = 0;
   for (vtkIdType pixel = first; pixel < last; ++pixel)
   {
-    Vec origin;
-    Vec dir;
-    double tSurface;
-    this->PixelRay(*tracer, pixel, origin, dir, tSurface);
-    // The camera leg: what lies behind each translucent surface in front of the opaque one
-    // reaches the camera dimmed as VTK blends it.
-    const auto crossings = tracer->CameraCrossings(origin, origin + tSurface * dir);
-    // Each light's share over the part of the ray it lights.
-    bool closed = false;
+    RGB pixelRadiance{};
+    RGB pixelError{};
+    vtkLightShaftRayIntegrator::Effort effort;
+    effort.Limit = this->Settings.MaximumEvaluations;
+    effort.Cancel = cancel;
+    const bool closed = this->IntegratePixel(*tracer, pixel, effort, pixelRadiance, pixelError);
+    if (effort.Cancelled)
+    {
+      tally.Cancelled = true; // the partial pixel is dropped
+      break;
+    }
     double* out = radiance + 3 * (pixel - first);
     double* outError = error ? error + 3 * (pixel - first) : nullptr;
-    for (size_t l = 0; l < this->Models.size(); ++l)
+    for (int c = 0; c < 3; ++c)
     {
-      const Model& model = this->Models[l];
-      if (!model.Scatters())
+      out[c] += pixelRadiance[c];
+      if (outError)
       {
-        continue; // (an absorbing medium: no in-scatter, only the surfaces' light leg)
-      }
-      double t0;
-      double t1;
-      LitInterval(model, origin, dir, t0, t1);
-      t0 = std::max(t0, 0.0);
-      t1 = std::min(t1, tSurface);
-      if (!(t1 > t0))
-      {
-        continue;
-      }
-      auto transmittance = [&](const Vec& x) { return tracer->Transmittance(x, model); };
-      auto transition = [&](const Vec& o, const Vec& d, double tFrom, double tTo, double& t)
-      { return tracer->Transition(model, o, d, tFrom, tTo, t); };
-      const Result result = IntegrateBehindCrossings(model,
-        origin,
-        dir,
-        t0,
-        t1,
-        crossings,
-        tSurface,
-        transmittance,
-        transition,
-        this->Settings.VisibilitySamples,
-        this->Settings.RelativeTolerance,
-        this->ClosedForms[l] != 0);
-      closed = closed || result.ClosedForm;
-      for (int c = 0; c < 3; ++c)
-      {
-        out[c] += result.Radiance[c];
-        if (outError)
-        {
-          outError[c] += result.Error[c];
-        }
+        outError[c] += pixelError[c];
       }
     }
-    closedPixels += closed ? 1 : 0;
+    ++tally.Pixels;
+    tally.ClosedFormPixels += closed ? 1 : 0;
+    tally.ExhaustedPixels += effort.Exhausted ? 1 : 0;
+    tally.MostEvaluations = std::max(tally.MostEvaluations, effort.Evaluations);
   }
   this->Tracers->Give(std::move(tracer));
-  return closedPixels;
+  return tally;
+}
+
+//------------------------------------------------------------------------------
+// One pixel's in-scatter and error, summed over the lights; true when a closed form computed a
+// light's share.
+bool vtkLightShaftReferenceJob::IntegratePixel(vtkLightShaftReferenceScene::Tracer& tracer,
+  vtkIdType pixel,
+  vtkLightShaftRayIntegrator::Effort& effort,
+  RGB& radiance,
+  RGB& error) const
+{
+  Vec origin;
+  Vec dir;
+  double tSurface;
+  this->PixelRay(tracer, pixel, origin, dir, tSurface);
+  // The camera leg: what lies behind each translucent surface in front of the opaque one
+  // reaches the camera dimmed as VTK blends it.
+  const auto crossings = tracer.CameraCrossings(origin, origin + tSurface * dir);
+  // Each light's share over the part of the ray it lights.
+  bool closed = false;
+  for (size_t l = 0; l < this->Models.size() && !effort.Cancelled; ++l)
+  {
+    const Model& model = this->Models[l];
+    if (!model.Scatters())
+    {
+      continue; // (an absorbing medium: no in-scatter, only the surfaces' light leg)
+    }
+    double t0;
+    double t1;
+    LitInterval(model, origin, dir, t0, t1);
+    t0 = std::max(t0, 0.0);
+    t1 = std::min(t1, tSurface);
+    if (!(t1 > t0))
+    {
+      continue;
+    }
+    auto transmittance = [&](const Vec& x) { return tracer.Transmittance(x, model); };
+    auto transition = [&](const Vec& o, const Vec& d, double tFrom, double tTo, double& t)
+    { return tracer.Transition(model, o, d, tFrom, tTo, t); };
+    const Result result = IntegrateBehindCrossings(model,
+      origin,
+      dir,
+      t0,
+      t1,
+      crossings,
+      tSurface,
+      transmittance,
+      transition,
+      this->Settings.VisibilitySamples,
+      this->Settings.RelativeTolerance,
+      this->ClosedForms[l] != 0,
+      effort);
+    closed = closed || result.ClosedForm;
+    for (int c = 0; c < 3; ++c)
+    {
+      radiance[c] += result.Radiance[c];
+      error[c] += result.Error[c];
+    }
+  }
+  return closed;
 }
 
 //------------------------------------------------------------------------------
@@ -417,18 +461,4 @@ void vtkLightShaftReferenceJob::SurfaceLight(vtkIdType first,
     }
   }
   this->Tracers->Give(std::move(tracer));
-}
-
-//------------------------------------------------------------------------------
-void vtkLightShaftReferenceJob::IntegrateRectangle(int x,
-  int y,
-  int w,
-  int h,
-  double* radiance) const
-{
-  for (int row = 0; row < h; ++row)
-  {
-    const vtkIdType first = vtkIdType(y + row) * this->Width + x;
-    this->Integrate(first, first + w, radiance + 3 * vtkIdType(row) * w, nullptr);
-  }
 }

@@ -10,6 +10,7 @@
 #include "vtkLightShaftReferenceScene.h" // For the captured surfaces and the tracers
 #include "vtkType.h"                     // For vtkIdType
 
+#include <atomic> // For the cancel request
 #include <memory> // For the tracer pool
 #include <string> // For what went wrong
 #include <vector> // For the models
@@ -43,6 +44,23 @@ public:
     double RelativeTolerance = 1e-9;
     int VisibilitySamples = 32;
     bool UseClosedForms = true;
+    /// Integrand evaluations one pixel's ray may spend over its lights (0: no bound): where
+    /// it ends the refinement, the pixel keeps its quadrature's error estimate.
+    long long MaximumEvaluations = DefaultMaximumEvaluations;
+  };
+  /// The bound on a ray's evaluations unless told otherwise: about a second of a core at
+  /// the slowest evaluations measured (a dense field on both legs), and hundreds of times
+  /// what a converged pixel of the tests spends.
+  static constexpr long long DefaultMaximumEvaluations = 1000000;
+
+  /// What integrating a range of pixels did.
+  struct Tally
+  {
+    vtkIdType Pixels = 0;           ///< pixels integrated (fewer than asked: cancelled)
+    vtkIdType ClosedFormPixels = 0; ///< of them, where a closed form computed a light's share
+    vtkIdType ExhaustedPixels = 0;  ///< of them, where MaximumEvaluations ended the refinement
+    long long MostEvaluations = 0;  ///< the most evaluations one pixel spent
+    bool Cancelled = false;         ///< `cancel` stopped it
   };
 
   /**
@@ -65,10 +83,15 @@ public:
   /**
    * Add the in-scatter (and the quadrature's error estimate, when `error` is not null) of the
    * pixels [first, last) (row-major, row 0 at the bottom) into `radiance` and `error`, three
-   * doubles per pixel, the first pixel's at index 0. Thread-safe. Returns how many pixels a
-   * closed form computed.
+   * doubles per pixel, the first pixel's at index 0. Thread-safe. `cancel` (when not null) is
+   * watched within each pixel's integration: once it is set, the call returns within
+   * milliseconds, the pixels before the one in flight added, that one and the rest not.
    */
-  vtkIdType Integrate(vtkIdType first, vtkIdType last, double* radiance, double* error) const;
+  Tally Integrate(vtkIdType first,
+    vtkIdType last,
+    double* radiance,
+    double* error,
+    const std::atomic<bool>* cancel = nullptr) const;
 
   /**
    * The surface term of the pixels [first, last) into `surfaceLight`, 3 doubles per light per
@@ -77,10 +100,6 @@ public:
    * times Model::SurfaceLight); 0 where the ray hits none. Thread-safe.
    */
   void SurfaceLight(vtkIdType first, vtkIdType last, double* surfaceLight) const;
-
-  /// Integrate the pixels of the rectangle (x, y, w, h) into `radiance` (w * h * 3, row 0 at
-  /// the bottom). Thread-safe.
-  void IntegrateRectangle(int x, int y, int w, int h, double* radiance) const;
 
 private:
   vtkLightShaftReferenceJob(const vtkLightShaftReferenceJob&) = delete;
@@ -93,6 +112,11 @@ private:
     vtkLightShaftRayIntegrator::Vec& origin,
     vtkLightShaftRayIntegrator::Vec& dir,
     double& tSurface) const;
+  bool IntegratePixel(vtkLightShaftReferenceScene::Tracer& tracer,
+    vtkIdType pixel,
+    vtkLightShaftRayIntegrator::Effort& effort,
+    vtkLightShaftRayIntegrator::RGB& radiance,
+    vtkLightShaftRayIntegrator::RGB& error) const;
 
   struct Rays;
   std::unique_ptr<Rays> Camera;

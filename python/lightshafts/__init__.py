@@ -112,37 +112,74 @@ def parameter_owner(shafts, name):
                     f" (no Set{name})")
 
 
-def render_converged(window, shafts, max_frames=None):
+def render_converged(window, shafts, max_frames=None, progress=None):
     """Render `window` until the still picture of `shafts` (a vtkLightShaftPass) is converged:
     switches its ProgressiveRefinement on (and leaves it on) and renders until
     GetLastFrame().GetRefinementConverged(), at most `max_frames` estimates (default: its
     RefinementFrames, times the frame's GetRefinementSplit() where a still view after frames
-    under a budget splits its setting among estimates). With ExactFinish on it also waits for the exact finish to complete,
-    rendering every 50 ms once the estimates are done.
+    under a budget splits its setting among estimates). With ExactFinish on it also waits for
+    the exact finish to complete, rendering every 50 ms once the estimates are done.
+
+    `progress`: called after every frame with how far the picture is, a float in [0, 1] that
+    never decreases and is 1 after the last frame: the share of the estimates made, or with
+    ExactFinish on the share of the picture's pixels already exact. True shows a tqdm
+    progress bar instead.
+
     Returns the number of frames rendered. For offscreen batch renders:
 
-        frames = lightshafts.render_converged(window, shafts)
+        frames = lightshafts.render_converged(window, shafts, progress=True)
         lightshafts.write_png(window, "still.png")
     """
     import time
 
+    report = _progress_reporter(progress)
     shafts.ProgressiveRefinementOn()
     limit = shafts.GetRefinementFrames() if max_frames is None else int(max_frames)
     frames = estimates = 0
     split = 1
-    while estimates < max(limit * split, 1):
-        window.Render()
-        frames += 1
-        # Converged, or nothing to refine (no shafts were computed).
-        frame = shafts.GetLastFrame()
-        split = frame.GetRefinementSplit() if max_frames is None else 1
-        if frame.GetRefinementConverged() or frame.GetRefinementEstimates() == 0:
-            break
-        if _finishing_only(shafts):
-            time.sleep(0.05)  # the finish's threads at work; no estimate was made
-        else:
-            estimates += 1
+    done = 0.0
+    try:
+        while estimates < max(limit * split, 1):
+            window.Render()
+            frames += 1
+            # Converged, or nothing to refine (no shafts were computed).
+            frame = shafts.GetLastFrame()
+            split = frame.GetRefinementSplit() if max_frames is None else 1
+            if frame.GetRefinementConverged() or frame.GetRefinementEstimates() == 0:
+                break
+            if _finishing_only(shafts):
+                time.sleep(0.05)  # the finish's threads at work; no estimate was made
+            else:
+                estimates += 1
+            if shafts.GetExactFinish():
+                share = frame.GetExactFinishFraction()
+            else:
+                share = estimates / max(limit * split, 1)
+            done = max(done, min(share, 1.0))
+            report(done)
+        report(1.0)
+    finally:
+        report(None)
     return frames
+
+
+def _progress_reporter(progress):
+    """A function of the share done (None: the end) for render_converged's `progress`."""
+    if progress is True:
+        from tqdm import tqdm
+
+        bar = tqdm(total=1000, desc="converging", unit="‰", leave=False)
+
+        def show(share):
+            if share is None:
+                bar.close()
+            else:
+                bar.update(int(round(share * 1000)) - bar.n)
+
+        return show
+    if progress:
+        return lambda share: share is not None and progress(share)
+    return lambda share: None
 
 
 def _finishing_only(shafts):

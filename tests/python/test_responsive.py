@@ -1,0 +1,256 @@
+"""Never block the user: the exact finish stops within milliseconds of a change, however slow
+its pixels; the float64 reference bounds each pixel's work, reports its progress and honours an
+abort; render_converged reports its progress.
+
+The slow scene: the README's sphere on its floor with four spotlights in a dense random density
+field (65^3 samples over the scene, sigma_s 10). Each pixel's ray crosses hundreds of the field's
+cells on both legs for each light: about 0.2 s of a core per pixel (measured with
+vtkLightShaftReference), so a worker is always inside a pixel when the view changes.
+"""
+
+import math
+import random
+import time
+
+import numpy as np
+import pytest
+
+import lightshafts
+from lightshafts import scenes, vtkLightShaftFrameReport, vtkLightShaftPass, vtkLightShaftReference
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkCommonDataModel import vtkImageData
+
+import render_helpers as rh
+from vtk_output import VTK_OUTPUT  # noqa: F401  (fails a test on any VTK message)
+
+RUNNING = vtkLightShaftFrameReport.EXACT_FINISH_RUNNING
+
+
+def dense_field(samples=65, seed=3):
+    """A random density field of samples^3 points over the sphere scene ([-8, 8] x [-2, 14] x
+    [-8, 8])."""
+    image = vtkImageData()
+    image.SetDimensions(samples, samples, samples)
+    spacing = 16.0 / (samples - 1)
+    image.SetSpacing(spacing, spacing, spacing)
+    image.SetOrigin(-8.0, -2.0, -8.0)
+    values = np.random.default_rng(seed).uniform(0.0, 1.0, samples ** 3)
+    image.GetPointData().SetScalars(numpy_to_vtk(values, deep=1))
+    return image
+
+
+def slow_scene(width=64, height=48, lights=4, samples=65):
+    renderer, window = rh.make_window(width, height)
+    info = scenes.sphere_and_floor(renderer, sphere_resolution=32)
+    for k in range(lights - 1):
+        angle = 2.0 * math.pi * k / (lights - 1)
+        scenes.add_spotlight(renderer, (5.0 * math.cos(angle), 6.0, 5.0 * math.sin(angle)),
+                             (0.0, 0.0, 0.0), cone_angle=40.0)
+    shafts = vtkLightShaftPass()
+    shafts.GetMedium().SetScatteringCoefficient(10.0)
+    shafts.GetMedium().SetDensityField(dense_field(samples))
+    renderer.SetPass(shafts)
+    return renderer, window, info, shafts
+
+
+def reference(renderer, shafts, **params):
+    filter_ = vtkLightShaftReference()
+    filter_.SetRenderer(renderer)
+    filter_.SetLightShaftPass(shafts)
+    for name, value in params.items():
+        getattr(filter_, "Set" + name)(value)
+    return filter_
+
+
+def arrays(filter_):
+    image = filter_.GetOutput()
+    w, h, _ = image.GetDimensions()
+    data = image.GetPointData()
+    return (vtk_to_numpy(data.GetArray("InScatteredRadiance")).reshape(h, w, 3).copy(),
+            vtk_to_numpy(data.GetArray("ErrorEstimate")).reshape(h, w, 3).copy())
+
+
+def test_any_change_stops_the_finish_within_50_ms_however_slow_its_pixels():
+    """100 random changes of a still, finishing view (the camera, the medium, a light, a prop,
+    the window's size), each after a random wait so that the workers are anywhere inside a
+    pixel: the frame after each waits under 50 ms for them (the frame report's stop time)."""
+    renderer, window, info, shafts = slow_scene()
+    shafts.SetQualityToInteractive()
+    shafts.ProgressiveRefinementOn()
+    shafts.ExactFinishOn()
+    rng = random.Random(51)
+    waits = []
+    for _ in range(100):
+        window.Render()
+        window.Render()  # the same view: the finish runs
+        assert shafts.GetLastFrame().GetExactFinishState() == RUNNING
+        time.sleep(rng.uniform(0.0, 0.03))
+        change = rng.choice(["camera", "medium", "light", "prop", "size"])
+        if change == "camera":
+            renderer.GetActiveCamera().Azimuth(rng.uniform(-2.0, 2.0))
+        elif change == "medium":
+            shafts.GetMedium().SetScatteringCoefficient(rng.uniform(5.0, 10.0))
+        elif change == "light":
+            info.light.SetConeAngle(rng.uniform(30.0, 40.0))
+        elif change == "prop":
+            info.actors[0].SetPosition(0.0, rng.uniform(0.0, 0.2), 0.0)
+        else:
+            width = window.GetSize()[0]
+            window.SetSize(64 + (width - 64 + rng.randrange(1, 8)) % 8, 48)
+        window.Render()
+        frame = shafts.GetLastFrame()
+        assert frame.GetExactFinishState() != RUNNING
+        waits.append(frame.GetExactFinishStopTime())
+    print(f"stop after a change: median {1e3 * np.median(waits):.2f} ms, "
+          f"max {1e3 * max(waits):.2f} ms over {len(waits)} changes")
+    assert max(waits) < 0.05, max(waits)
+    assert min(waits) > 0.0  # each change did stop running workers
+
+
+def test_releasing_or_deleting_the_pass_inside_slow_pixels_returns_at_once():
+    renderer, window, _, shafts = slow_scene()
+    shafts.ProgressiveRefinementOn()
+    shafts.ExactFinishOn()
+    window.Render()
+    window.Render()
+    assert shafts.GetLastFrame().GetExactFinishState() == RUNNING
+    time.sleep(0.05)
+    start = time.monotonic()
+    shafts.ReleaseGraphicsResources(window)
+    assert time.monotonic() - start < 0.05
+    window.Render()
+    window.Render()
+    assert shafts.GetLastFrame().GetExactFinishState() == RUNNING
+    time.sleep(0.05)
+    start = time.monotonic()
+    renderer.SetPass(None)
+    del shafts
+    assert time.monotonic() - start < 0.05
+
+
+def test_the_bound_on_evaluations_ends_a_pixel_and_reports_its_error():
+    """At the smallest bound every pixel of the slow scene is cut short: it comes back in a
+    fraction of the time with its (larger) estimated error, counted as exhausted; at the default
+    bound none is, and the difference is within the reported errors."""
+    renderer, window, _, shafts = slow_scene(width=4, height=6)
+    window.Render()
+    full = reference(renderer, shafts)
+    start = time.monotonic()
+    full.Update()
+    full_time = time.monotonic() - start
+    assert full.GetLastExhaustedPixels() == 0
+    assert full.GetLastMostEvaluations() > 1000
+    bounded = reference(renderer, shafts, MaximumEvaluations=1000)
+    start = time.monotonic()
+    bounded.Update()
+    bounded_time = time.monotonic() - start
+    print(f"{full.GetLastMostEvaluations():.0f} evaluations, {full_time:.2f} s; bounded at 1000:"
+          f" {bounded.GetLastExhaustedPixels()} pixels cut short, {bounded_time:.2f} s")
+    assert bounded.GetLastExhaustedPixels() > 0
+    # A pixel overruns the bound by at most its last panels and the pieces' first ones.
+    assert bounded_time < 0.5 * full_time
+    exact, exact_error = arrays(full)
+    cut, cut_error = arrays(bounded)
+    assert np.all(np.isfinite(cut))
+    lit = exact > 1e-6 * exact.max()
+    assert cut_error[lit].sum() > exact_error[lit].sum()
+    assert np.all(np.abs(cut - exact) <= 2.0 * cut_error + 1e-9 * exact.max())
+
+
+@pytest.mark.parametrize("case", ["cone", "attenuation", "spacing", "sigma"])
+def test_degenerate_inputs_converge_or_stop(case):
+    """A cone of 1e-30 degrees, attenuation (1e-9, 0, 1), a field of 1e-6 spacing over the
+    scene's middle, sigma at its maximum: the reference returns finite values within its
+    bound, in seconds."""
+    renderer, window, info, shafts = slow_scene(width=16, height=12, lights=1, samples=9)
+    medium = shafts.GetMedium()
+    if case == "cone":
+        info.light.SetConeAngle(1e-30)
+    elif case == "attenuation":
+        info.light.SetAttenuationValues(1e-9, 0.0, 1.0)
+    elif case == "spacing":
+        field = dense_field(9)
+        field.SetSpacing(1e-6, 1e-6, 1e-6)
+        field.SetOrigin(-4e-6, 1.0, -4e-6)
+        medium.SetDensityField(field)
+    else:
+        medium.SetScatteringCoefficient(1e30)
+        medium.SetAbsorptionCoefficient(1e30)
+    window.Render()
+    filter_ = reference(renderer, shafts)
+    start = time.monotonic()
+    filter_.Update()
+    assert time.monotonic() - start < 30.0
+    values, errors = arrays(filter_)
+    assert np.all(np.isfinite(values)) and np.all(np.isfinite(errors))
+    assert filter_.GetLastMostEvaluations() <= filter_.GetMaximumEvaluations() + 1e5
+
+
+def test_the_bound_refuses_nan_and_is_clamped(messages):
+    filter_ = vtkLightShaftReference()
+    log = messages(filter_)
+    assert filter_.GetMaximumEvaluations() == 1e6
+    filter_.SetMaximumEvaluations(float("nan"))
+    assert filter_.GetMaximumEvaluations() == 1e6
+    assert any("MaximumEvaluations" in e for e in log.errors)
+    filter_.SetMaximumEvaluations(1.0)
+    assert filter_.GetMaximumEvaluations() == 1000.0
+    filter_.SetMaximumEvaluations(1e30)
+    assert filter_.GetMaximumEvaluations() == 1e12
+
+
+def test_the_reference_of_a_1080p_frame_shows_progress_and_stops_within_1_s_of_an_abort():
+    renderer, window = rh.make_window(1920, 1080)
+    scenes.sphere_and_floor(renderer, sphere_resolution=64)
+    shafts = vtkLightShaftPass()
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
+    renderer.SetPass(shafts)
+    window.Render()
+    filter_ = reference(renderer, shafts)
+    seen = []
+    aborted = []
+
+    def on_progress(caller, _event):
+        seen.append((time.monotonic(), caller.GetProgress()))
+        if not aborted and seen[-1][0] - seen[0][0] > 2.0:
+            caller.SetAbortExecute(1)
+            aborted.append(time.monotonic())
+
+    filter_.AddObserver(vtkCommand.ProgressEvent, on_progress)
+    filter_.Update()
+    end = time.monotonic()
+    assert aborted, "no abort: the frame finished within 2 s"
+    print(f"stopped {end - aborted[0]:.3f} s after the abort, at {seen[-1][1]:.3f} of the frame,"
+          f" {len(seen)} progress events")
+    assert end - aborted[0] < 1.0
+    progress = [value for _, value in seen]
+    assert len(progress) >= 5
+    assert progress == sorted(progress)
+    assert 0.0 < progress[-1] < 1.0  # stopped part of the way
+    # Each batch is about a fifth of a second: the progress moves several times a second.
+    times = [t for t, _ in seen]
+    assert max(np.diff(times)) < 1.0
+
+
+def test_render_converged_reports_its_progress():
+    renderer, window = rh.make_window(64, 48)
+    scenes.sphere_and_floor(renderer, sphere_resolution=32)
+    shafts = vtkLightShaftPass()
+    shafts.GetMedium().SetScatteringCoefficient(0.05)
+    shafts.SetMethod(vtkLightShaftPass.RAY_MARCH)
+    shafts.SetNumberOfSteps(4)
+    shafts.SetInterleaveSize(1)
+    shafts.SetRefinementFrames(8)
+    renderer.SetPass(shafts)
+    shares = []
+    frames = lightshafts.render_converged(window, shafts, progress=shares.append)
+    assert frames == 8
+    assert shares == sorted(shares) and shares[-1] == 1.0
+    assert len(shares) >= 2 and shares[0] < 1.0
+    shafts.ExactFinishOn()
+    renderer.GetActiveCamera().Azimuth(1.0)
+    shares = []
+    lightshafts.render_converged(window, shafts, progress=shares.append)
+    assert shafts.GetLastFrame().GetExactFinishFraction() == 1.0
+    assert shares == sorted(shares) and shares[-1] == 1.0
