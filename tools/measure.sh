@@ -63,6 +63,8 @@
 #   tools/measure.sh pytest TEST...    # a test, printing what it measured (-s)
 #
 # Extra arguments go to the script (e.g. tools/measure.sh random-scenes --scenes 5).
+# Long runs show a progress bar on stderr (stdout and the files written are unchanged);
+# LIGHTSHAFTS_NO_PROGRESS=1 hides it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ ! -f build/CMakeCache.txt ]; then
@@ -139,6 +141,6 @@ case "$what" in
   fixed-cost) run tests/benchmarks/fixed_cost.py "$@" ;;
   pytest) run -m pytest -p no:cacheprovider -q -s "$@" ;;
   *)
-    sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"  # the header comment
     exit 2 ;;
 esac

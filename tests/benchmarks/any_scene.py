@@ -15,6 +15,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
 
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 import test_any_scene as scenes  # noqa: E402
 
@@ -26,7 +27,7 @@ def main():
     args = parser.parse_args()
     plain = scenes.readme_scene_plain()
     results = {}
-    for scale in args.scales:
+    for scale in progress.steps(args.scales, "scales"):
         renderer, window, shafts = scenes.readme_scene(scale)
         window.Render()
         results[scale] = (rh.in_scatter(shafts), shafts.GetMedium().GetScatteringCoefficient()[0],

@@ -38,6 +38,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import parameter_owner, scenes, vtkLightShaftFetchFloor, vtkLightShaftPass  # noqa: E402
 
@@ -202,7 +203,7 @@ def main():
         # After the scene's first frames have settled (docs/known-issues.md).
         plain = rh.median_frame_time(window, args.frames, warm_up=30, warm_up_seconds=2.0)
         reference = None
-        for family, label, params in settings:
+        for family, label, params in progress.steps(settings, f"settings ({name})"):
             shafts = vtkLightShaftPass()
             configure(shafts, sigma_s, sigma_a, params)
             renderer.SetPass(shafts)

@@ -27,6 +27,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import parameter_owner, vtkLightShaftPass  # noqa: E402
 from refinement import timed_render  # noqa: E402  (tests/benchmarks/refinement.py)
@@ -61,7 +62,7 @@ def run(args):
     moving = []
     window.SetDesiredUpdateRate(args.rate)
     try:
-        for frame in range(args.frames):
+        for frame in progress.steps(range(args.frames), "frames (moving)"):
             camera.Azimuth(0.5)
             seconds = timed_render(window)
             name = vtkLightShaftPass.GetErrorModelSettingName(shafts.GetLastFrame().GetErrorModelSetting())
@@ -72,7 +73,7 @@ def run(args):
         window.SetDesiredUpdateRate(0.0001)
     refining = []
     elapsed = 0.0
-    for k in range(1, args.estimates + 1):
+    for k in progress.steps(range(1, args.estimates + 1), "estimates (still)"):
         elapsed += timed_render(window)
         if k & (k - 1) == 0 or shafts.GetLastFrame().GetRefinementConverged():
             refining.append((shafts.GetLastFrame().GetRefinementEstimates(), elapsed,

@@ -27,6 +27,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "examples"))
 
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import scenes, vtkLightShaftPass  # noqa: E402
 from vtkmodules.vtkFiltersSources import vtkPlaneSource  # noqa: E402
@@ -95,7 +96,7 @@ def main():
           f"{args.frames} frames; the extra is against the same props at opacity 0.\n")
     print("| panes in view | camera layers | memory (MiB) | frame (ms) | extra (ms) |")
     print("|---|---|---|---|---|")
-    for panes in range(args.layers + 1):
+    for panes in progress.steps(range(args.layers + 1), "panes"):
         def build(renderer, on, panes=panes):
             for j in range(panes):
                 add_pane(renderer, 6.0 + 0.5 * j).GetProperty().SetOpacity(0.5 if on else 0.0)
@@ -122,8 +123,8 @@ def main():
             opacity.AddPoint(0.15, 0.0)
             opacity.AddPoint(1.0, 0.8 + 0.001 * (frame % 2))
 
-    for name, change in (("kept (the camera turns)", None),
-                         ("rebuilt (its opacity changes)", rebuild)):
+    for name, change in progress.steps((("kept (the camera turns)", None),
+                                        ("rebuilt (its opacity changes)", rebuild)), "volumes"):
         volumes.clear()
         on, off, (_, _, build_ms) = timed(width, height, args.frames, build_volume, change)
         print(f"| {name} | {1e3 * on:.0f} | {1e3 * (on - off):+.0f} | {build_ms:.0f} |",

@@ -42,6 +42,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 import numpy as np  # noqa: E402
 
 import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import scenes, vtkLightShaftFrameReport, vtkLightShaftPass  # noqa: E402
 from refinement import timed_render  # noqa: E402  (tests/benchmarks/refinement.py)
@@ -217,7 +218,7 @@ def main():
                         help="runs of each, alternating, their frame times pooled")
     args = parser.parse_args()
     off, on = [], []
-    for _ in range(args.repeats):
+    for _ in progress.steps(range(args.repeats), "repeats"):
         off.append(run(args, False))
         on.append(run(args, True))
     text = table(args, pooled(off), pooled(on))

@@ -30,6 +30,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 sys.path.insert(0, HERE)
 
 import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
 import random_scenes as rs  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import vtkLightShaftPass  # noqa: E402
@@ -84,11 +85,12 @@ def random_field(rng, bounds):
 
 def run(seed, scenes, size, log):
     rows = []
-    index = 0
-    while len({r["scene"] for r in rows}) < scenes and index < 4 * scenes:
+    # (The bar counts the scenes drawn; one without light in view is drawn again.)
+    for index in progress.steps(range(4 * scenes), "scenes drawn", total=scenes):
+        if len({r["scene"] for r in rows}) >= scenes:
+            break
         scene = rs.draw_scene(seed, index, 0, size[1], size=size)
         rng = np.random.default_rng([seed, index, 99])
-        index += 1
         renderer, window = rh.make_window(*size)
         light = rs.build(renderer, scene)
         window.Render()

@@ -20,6 +20,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
+import progress  # noqa: E402
 from test_medium_field import plume_image, scene  # noqa: E402
 
 
@@ -36,7 +37,7 @@ def main():
     parser.add_argument("--frames", type=int, default=30)
     parser.add_argument("--moving", type=int, default=10)
     args = parser.parse_args()
-    for field in (False, True):
+    for field in progress.steps((False, True), "media"):
         renderer, window, info, shafts = scene("pair", *args.size)
         shafts.SetQualityToFinal()
         shafts.ProgressiveRefinementOn()

@@ -25,6 +25,7 @@ import numpy as np  # noqa: E402
 
 import field_error_model as fem  # noqa: E402
 import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
 import random_scenes as rs  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import vtkLightShaftPass  # noqa: E402
@@ -70,7 +71,7 @@ def main():
     parser.add_argument("--size", type=int, nargs=2, default=(240, 180))
     parser.add_argument("--frames", type=int, default=4)
     args = parser.parse_args()
-    for index in args.scenes:
+    for index in progress.steps(args.scenes, "scenes"):
         measure(args.seed, index, args.setting, args.size, args.frames)
 
 

@@ -40,6 +40,7 @@ ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 sys.path.insert(0, HERE)
 
+import progress  # noqa: E402
 import random_scenes as rs  # noqa: E402
 
 FEATURES = ("depth_range_in_beam_widths", "beam_width_in_pixels", "model_optical_depth",
@@ -187,7 +188,7 @@ def main():
     # Rows of earlier fits (docs/error-model-training.csv) carry their features; new runs'
     # rows get them here.
     cache = {}
-    for row in rows:
+    for row in progress.steps(rows, "training rows"):
         if all(row.get(k) not in (None, "") for k in FEATURES):
             continue
         key = row["scene_json"]  # the scene, whatever run it came from

@@ -21,6 +21,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
+import progress  # noqa: E402
 import random_scenes as rs  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import vtkLightShaftPass  # noqa: E402
@@ -44,7 +45,7 @@ def main():
     args = parser.parse_args()
 
     log = rs.WarningLog()
-    for index in range(args.scenes):
+    for index in progress.steps(range(args.scenes), "scenes"):
         scene = rs.draw_scene(args.seed, index, 0, args.max_height,
                               tuple(args.size) if args.size else None)
         renderer, window = rh.make_window(scene.width, scene.height)

@@ -23,6 +23,7 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import benchmark  # noqa: E402
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import vtkLightShaftPass  # noqa: E402
 
@@ -33,7 +34,7 @@ def images(size):
     for name, (build, sigma_s, sigma_a) in benchmark.SCENES.items():
         renderer, window = rh.make_window(*size)
         build(renderer)
-        for _, label, params in benchmark.SETTINGS:
+        for _, label, params in progress.steps(benchmark.SETTINGS, f"settings ({name})"):
             shafts = vtkLightShaftPass()
             benchmark.configure(shafts, sigma_s, sigma_a, params)
             renderer.SetPass(shafts)

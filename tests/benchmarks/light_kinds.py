@@ -32,6 +32,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from benchmark import reference_image  # noqa: E402  (tests/benchmarks/benchmark.py)
 from lightshafts import parameter_owner, scenes, vtkLightShaftPass  # noqa: E402
@@ -129,7 +130,7 @@ def main():
         settings = SETTINGS[:1] + SETTINGS[-1:]
 
     rows = []
-    for name in scene_names:
+    for name in progress.steps(scene_names, "lights"):
         renderer, window = rh.make_window(*args.size)
         info = scenes.sphere_and_floor(renderer, sphere_resolution=128)
         lights = SCENES[name](renderer, info)

@@ -22,6 +22,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import numpy as np  # noqa: E402
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import vtkLightShaftPass as P  # noqa: E402
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy  # noqa: E402
@@ -86,7 +87,7 @@ def main():
     print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
     print(f"| homogeneous | | {1e3 * homogeneous:.0f} ms | {1e3 * (homogeneous - plain):.0f} ms "
           f"| 1.00 | | | | |")
-    for samples in args.samples:
+    for samples in progress.steps(args.samples, "fields"):
         field = wavelet_field(samples, bounds)
         shafts.GetMedium().SetDensityField(field)
         for resolution in args.resolutions:

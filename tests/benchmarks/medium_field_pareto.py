@@ -28,6 +28,7 @@ sys.path.insert(0, HERE)
 import benchmark  # noqa: E402
 import lightshaft_reference as ref  # noqa: E402
 import numpy as np  # noqa: E402
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import parameter_owner, scenes, vtkLightShaftPass as P  # noqa: E402
 from test_medium_field import plume_image  # noqa: E402
@@ -74,7 +75,7 @@ def main():
           f"{1e3 * plain:.1f} ms")
     print("| method | setting | frame / plain | relative RMS error |")
     print("|---|---|---:|---:|")
-    for family, label, params in SETTINGS:
+    for family, label, params in progress.steps(SETTINGS, "settings"):
         shafts = P()
         shafts.AddLight(info.light)
         shafts.AddLight(point)

@@ -21,6 +21,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import parameter_owner, scenes, vtkLightShaftPass  # noqa: E402
 
@@ -61,7 +62,7 @@ def main():
     plain = rh.median_frame_time(window, args.frames)
     rows = []
     reference = None
-    for name, params in SETTINGS:
+    for name, params in progress.steps(SETTINGS, "settings"):
         shafts = vtkLightShaftPass()
         shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
         shafts.GetMedium().SetAbsorptionCoefficient(0.02, 0.01, 0.03)

@@ -61,6 +61,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "python"))
 sys.path.insert(0, HERE)
 
 import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from benchmark import reference_image  # noqa: E402  (tests/benchmarks/benchmark.py)
 from lightshafts import parameter_owner, vtkLightShaftMedium, vtkLightShaftPass  # noqa: E402
@@ -920,7 +921,7 @@ def main():
     rows, scenes_by_index, pictures = [], {}, {}
     keep = dict(on=any(s[0] == "Interactive" for s in settings),
                 min_lit=args.min_lit_fraction)
-    for index in indices:
+    for index in progress.steps(indices, "scenes"):
         for attempt in range(args.max_attempts):
             scene = draw_scene(args.seed, index, attempt, args.max_height, size)
             scene_rows, scene_pictures = run_scene(scene, settings, args.frames, log, keep)

@@ -23,6 +23,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import scenes, vtkLightShaftPass, vtkLightShaftReference  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
@@ -48,7 +49,7 @@ def main():
     frame = rh.median_frame_time(window, args.frames)
 
     seconds = []
-    for _ in range(args.runs):
+    for _ in progress.steps(range(args.runs), "reference runs"):
         reference = vtkLightShaftReference()
         reference.SetRenderer(renderer)
         reference.SetLightShaftPass(shafts)

@@ -27,6 +27,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import parameter_owner, scenes, vtkLightShaftPass  # noqa: E402
 
@@ -116,7 +117,7 @@ def main():
     parser.add_argument("--settings", nargs="+", default=list(SETTINGS))
     args = parser.parse_args()
     results = [measure(name, SETTINGS[name], *args.size, args.estimates, args.frames)
-               for name in args.settings]
+               for name in progress.steps(args.settings, "settings")]
     text = table(results, *args.size)
     print(text)
     if args.output_dir:

@@ -32,6 +32,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import parameter_owner, scenes, vtkLightShaftPass  # noqa: E402
 
@@ -184,7 +185,7 @@ def main():
     parser.add_argument("--output-dir")
     args = parser.parse_args()
     rows = []
-    for kind, name, params in SETTINGS:
+    for kind, name, params in progress.steps(SETTINGS, "settings"):
         if args.only and args.only not in f"{kind} {name}":
             continue
         errors = measure(kind, params, args.size[0], args.size[1], args.estimates)

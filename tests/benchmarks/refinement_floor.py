@@ -29,6 +29,7 @@ import numpy as np  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import vtkLightShaftPass, vtkLightShaftReference  # noqa: E402
 
@@ -61,7 +62,7 @@ def run(args):
     window.Render()
     exact = rh.scene_reference(renderer, shafts)
     rows = []
-    for size, steps in SETTINGS:
+    for size, steps in progress.steps(SETTINGS, "settings"):
         shafts.SetShadowMapSize(size)
         shafts.SetNumberOfSteps(steps)
         shafts.ProgressiveRefinementOff()

@@ -29,6 +29,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkFloatArray  # noqa: E402
@@ -98,7 +99,7 @@ def main():
     view = View(*args.size)
     camera = view.renderer.GetActiveCamera()
     rows = []
-    for name, move in MOVES.items():
+    for name, move in progress.steps(MOVES.items(), "moves", total=len(MOVES)):
         picture, _, clip_a = view.capture()
         move(camera, 1)
         camera.OrthogonalizeViewUp()

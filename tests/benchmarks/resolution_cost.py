@@ -22,6 +22,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import parameter_owner, vtkLightShaftPass as P  # noqa: E402
 
@@ -48,7 +49,7 @@ def main():
     print(f"plain frame {1000 * plain:.1f} ms ({args.size[0]}x{args.size[1]})")
     print("| setting | 1/1 | 1/2 | 1/4 | exponent 1..4 | exponent 1..2 |")
     print("|---|---:|---:|---:|---:|---:|")
-    for name, params in SETTINGS.items():
+    for name, params in progress.steps(SETTINGS.items(), "settings", total=len(SETTINGS)):
         shafts_time = {}
         for factor in (1, 2, 4):
             shafts.SetDownsampleFactor(factor)

@@ -35,6 +35,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import vtkLightShaftPass  # noqa: E402
 from refinement import timed_render  # noqa: E402  (tests/benchmarks/refinement.py)
@@ -140,8 +141,7 @@ def main():
     parser.add_argument("--refinement-frames", type=int, default=4)
     parser.add_argument("--seconds", type=float, default=30.0)
     args = parser.parse_args()
-    whole = run(args, split=False)
-    split = run(args, split=True)
+    whole, split = [run(args, split=s) for s in progress.steps((False, True), "runs")]
     text = table(args, whole, split)
     print(text)
     if args.output_dir:

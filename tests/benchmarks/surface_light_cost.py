@@ -13,6 +13,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
 
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 
 
@@ -29,7 +30,7 @@ def main():
                 ("ShadowSurfaces (AttenuateSurfaceLight on)", {"ShadowSurfaces": True,
                                                               "AttenuateSurfaceLight": True})]
     times = []
-    for name, values in settings:
+    for name, values in progress.steps(settings, "settings"):
         for key, value in values.items():
             if hasattr(shafts, "Set" + key):  # (an earlier build has no AttenuateSurfaceLight)
                 getattr(shafts, "Set" + key)(value)

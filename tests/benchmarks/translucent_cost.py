@@ -28,6 +28,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
+import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import scenes, vtkLightShaftPass  # noqa: E402
 from vtkmodules.vtkFiltersSources import vtkPlaneSource  # noqa: E402
@@ -104,7 +105,7 @@ def main():
     print("| panes | layers | memory (MiB) | kept: frame (ms) | kept: extra (ms) | "
           "rebuilt: frame (ms) | rebuilt: extra (ms) |")
     print("|---|---|---|---|---|---|---|")
-    for panes in range(args.layers + 1):
+    for panes in progress.steps(range(args.layers + 1), "panes"):
         kept_on, kept_off, layers, memory = measure(width, height, panes, args.frames, False)
         built_on, built_off, _, _ = measure(width, height, panes, args.frames, True)
         print(f"| {panes} | {layers} | {memory / 2**20:.0f} | {1e3 * kept_on:.0f} | "

@@ -19,6 +19,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 
 import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
 import test_camera_leg as leg  # noqa: E402
 import test_volumes as vol  # noqa: E402
 
@@ -37,11 +38,11 @@ def main():
     print("|---|---|---|---|")
     covered = np.zeros((leg.HEIGHT, leg.WIDTH), dtype=bool)
     covered[:, : leg.WIDTH // 2 - 8] = True
-    for kind in leg.KINDS:
+    for kind in progress.steps(leg.KINDS, "camera-leg cases"):
         (a, ea, _), (b, eb, _) = leg.measured(kind, [(9.0, leg.BLACK, 0.5)])
         ratios(f"black pane 0.5, {kind}", (a, ea, None), (b, eb),
                covered & vol.lit(eb))
-    for kind in ["vertical"] + vol.KINDS:
+    for kind in progress.steps(["vertical"] + vol.KINDS, "volume cases"):
         if kind in ("spot", "point"):
             def build(renderer):
                 vol.add_slab(renderer, low=(-6.0, 4.0, -6.0), high=(6.0, 4.4, 6.0))

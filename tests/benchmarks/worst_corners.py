@@ -18,6 +18,8 @@ import subprocess
 import sys
 import time
 
+import progress
+
 CORNERS = [
     ("defaults (64 slices, jitter, blur 2)", {}),
     ("NumberOfSlices 4096", {"NumberOfSlices": 4096}),
@@ -145,7 +147,7 @@ def main():
         run_corner(json.loads(args.corner), args.width, args.height, args.frames)
         return
     rows = []
-    for label, params in CORNERS:
+    for label, params in progress.steps(CORNERS, "corners"):
         if args.only and args.only not in label:
             continue
         child = subprocess.run(
