@@ -215,8 +215,9 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
-// The pixels in batches of rows sized to about BatchSeconds each: progress is reported and an
-// abort honoured between batches, and the next batch is sized by the last one's pace.
+// The pixels in batches of about BatchSeconds each: the threads take a few pixels at a time, in
+// order, until the batch's time is up, so the pixels done are always the first ones; between
+// batches progress is reported and an abort honoured.
 void vtkLightShaftReference::IntegrateInBatches(const vtkLightShaftReferenceJob& job,
   int width,
   int height,
@@ -226,43 +227,49 @@ void vtkLightShaftReference::IntegrateInBatches(const vtkLightShaftReferenceJob&
 {
   using Clock = std::chrono::steady_clock;
   constexpr double BatchSeconds = 0.2;
+  constexpr vtkIdType PixelsTaken = 8;
   const int lights = job.GetNumberOfLights();
   double* surfaceOut = surfaceLight->GetPointer(0);
   double* radianceOut = radiance->GetPointer(0);
   double* errorOut = errors->GetPointer(0);
   const vtkIdType total = vtkIdType(width) * height;
+  const vtkIdType threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+  std::atomic<vtkIdType> next(0);
   std::atomic<vtkIdType> closedFormPixels(0);
   std::atomic<vtkIdType> exhaustedPixels(0);
   std::atomic<long long> mostEvaluations(0);
-  vtkIdType rows = 1;
-  vtkIdType next = 0;
   this->UpdateProgress(0.0);
   while (next < total && !this->GetAbortExecute())
   {
-    const vtkIdType end = std::min(total, next + rows * width);
-    const Clock::time_point start = Clock::now();
-    vtkSMPTools::For(next,
-      end,
-      [&](vtkIdType first, vtkIdType last)
+    const Clock::time_point deadline =
+      Clock::now() +
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(BatchSeconds));
+    vtkSMPTools::For(0,
+      threads,
+      1,
+      [&](vtkIdType, vtkIdType)
       {
-        job.SurfaceLight(first, last, surfaceOut + 3 * lights * first);
-        const vtkLightShaftReferenceJob::Tally tally =
-          job.Integrate(first, last, radianceOut + 3 * first, errorOut + 3 * first);
-        closedFormPixels += tally.ClosedFormPixels;
-        exhaustedPixels += tally.ExhaustedPixels;
-        long long most = mostEvaluations.load();
-        while (tally.MostEvaluations > most &&
-               !mostEvaluations.compare_exchange_weak(most, tally.MostEvaluations))
+        while (Clock::now() < deadline)
         {
+          const vtkIdType first = next.fetch_add(PixelsTaken);
+          if (first >= total)
+          {
+            return;
+          }
+          const vtkIdType last = std::min(total, first + PixelsTaken);
+          job.SurfaceLight(first, last, surfaceOut + 3 * lights * first);
+          const vtkLightShaftReferenceJob::Tally tally =
+            job.Integrate(first, last, radianceOut + 3 * first, errorOut + 3 * first);
+          closedFormPixels += tally.ClosedFormPixels;
+          exhaustedPixels += tally.ExhaustedPixels;
+          long long most = mostEvaluations.load();
+          while (tally.MostEvaluations > most &&
+                 !mostEvaluations.compare_exchange_weak(most, tally.MostEvaluations))
+          {
+          }
         }
       });
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    const double rowSeconds = seconds / double((end - next + width - 1) / width);
-    rows = std::max<vtkIdType>(1,
-      std::min<vtkIdType>(
-        height, static_cast<vtkIdType>(BatchSeconds / std::max(rowSeconds, 1e-6))));
-    next = end;
-    this->UpdateProgress(double(next) / double(total));
+    this->UpdateProgress(double(std::min(total, next.load())) / double(total));
   }
   this->LastClosedFormPixels = closedFormPixels;
   this->LastExhaustedPixels = exhaustedPixels;

@@ -44,7 +44,7 @@
  * light's VTK lighting that reaches it, V times the cookie (not the noise) times the medium's
  * transmittance along the light leg, exp(-sigma_t times its optical depth), and the volume's
  * (0 where the ray hits no surface). Pixels run in parallel with vtkSMPTools, in batches of
- * rows of about a fifth of a second each: between batches the filter reports its progress
+ * about a fifth of a second each: between batches the filter reports its progress
  * (UpdateProgress, ProgressEvent) and honours AbortExecute (set it, for example from a
  * ProgressEvent observer, and the filter stops within a batch: its output is then incomplete
  * and Update() reports no error). Each pixel's work is bounded (SetMaximumEvaluations).

@@ -59,6 +59,8 @@
 #   tools/measure.sh error-model-add SETTING...  # the same for settings added to the ladder
 #                                      # only (the others keep their training rows)
 #   tools/measure.sh reference-speed   # the float64 reference's time against the pass's frame
+#   tools/measure.sh responsiveness    # the exact finish's stop after 1,000 random changes, the
+#                                      # reference's abort (docs/robustness.md; about 4 min)
 #   tools/measure.sh fixed-cost        # a frame's cost besides its integral, a few random scenes
 #   tools/measure.sh pytest TEST...    # a test, printing what it measured (-s)
 #
@@ -138,6 +140,7 @@ case "$what" in
       "$training/9/random-scenes.csv" "${previous[@]}"
     cmake --build build > /dev/null ;;
   reference-speed) run tests/benchmarks/reference_speed.py "$@" ;;
+  responsiveness) run tests/benchmarks/responsiveness.py "$@" ;;
   fixed-cost) run tests/benchmarks/fixed_cost.py "$@" ;;
   pytest) run -m pytest -p no:cacheprovider -q -s "$@" ;;
   *)

@@ -309,3 +309,11 @@ def test_surface_light_cost_smoke():
     assert result.returncode == 0, result.stderr
     rows = [line for line in result.stdout.splitlines() if line.startswith("| ") and "ms" not in line]
     assert len(rows) == 3 and rows[0].endswith("| 1.00 |")
+
+
+def test_responsiveness_smoke():
+    script = os.path.join(os.path.dirname(BENCHMARK), "responsiveness.py")
+    result = subprocess.run([sys.executable, script, "--changes", "3", "--abort-after", "0.5"],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    assert "3 changes" in result.stdout and "after the abort" in result.stdout
