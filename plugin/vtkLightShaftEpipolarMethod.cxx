@@ -50,6 +50,30 @@ vtkLightShaftEpipolarMethod::vtkLightShaftEpipolarMethod(vtkLightShaftSlabDrawer
 vtkLightShaftEpipolarMethod::~vtkLightShaftEpipolarMethod() = default;
 
 //------------------------------------------------------------------------------
+// No more lines than the target's boundary has pixels, nor samples than two per pixel of its
+// diagonal: beyond, they sample the same pixels again.
+void vtkLightShaftEpipolarMethod::LinesAndSamples(const vtkLightShaftFrame& frame,
+  int& lines,
+  int& samples)
+{
+  const vtkLightShaftParameters& p = frame.Parameters;
+  const int width = frame.Reduced[0];
+  const int height = frame.Reduced[1];
+  lines = std::min(p.EpipolarLines, 2 * (width + height));
+  samples = std::min(p.EpipolarSamples,
+    2 * static_cast<int>(std::ceil(std::sqrt(double(width) * width + double(height) * height))));
+}
+
+long long vtkLightShaftEpipolarMethod::MarchedRays(const vtkLightShaftFrame& frame)
+{
+  int lines;
+  int samples;
+  LinesAndSamples(frame, lines, samples);
+  return static_cast<long long>(lines) * samples +
+         static_cast<long long>(frame.Reduced[0]) * frame.Reduced[1];
+}
+
+//------------------------------------------------------------------------------
 vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
   const vtkLightShaftGeometry::LitVolume& lit,
   vtkLightShaftInScatterTarget& target)
@@ -65,11 +89,9 @@ vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
   // The lines through the light's image over the in-scatter target.
   const int width = frame.Reduced[0];
   const int height = frame.Reduced[1];
-  // No more lines than the target's boundary has pixels, nor samples than two per pixel of its
-  // diagonal: beyond, they sample the same pixels again.
-  const int lines = std::min(p.EpipolarLines, 2 * (width + height));
-  const int samples = std::min(p.EpipolarSamples,
-    2 * static_cast<int>(std::ceil(std::sqrt(double(width) * width + double(height) * height))));
+  int lines;
+  int samples;
+  LinesAndSamples(frame, lines, samples);
   const vtkLightShaftEpipolar::Layout layout = vtkLightShaftEpipolar::ComputeLayout(
     vtkLightShaftEpipolar::ComputeEpipole(frame.Light, frame.Camera, width, height),
     width,

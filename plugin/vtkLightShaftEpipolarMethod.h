@@ -49,6 +49,12 @@ public:
     vtkLightShaftInScatterTarget& target) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
+  /// The lines and samples per line the frame's layout has at most (the parameters, bounded by
+  /// the in-scatter target's size).
+  static void LinesAndSamples(const vtkLightShaftFrame& frame, int& lines, int& samples);
+  /// The rays a frame marches at most: every sample of every line and every pixel.
+  static long long MarchedRays(const vtkLightShaftFrame& frame);
+
 private:
   void UploadEnds(vtkLightShaftFrame& frame, const vtkLightShaftEpipolar::Layout& layout);
   static void SetLayoutUniforms(vtkShaderProgram* program,

@@ -77,6 +77,7 @@ struct vtkLightShaftParameters
   bool ProgressiveRefinement{};
   int RefinementFrames{};
   bool ExactFinish{};
+  bool SplitLongFrames{}; ///< (with ProgressiveRefinement)
   double TimeBudget{};
   bool UseAllocatedRenderTime{};
   double TargetError{}; ///< 0: off; else the SLICES parameters above are the ladder's choice
@@ -239,8 +240,13 @@ struct vtkLightShaftFrame
   /// a budget marches a RefinementSplit-th of its steps per estimate where one frame of them
   /// would overrun the budget, and refinement shows the moving picture until they add up to
   /// one, then each complete group's (vtkLightShaftPass::Internals::SplitStillSetting). 1: not
-  /// split.
+  /// split. A setting whose frame would integrate more than
+  /// vtkLightShaftGeometry::FrameSegmentAllowance segments is split so too, every frame, moving
+  /// or still (SplitLongFrames): the methods then march a SampleShare-th of their samples.
   int RefinementSplit = 1;
+  /// The divisor of the methods' samples (steps, slabs), after the segment budget: a long
+  /// frame's split (RefinementSplit); 1 otherwise (a budget's split divides NumberOfSteps).
+  int SampleShare = 1;
 
   /// The method whose slab program the frame readied (the frame report's GetShaderVariant names
   /// it).

@@ -239,6 +239,12 @@ int AffordableLattice(int requested, int slabs, int lights = 1);
 /// ).
 constexpr long long SegmentBudget = 1LL << 30;
 
+/// Segments one frame integrates at most where a setting's work is spread over frames
+/// (vtkLightShaftPass::SplitLongFrames, with progressive refinement): an eighth of
+/// SegmentBudget, about 1-2 s a frame here (7-11 ns a segment with four lights:
+/// docs/robustness.md).
+constexpr long long FrameSegmentAllowance = SegmentBudget / 8;
+
 /// The steps or slabs per pixel that `pixels` in-scatter pixels of one of `lights` lights can
 /// afford within SegmentBudget: `requested`, or fewer (at least 1).
 int AffordableSamples(int requested, long long pixels, int lights = 1);

@@ -93,8 +93,10 @@ std::string vtkLightShaftMethod::SharedBy(const vtkLightShaftFrame& frame)
 //------------------------------------------------------------------------------
 int vtkLightShaftMethod::StepsWithinBudget(vtkLightShaftFrame& frame, long long rays)
 {
-  const int steps =
-    this->SamplesWithinBudget(frame, "NumberOfSteps", frame.Parameters.NumberOfSteps, rays);
+  // (A long frame's share of them: vtkLightShaftFrame::SampleShare.)
+  const int steps = std::max(1,
+    this->SamplesWithinBudget(frame, "NumberOfSteps", frame.Parameters.NumberOfSteps, rays) /
+      frame.SampleShare);
   int& recorded = frame.Statistics.NumberOfSteps;
   recorded = recorded > 0 ? std::min(recorded, steps) : steps;
   return steps;

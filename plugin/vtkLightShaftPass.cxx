@@ -685,6 +685,7 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
   p.ProgressiveRefinement = self.ProgressiveRefinement;
   p.RefinementFrames = self.RefinementFrames;
   p.ExactFinish = self.ExactFinish;
+  p.SplitLongFrames = self.SplitLongFrames;
   p.TimeBudget = self.TimeBudget;
   p.UseAllocatedRenderTime = self.UseAllocatedRenderTime;
   return p;
@@ -973,6 +974,7 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ProgressiveRefinement: " << this->ProgressiveRefinement << "\n";
   os << indent << "RefinementFrames: " << this->RefinementFrames << "\n";
   os << indent << "ExactFinish: " << this->ExactFinish << "\n";
+  os << indent << "SplitLongFrames: " << this->SplitLongFrames << "\n";
   os << indent << "TimeBudget: " << this->TimeBudget << "\n";
   os << indent << "UseAllocatedRenderTime: " << this->UseAllocatedRenderTime << "\n";
   os << indent << "BlurRadius: " << this->BlurRadius << "\n";

@@ -451,6 +451,26 @@ public:
 
   ///@{
   /**
+   * Spread a long frame's work over frames (with ProgressiveRefinement): where the setting's
+   * in-scatter would integrate more than 2^27 segments in a frame (a step of a march or a slab
+   * across a pixel; about 1-2 s a frame on a CPU's llvmpipe), RAY_MARCH, SLICES and EPIPOLAR
+   * march a power-of-two share of its steps or slabs per frame, the fewest shares that fit
+   * (one step or slab each at least), moving or still; refinement accumulates a group of
+   * shares into one frame of the setting (each share looks up the shadow, cookie and noise at
+   * its own part of the longer pieces), and the frame report's GetRefinementSplit() says how
+   * many shares a frame's work was split into. Through a medium from data or a volume and
+   * behind translucent surfaces in view, which a piece samples once, a group is coarser than
+   * one frame of the setting (refinement's shifted pieces still converge). LIGHT_VOLUME,
+   * RADIAL_BLUR and ANALYTIC are not split. Off, or with ProgressiveRefinement off: every frame
+   * computes the whole setting (a batch render that wants it in one frame). Default is on.
+   */
+  vtkSetMacro(SplitLongFrames, bool);
+  vtkGetMacro(SplitLongFrames, bool);
+  vtkBooleanMacro(SplitLongFrames, bool);
+  ///@}
+
+  ///@{
+  /**
    * Frame budget in seconds, in [0, 3600] (0: off): each frame renders the most accurate
    * setting of the error model's ladder that a cost model, learnt from the frames rendered
    * under a budget, predicts will fit it (at full resolution if any fits, else half, else
@@ -531,6 +551,7 @@ protected:
   bool ProgressiveRefinement = false;
   int RefinementFrames = 16;
   bool ExactFinish = false;
+  bool SplitLongFrames = true;
   double TimeBudget = 0.0;
   bool UseAllocatedRenderTime = true;
 

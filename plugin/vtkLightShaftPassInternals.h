@@ -163,6 +163,7 @@ public:
   /// A still view after frames under a budget: a ray march that would overrun the budget's
   /// frame split among estimates (vtkLightShaftPassSampling.cxx).
   void SplitStillSetting(vtkLightShaftFrame& frame);
+  void SplitLongFrame(vtkLightShaftFrame& frame);
   /// The frame's refinement and exact-finish read-outs.
   void PublishRefinement(vtkLightShaftFrame& frame);
   /// A measured frame: `shafts` seconds of in-scatter of `total` (the cost model learns).

@@ -6,6 +6,7 @@
 #include "vtkLightShaftPassInternals.h"
 
 #include "vtkLightShaftCostModel.h"
+#include "vtkLightShaftEpipolarMethod.h"
 #include "vtkLightShaftErrorModel.h"
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftInScatter.h"
@@ -303,12 +304,17 @@ void vtkLightShaftPass::Internals::SplitStillSetting(vtkLightShaftFrame& frame)
   const int setting = frame.Statistics.ErrorModelSetting;
   const double budget = this->BudgetOfChoice;
   frame.RefinementSplit = 1;
-  if (!frame.ViewStill || !p.ProgressiveRefinement || !this->HasMovingChoice ||
-      frame.Statistics.TimeBudget > 0.0 || setting < 0 || !(budget > 0.0) ||
-      p.Method != vtkLightShaftPass::RAY_MARCH || p.DownsampleFactor != 1 || frame.Density ||
-      this->Medium->GetDensityVolume() ||
+  frame.SampleShare = 1;
+  if (!p.ProgressiveRefinement)
+  {
+    return;
+  }
+  if (!frame.ViewStill || !this->HasMovingChoice || frame.Statistics.TimeBudget > 0.0 ||
+      setting < 0 || !(budget > 0.0) || p.Method != vtkLightShaftPass::RAY_MARCH ||
+      p.DownsampleFactor != 1 || frame.Density || this->Medium->GetDensityVolume() ||
       (p.CameraLayers > 0 && !vtkLightShaftInScatter::TranslucentProps(frame).empty()))
   {
+    this->SplitLongFrame(frame);
     return;
   }
   const int lit = static_cast<int>(std::count_if(this->Features.begin(),
@@ -326,6 +332,55 @@ void vtkLightShaftPass::Internals::SplitStillSetting(vtkLightShaftFrame& frame)
   }
   p.NumberOfSteps /= split;
   frame.RefinementSplit = split;
+}
+
+//------------------------------------------------------------------------------
+// No setting stalls a frame: where one frame of the setting would integrate more than
+// FrameSegmentAllowance segments (after the segment budget), RAY_MARCH, SLICES and EPIPOLAR
+// march a power-of-two share of its samples every frame, moving or still, the fewest shares
+// that fit (down to one sample a share: here the frame's time, not the still picture's, is
+// what matters); a group of shares samples as one frame
+// of it, as a budget's split does (vtkLightShaftRefinement::Begin). The methods divide their
+// samples (frame.SampleShare); SLICES keeps the whole setting's lattice. Also through a medium
+// from data or a volume and behind translucent surfaces in view, which a piece samples once
+// (at its midpoint, or as its mean by length): there a group is coarser than one frame of the
+// setting, and the view stays responsive; refinement's shifted pieces still converge.
+void vtkLightShaftPass::Internals::SplitLongFrame(vtkLightShaftFrame& frame)
+{
+  const vtkLightShaftParameters& p = frame.Parameters;
+  const int lights = std::max(frame.RadiatingLights, 1);
+  if (!p.SplitLongFrames || frame.RadiatingLights == 0)
+  {
+    return;
+  }
+  const long long pixels = static_cast<long long>(frame.Reduced[0]) * frame.Reduced[1];
+  int requested = 0;
+  long long rays = pixels;
+  switch (p.Method)
+  {
+    case vtkLightShaftPass::RAY_MARCH:
+      requested = p.NumberOfSteps;
+      break;
+    case vtkLightShaftPass::SLICES:
+      // (An automatic count is at most its maximum.)
+      requested = p.AutomaticSliceCount ? p.MaximumNumberOfSlices : p.NumberOfSlices;
+      break;
+    case vtkLightShaftPass::EPIPOLAR:
+      requested = p.NumberOfSteps;
+      rays = vtkLightShaftEpipolarMethod::MarchedRays(frame);
+      break;
+    default:
+      return;
+  }
+  const long long whole = vtkLightShaftGeometry::AffordableSamples(requested, rays, lights);
+  const long long allowance = vtkLightShaftGeometry::FrameSegmentAllowance / lights;
+  int split = 1;
+  while ((whole / split) * rays > allowance && whole / (2 * split) >= 1)
+  {
+    split *= 2;
+  }
+  frame.RefinementSplit = split;
+  frame.SampleShare = split;
 }
 
 //------------------------------------------------------------------------------

@@ -182,7 +182,10 @@ void vtkLightShaftRefinement::Begin(vtkLightShaftFrame& frame, Signature&& signa
   }; // 1 / g^i, g^5 = g + 1
   double whole = 0.0;
   frame.SamplingRotation = std::modf(n * alpha[0], &whole) / split;
-  frame.LookupFraction = (BitReversed(part, split) + std::modf(0.5 + n * alpha[1], &whole)) / split;
+  // (The group's first estimate looks up the middle part: shown alone, as a long frame's moving
+  // frame is, its lookups are at the pieces' middles.)
+  const int middleFirst = (BitReversed(part, split) + split / 2) % split;
+  frame.LookupFraction = (middleFirst + std::modf(0.5 + n * alpha[1], &whole)) / split;
   frame.ShadowMapOffset[0] = std::modf(0.5 + n * alpha[2], &whole) - 0.5;
   frame.ShadowMapOffset[1] = std::modf(0.5 + n * alpha[3], &whole) - 0.5;
   frame.Unfiltered = on && this->Estimates > 0;

@@ -85,9 +85,10 @@ vtkTextureObject* vtkLightShaftSlicesMethod::Render(vtkLightShaftFrame& frame,
   vtkLightShaftInScatterTarget& target)
 {
   const vtkLightShaftParameters& p = frame.Parameters;
-  const int slices = this->SamplesWithinBudget(frame,
+  const int whole = this->SamplesWithinBudget(frame,
     p.AutomaticSliceCount ? "The automatic slice count" : "NumberOfSlices",
     this->CountSlices(frame, lit));
+  const int slices = std::max(1, whole / frame.SampleShare); // (a long frame's share)
   const bool jitter = p.Jitter;
   this->Footprints =
     vtkLightShaftGeometry::ComputeSlabFootprints(lit, frame.Camera, slices, jitter);
@@ -95,7 +96,9 @@ vtkTextureObject* vtkLightShaftSlicesMethod::Render(vtkLightShaftFrame& frame,
   {
     return nullptr;
   }
-  const int lattice = this->LatticeWithinBudget(frame, static_cast<int>(this->Footprints.size()));
+  // A long frame's share keeps the whole setting's lattice (its slabs and the ones it leaves).
+  const int lattice =
+    this->LatticeWithinBudget(frame, static_cast<int>(this->Footprints.size()) + whole - slices);
   frame.Statistics.LatticeResolution = lattice;
 
   // Shadow map of the casters (none when nothing can shadow).

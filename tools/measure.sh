@@ -61,6 +61,8 @@
 #   tools/measure.sh reference-speed   # the float64 reference's time against the pass's frame
 #   tools/measure.sh responsiveness    # the exact finish's stop after 1,000 random changes, the
 #                                      # reference's abort (docs/robustness.md; about 4 min)
+#   tools/measure.sh frame-bound       # four spotlights at each method's sampling maxima: the
+#                                      # whole frame, and split among frames (docs/robustness.md)
 #   tools/measure.sh fixed-cost        # a frame's cost besides its integral, a few random scenes
 #   tools/measure.sh pytest TEST...    # a test, printing what it measured (-s)
 #
@@ -141,6 +143,7 @@ case "$what" in
     cmake --build build > /dev/null ;;
   reference-speed) run tests/benchmarks/reference_speed.py "$@" ;;
   responsiveness) run tests/benchmarks/responsiveness.py "$@" ;;
+  frame-bound) run tests/benchmarks/frame_bound.py "$@" ;;
   fixed-cost) run tests/benchmarks/fixed_cost.py "$@" ;;
   pytest) run -m pytest -p no:cacheprovider -q -s "$@" ;;
   *)

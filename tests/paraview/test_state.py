@@ -28,6 +28,7 @@ VALUES = {
     "ShaftLights": [2, 1],
     "ShadowSurfaces": 1,
     "AttenuateSurfaceLight": 0,
+    "SplitLongFrames": 0,
     "TranslucentShadows": 0,
     "ScatteringCoefficient": [0.06, 0.08, 0.1],
     "AbsorptionCoefficient": [0.01, 0.02, 0.0],

@@ -70,7 +70,7 @@ VECTORS = [("ScatteringCoefficient", 3), ("AbsorptionCoefficient", 3),
            ("NoiseVelocity1", 2), ("NoiseVelocity2", 2)]
 BOOLEANS = ["AttenuateScene", "ShadowSurfaces", "AutomaticSliceCount", "Jitter", "RadialJitter",
             "ProgressiveRefinement", "UseAllocatedRenderTime", "TranslucentShadows", "ExactFinish",
-            "FitMediumToScene", "AttenuateSurfaceLight"]
+            "FitMediumToScene", "AttenuateSurfaceLight", "SplitLongFrames"]
 # Setters that refuse non-finite values (with an error naming the parameter).
 REFUSING = {"Exposure", "Anisotropy", "NoiseAmplitude", "NoiseScale", "Time", "Decay",
             "Density", "Weight", "RadialGuardBand", "ScatteringCoefficient",
@@ -626,7 +626,8 @@ class Fuzzer:
         problems += [f"VTK {kind}: {text.strip()}" for kind, text in VTK_OUTPUT.unexpected()]
         VTK_OUTPUT.messages.clear()
         estimates = self.shafts.GetLastFrame().GetRefinementEstimates()
-        if estimates > self.shafts.GetRefinementFrames() or (
+        split = self.shafts.GetLastFrame().GetRefinementSplit()  # (estimates a frame's share)
+        if estimates > self.shafts.GetRefinementFrames() * split or (
                 estimates and not self.shafts.GetProgressiveRefinement()):
             problems.append(f"{estimates} refinement estimates")
         w, h = self.shafts.GetLastFrame().GetViewportSize()

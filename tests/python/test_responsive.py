@@ -21,6 +21,7 @@ from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkImageData
 
+import lightshaft_reference as ref
 import render_helpers as rh
 from vtk_output import VTK_OUTPUT  # noqa: F401  (fails a test on any VTK message)
 
@@ -265,3 +266,142 @@ def test_render_converged_reports_its_progress():
     assert shares == sorted(shares) and shares[-1] == 1.0
     fraction = shafts.GetLastFrame().GetExactFinishFraction()
     assert fraction == 1.0 or fraction in shares
+
+
+# --- no setting stalls a frame: a long frame's work spread over frames -----------------------
+
+ALLOWANCE = 2 ** 27  # vtkLightShaftGeometry::FrameSegmentAllowance
+# The comparison leaves the filters out (the blur, and RAY_MARCH's interleaving, below): a
+# refined picture is filtered as a whole, not each estimate (docs/refinement-filters.md), so
+# with them the group also differs from a frame by the filters (tools/measure.sh frame-bound).
+BLUR = 0
+MAXIMA = {
+    "slices": dict(Method=vtkLightShaftPass.SLICES, NumberOfSlices=4096, LatticeResolution=256),
+    "ray-march": dict(Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=4096, InterleaveSize=1),
+    "epipolar": dict(Method=vtkLightShaftPass.EPIPOLAR, EpipolarLines=2048,
+                     EpipolarSamples=2048, NumberOfSteps=4096),
+}
+
+
+def spotlights_scene(width=160, height=120, lights=4):
+    renderer, window = rh.make_window(width, height)
+    scenes.sphere_and_floor(renderer, sphere_resolution=64)
+    for k in range(lights - 1):
+        angle = 2.0 * math.pi * k / (lights - 1)
+        scenes.add_spotlight(renderer, (5.0 * math.cos(angle), 6.0, 5.0 * math.sin(angle)),
+                             (0.0, 0.0, 0.0), cone_angle=25.0)
+    return renderer, window
+
+
+def refining_pass(renderer, params, split):
+    shafts = vtkLightShaftPass()
+    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.01, 0.01, 0.01)
+    shafts.SetShadowMapSize(1024)
+    shafts.SetBlurRadius(BLUR)
+    shafts.ProgressiveRefinementOn()
+    shafts.SetRefinementFrames(1)
+    shafts.SetSplitLongFrames(split)
+    for name, value in params.items():
+        getattr(lightshafts.parameter_owner(shafts, name), "Set" + name)(value)
+    renderer.SetPass(shafts)
+    return shafts
+
+
+def frame_segments(shafts, window):
+    """The segments the last frame integrated: its steps or slabs over its rays, per light."""
+    frame = shafts.GetLastFrame()
+    width, height = window.GetSize()
+    factor = frame.GetDownsampleFactor()
+    w, h = -(-width // factor), -(-height // factor)
+    method = frame.GetMethod()
+    if method == vtkLightShaftPass.SLICES:
+        return frame.GetNumberOfSlicesDrawn() * w * h
+    rays = w * h
+    if method == vtkLightShaftPass.EPIPOLAR:
+        lines = min(shafts.GetEpipolarLines(), 2 * (w + h))
+        samples = min(shafts.GetEpipolarSamples(), 2 * math.ceil(math.hypot(w, h)))
+        rays += lines * samples
+    return frame.GetNumberOfSteps() * rays * frame.GetNumberOfUsedLights()
+
+
+@pytest.mark.parametrize("method", list(MAXIMA))
+def test_a_long_frame_is_split_and_its_shares_add_up_to_the_whole_frame(method, vtk_messages):
+    """Four spotlights at a method's sampling maxima (160x120): with SplitLongFrames off a frame
+    is the whole setting (beyond 2^27 segments); on, each frame integrates at most 2^27 and a
+    group of shares is the whole frame's picture within 0.1% (relative RMS)."""
+    vtk_messages.expect("segments in a frame, more than the")  # (the segment budget's cap)
+    vtk_messages.expect("lattice cells in a frame, more than the")
+    renderer, window = spotlights_scene()
+    params = MAXIMA[method]
+    shafts = refining_pass(renderer, params, split=False)
+    window.Render()
+    assert shafts.GetLastFrame().GetRefinementSplit() == 1
+    assert frame_segments(shafts, window) > ALLOWANCE
+    whole = rh.in_scatter(shafts)
+    shafts = refining_pass(renderer, params, split=True)
+    splits = []
+    for _ in range(64):
+        window.Render()
+        frame = shafts.GetLastFrame()
+        splits.append(frame.GetRefinementSplit())
+        assert frame_segments(shafts, window) <= ALLOWANCE
+        if frame.GetRefinementConverged():
+            break
+    assert frame.GetRefinementConverged()
+    split = splits[0]
+    assert split >= 2 and all(s == split for s in splits) and len(splits) == split
+    error, _ = ref.relative_rms_error(rh.in_scatter(shafts), whole)
+    print(f"{method}: split into {split}, the group {100 * error:.4f}% from the whole frame")
+    assert error < 1e-3
+
+
+@pytest.mark.sweep
+def test_random_changes_between_still_frames_keep_every_frame_within_the_allowance(
+        vtk_messages):
+    """Seeded: 24 random changes, as a GUI's sliders make them (a method and its sampling at
+    their bounds, the shadow map, downsampling, the window's size, the camera, the medium, one
+    light or four), each followed by two frames of the still view, with ProgressiveRefinement
+    and ExactFinish on: no frame integrates more than 2^27 segments (its time follows: about
+    1-2 s here at most, tools/measure.sh frame-bound), and no frame stops the finish slowly."""
+    vtk_messages.expect("segments in a frame, more than the")
+    vtk_messages.expect("lattice cells in a frame, more than the")
+    renderer, window = spotlights_scene(lights=4)
+    lights = renderer.GetLights()
+    shafts = refining_pass(renderer, {}, split=True)
+    shafts.ExactFinishOn()
+    rng = random.Random(7)
+    for change in range(24):
+        choice = rng.choice(["method", "method", "sampling", "map", "downsample", "size",
+                             "camera", "medium", "lights"])
+        if choice == "method":
+            shafts.SetMethod(rng.choice([vtkLightShaftPass.SLICES, vtkLightShaftPass.RAY_MARCH,
+                                         vtkLightShaftPass.EPIPOLAR]))
+        elif choice == "sampling":
+            shafts.SetNumberOfSlices(rng.choice([1, 64, 4096]))
+            shafts.SetLatticeResolution(rng.choice([0, 256]))
+            shafts.SetNumberOfSteps(rng.choice([1, 64, 4096]))
+            shafts.SetEpipolarLines(rng.choice([4, 2048]))
+            shafts.SetEpipolarSamples(rng.choice([2, 2048]))
+            shafts.SetJitter(rng.random() < 0.5)
+        elif choice == "map":
+            shafts.SetShadowMapSize(rng.choice([16, 1024, 2048]))
+        elif choice == "downsample":
+            shafts.SetDownsampleFactor(rng.choice([1, 2]))
+        elif choice == "size":
+            window.SetSize(rng.choice([(160, 120), (200, 150), (1, 1)]))
+        elif choice == "camera":
+            renderer.GetActiveCamera().Azimuth(rng.uniform(-20.0, 20.0))
+        elif choice == "medium":
+            shafts.GetMedium().SetScatteringCoefficient(rng.choice([1e-9, 0.05, 10.0]))
+        else:
+            lights.InitTraversal()
+            for k in range(lights.GetNumberOfItems()):
+                light = lights.GetNextItem()
+                light.SetSwitch(k == 0 or rng.random() < 0.5)
+        for _ in range(2):
+            window.Render()
+            segments = frame_segments(shafts, window)
+            frame = shafts.GetLastFrame()
+            assert segments <= ALLOWANCE, (change, choice, segments)
+            assert frame.GetExactFinishStopTime() < 1.0

@@ -631,6 +631,11 @@ void vtkPVLightShaftsView::SetExactFinish(bool finish)
   this->Impl->Shafts->SetExactFinish(finish);
 }
 
+void vtkPVLightShaftsView::SetSplitLongFrames(bool split)
+{
+  this->Impl->Shafts->SetSplitLongFrames(split);
+}
+
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetAttenuateScene(bool attenuate)
 {

@@ -195,7 +195,8 @@ public:
   ///@{
   /**
    * Interaction (forwarded to vtkLightShaftPass: SetTimeBudget, SetUseAllocatedRenderTime,
-   * SetProgressiveRefinement, SetRefinementFrames, SetExactFinish; same ranges and defaults,
+   * SetProgressiveRefinement, SetRefinementFrames, SetExactFinish, SetSplitLongFrames; same
+   * ranges and defaults,
    * except that the
    * view's ProgressiveRefinement property is on by default: the GUI's pqLightShaftsRefinement
    * renders a still view until it converges).
@@ -205,6 +206,7 @@ public:
   void SetProgressiveRefinement(bool refine);
   void SetRefinementFrames(int frames);
   void SetExactFinish(bool finish);
+  void SetSplitLongFrames(bool split);
   ///@}
 
   ///@{

@@ -1,0 +1,113 @@
+"""No setting stalls a frame: the README's sphere scene with four spotlights at each method's
+sampling maxima (SLICES: 4096 slices, lattice 256; RAY_MARCH: 4096 steps; EPIPOLAR: 2048 lines
+x 2048 samples; and, not split, LIGHT_VOLUME 1024 and RADIAL_BLUR 1024), a 4096² shadow map, no budget, ProgressiveRefinement on with one group of
+estimates (RefinementFrames 1):
+
+- the whole setting in one frame (SplitLongFrames off): its time and its in-scatter;
+- the same setting split among frames (SplitLongFrames on, the default): every frame's time
+  (the first, after the change, and the rest), the number of shares, and the in-scatter once
+  refinement has added them up, against the whole frame's (relative RMS, pixels above 1% of
+  the peak).
+
+    tools/measure.sh frame-bound [--size 640 480] [--methods slices ray-march epipolar]
+"""
+
+import argparse
+import math
+import os
+import sys
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+
+import lightshaft_reference as ref  # noqa: E402
+import progress  # noqa: E402
+import render_helpers as rh  # noqa: E402
+from lightshafts import parameter_owner, scenes, vtkLightShaftPass  # noqa: E402
+
+MAXIMA = {
+    "slices": dict(Method=vtkLightShaftPass.SLICES, NumberOfSlices=4096, LatticeResolution=256),
+    "ray-march": dict(Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=4096),
+    "epipolar": dict(Method=vtkLightShaftPass.EPIPOLAR, EpipolarLines=2048, EpipolarSamples=2048),
+    # Not split (SplitLongFrames leaves them whole): measured for the record.
+    "light-volume": dict(Method=vtkLightShaftPass.LIGHT_VOLUME, LightVolumeResolution=1024),
+    "radial-blur": dict(Method=vtkLightShaftPass.RADIAL_BLUR, RadialSamples=1024),
+}
+
+
+def four_spot_scene(width, height, lights=4):
+    renderer, window = rh.make_window(width, height)
+    info = scenes.sphere_and_floor(renderer)
+    for k in range(lights - 1):
+        angle = 2.0 * math.pi * k / (lights - 1)
+        scenes.add_spotlight(renderer, (5.0 * math.cos(angle), 6.0, 5.0 * math.sin(angle)),
+                             (0.0, 0.0, 0.0), cone_angle=25.0)
+    return renderer, window, info
+
+
+def configured(renderer, params, split):
+    shafts = vtkLightShaftPass()
+    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
+    shafts.GetMedium().SetAbsorptionCoefficient(0.01, 0.01, 0.01)
+    shafts.SetShadowMapSize(4096)
+    shafts.ProgressiveRefinementOn()
+    shafts.SetRefinementFrames(1)
+    shafts.SetSplitLongFrames(split)
+    for name, value in params.items():
+        getattr(parameter_owner(shafts, name), "Set" + name)(value)
+    renderer.SetPass(shafts)
+    return shafts
+
+
+def timed_render(window):
+    start = time.perf_counter()
+    window.Render()
+    window.WaitForCompletion()
+    return time.perf_counter() - start
+
+
+def measure(renderer, window, params):
+    """(the whole frame's time, the split frames' times, shares, relative RMS)."""
+    shafts = configured(renderer, params, split=False)
+    timed_render(window)  # (the first frame readies shaders and maps)
+    whole_time = timed_render(window)
+    whole = rh.in_scatter(shafts)
+    shafts = configured(renderer, params, split=True)
+    timed_render(window)  # (shaders readied)
+    # A change, as a slider's: the medium set again (a new modification time, the same values),
+    # so that refinement starts again from the frame after it.
+    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.0301)
+    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
+    times = []
+    for _ in range(256):
+        times.append(timed_render(window))
+        if shafts.GetLastFrame().GetRefinementConverged():
+            break
+    split = shafts.GetLastFrame().GetRefinementSplit()
+    error, _ = ref.relative_rms_error(rh.in_scatter(shafts), whole)
+    renderer.SetPass(None)
+    return whole_time, times, split, error
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--size", type=int, nargs=2, default=(640, 480))
+    parser.add_argument("--methods", nargs="+", default=list(MAXIMA), choices=list(MAXIMA))
+    parser.add_argument("--lights", type=int, default=4)
+    args = parser.parse_args()
+    renderer, window, _ = four_spot_scene(*args.size, lights=args.lights)
+    width, height = args.size
+    print(f"sphere scene, {args.lights} spotlights, {width}x{height}, 4096² shadow map")
+    print("| setting | whole frame (s) | split into | slowest split frame (s) | frames | "
+          "split after refinement vs whole |")
+    print("|---|---:|---:|---:|---:|---:|")
+    for name in progress.steps(args.methods, "methods"):
+        params = MAXIMA[name]
+        whole_time, times, split, error = measure(renderer, window, params)
+        setting = ", ".join(f"{k} {v}" for k, v in params.items() if k != "Method")
+        print(f"| {name}: {setting} | {whole_time:.2f} | {split} | {max(times):.2f} | "
+              f"{len(times)} | {100 * error:.3f}% |", flush=True)
+
+
+if __name__ == "__main__":
+    main()
