@@ -147,6 +147,7 @@ vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
     SetLayoutUniforms(program, layout, step);
     program->SetUniformi("numberOfSteps", steps);
     program->SetUniformf("samplingRotation", static_cast<float>(frame.SamplingRotation));
+    program->SetUniformf("sampleShare", static_cast<float>(frame.RefinementSplit));
     for (int i = 0; i < 6; ++i)
     {
       program->SetUniformi(samplers[i], textures[i]->GetTextureUnit());

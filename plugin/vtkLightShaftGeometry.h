@@ -240,10 +240,10 @@ int AffordableLattice(int requested, int slabs, int lights = 1);
 constexpr long long SegmentBudget = 1LL << 30;
 
 /// Segments one frame integrates at most where a setting's work is spread over frames
-/// (vtkLightShaftPass::SplitLongFrames, with progressive refinement): an eighth of
-/// SegmentBudget, about 1-2 s a frame here (7-11 ns a segment with four lights:
-/// docs/robustness.md).
-constexpr long long FrameSegmentAllowance = SegmentBudget / 8;
+/// (vtkLightShaftPass::SplitLongFrames, with progressive refinement): a sixteenth of
+/// SegmentBudget, at most about 2 s a frame here (up to 25 ns a segment: RAY_MARCH with four
+/// spotlights and 4096² maps at 640x480; docs/robustness.md).
+constexpr long long FrameSegmentAllowance = SegmentBudget / 16;
 
 /// The steps or slabs per pixel that `pixels` in-scatter pixels of one of `lights` lights can
 /// afford within SegmentBudget: `requested`, or fewer (at least 1).

@@ -452,8 +452,8 @@ public:
   ///@{
   /**
    * Spread a long frame's work over frames (with ProgressiveRefinement): where the setting's
-   * in-scatter would integrate more than 2^27 segments in a frame (a step of a march or a slab
-   * across a pixel; about 1-2 s a frame on a CPU's llvmpipe), RAY_MARCH, SLICES and EPIPOLAR
+   * in-scatter would integrate more than 2^26 segments in a frame (a step of a march or a slab
+   * across a pixel; at most about 2 s a frame on a CPU's llvmpipe), RAY_MARCH, SLICES and EPIPOLAR
    * march a power-of-two share of its steps or slabs per frame, the fewest shares that fit
    * (one step or slab each at least), moving or still; refinement accumulates a group of
    * shares into one frame of the setting (each share looks up the shadow, cookie and noise at

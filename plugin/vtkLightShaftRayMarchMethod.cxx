@@ -52,6 +52,7 @@ vtkTextureObject* vtkLightShaftRayMarchMethod::Render(vtkLightShaftFrame& frame,
   program->SetUniformi("numberOfSteps", steps);
   program->SetUniformi("interleaveSize", p.InterleaveSize);
   program->SetUniformf("samplingRotation", static_cast<float>(frame.SamplingRotation));
+  program->SetUniformf("sampleShare", static_cast<float>(frame.RefinementSplit));
 
   target.Bind();
   vtkLightShaftSlabDrawer::Slabs slabs =

@@ -27,6 +27,13 @@ uniform float slabStart; // the lit depth range
 uniform float slabEnd;
 uniform int numberOfSteps;
 uniform float samplingRotation; // in [0, 1): progressive refinement's shift of the steps
+uniform float sampleShare; // estimates a split setting's frame is shared among (1: whole)
+
+// The march's offset: the whole setting's shifted steps, a share's on every sampleShare-th.
+float epipolarOffset()
+{
+  return (1.0 - samplingRotation * sampleShare) / sampleShare;
+}
 
 uniform int epipolarLines;
 uniform int epipolarSamples;
@@ -69,7 +76,7 @@ vec3 epipolarMarch(vec2 pixel, float depth)
   {
     return vec3(0.0);
   }
-  return lightShaftMarch(ray, numberOfSteps, 1.0 - samplingRotation);
+  return lightShaftMarch(ray, numberOfSteps, epipolarOffset());
 }
 
 // Stage 0: where sample `sampleIndex` of line `line` lies (kept inside the outer pixel
@@ -323,6 +330,6 @@ void main()
   {
     discard;
   }
-  gl_FragData[0] = vec4(lightShaftMarch(ray, numberOfSteps, 1.0 - samplingRotation), 0.0);
+  gl_FragData[0] = vec4(lightShaftMarch(ray, numberOfSteps, epipolarOffset()), 0.0);
 #endif
 }

@@ -7,7 +7,9 @@ estimates (RefinementFrames 1):
 - the same setting split among frames (SplitLongFrames on, the default): every frame's time
   (the first, after the change, and the rest), the number of shares, and the in-scatter once
   refinement has added them up, against the whole frame's (relative RMS, pixels above 1% of
-  the peak).
+  the peak), with the default filters and without them (BlurRadius 0, InterleaveSize 1: a
+  refined picture is filtered as a whole, not each estimate, so with them the two pictures
+  also differ by their filters).
 
     tools/measure.sh frame-bound [--size 640 480] [--methods slices ray-march epipolar]
 """
@@ -28,7 +30,8 @@ from lightshafts import parameter_owner, scenes, vtkLightShaftPass  # noqa: E402
 MAXIMA = {
     "slices": dict(Method=vtkLightShaftPass.SLICES, NumberOfSlices=4096, LatticeResolution=256),
     "ray-march": dict(Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=4096),
-    "epipolar": dict(Method=vtkLightShaftPass.EPIPOLAR, EpipolarLines=2048, EpipolarSamples=2048),
+    "epipolar": dict(Method=vtkLightShaftPass.EPIPOLAR, EpipolarLines=2048, EpipolarSamples=2048,
+                     NumberOfSteps=4096),
     # Not split (SplitLongFrames leaves them whole): measured for the record.
     "light-volume": dict(Method=vtkLightShaftPass.LIGHT_VOLUME, LightVolumeResolution=1024),
     "radial-blur": dict(Method=vtkLightShaftPass.RADIAL_BLUR, RadialSamples=1024),
@@ -45,7 +48,7 @@ def four_spot_scene(width, height, lights=4):
     return renderer, window, info
 
 
-def configured(renderer, params, split):
+def configured(renderer, params, split, filters=True):
     shafts = vtkLightShaftPass()
     shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
     shafts.GetMedium().SetAbsorptionCoefficient(0.01, 0.01, 0.01)
@@ -53,10 +56,20 @@ def configured(renderer, params, split):
     shafts.ProgressiveRefinementOn()
     shafts.SetRefinementFrames(1)
     shafts.SetSplitLongFrames(split)
+    if not filters:
+        shafts.SetBlurRadius(0)
+        shafts.SetInterleaveSize(1)
     for name, value in params.items():
         getattr(parameter_owner(shafts, name), "Set" + name)(value)
     renderer.SetPass(shafts)
     return shafts
+
+
+def change(shafts):
+    """A change, as a slider's: the medium set again (a new modification time, the same values),
+    so that the next frame computes the setting again."""
+    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.0301)
+    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
 
 
 def timed_render(window):
@@ -66,27 +79,32 @@ def timed_render(window):
     return time.perf_counter() - start
 
 
-def measure(renderer, window, params):
-    """(the whole frame's time, the split frames' times, shares, relative RMS)."""
-    shafts = configured(renderer, params, split=False)
+def measure(renderer, window, params, filters=True, reference=None):
+    """(the whole frame's time, the split frames' times, shares, relative RMS, and against
+    `reference` (when given) the whole frame's and the refined picture's relative RMS)."""
+    shafts = configured(renderer, params, split=False, filters=filters)
     timed_render(window)  # (the first frame readies shaders and maps)
+    change(shafts)
     whole_time = timed_render(window)
     whole = rh.in_scatter(shafts)
-    shafts = configured(renderer, params, split=True)
+    shafts = configured(renderer, params, split=True, filters=filters)
     timed_render(window)  # (shaders readied)
-    # A change, as a slider's: the medium set again (a new modification time, the same values),
-    # so that refinement starts again from the frame after it.
-    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.0301)
-    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
+    change(shafts)
     times = []
     for _ in range(256):
         times.append(timed_render(window))
         if shafts.GetLastFrame().GetRefinementConverged():
             break
     split = shafts.GetLastFrame().GetRefinementSplit()
-    error, _ = ref.relative_rms_error(rh.in_scatter(shafts), whole)
+    print("  frames (s):", " ".join(f"{t:.2f}" for t in times), file=sys.stderr)
+    refined = rh.in_scatter(shafts)
+    error, _ = ref.relative_rms_error(refined, whole)
+    against = None
+    if reference is not None:
+        against = (ref.relative_rms_error(whole, reference)[0],
+                   ref.relative_rms_error(refined, reference)[0])
     renderer.SetPass(None)
-    return whole_time, times, split, error
+    return whole_time, times, split, error, against
 
 
 def main():
@@ -94,19 +112,34 @@ def main():
     parser.add_argument("--size", type=int, nargs=2, default=(640, 480))
     parser.add_argument("--methods", nargs="+", default=list(MAXIMA), choices=list(MAXIMA))
     parser.add_argument("--lights", type=int, default=4)
+    parser.add_argument("--reference", action="store_true",
+                        help="also the whole frame's and the refined picture's error against "
+                             "the float64 reference (minutes)")
     args = parser.parse_args()
     renderer, window, _ = four_spot_scene(*args.size, lights=args.lights)
+    reference = None
+    if args.reference:
+        shafts = configured(renderer, {}, split=False)
+        window.Render()
+        reference = rh.scene_reference(renderer, shafts)
+        renderer.SetPass(None)
     width, height = args.size
     print(f"sphere scene, {args.lights} spotlights, {width}x{height}, 4096² shadow map")
-    print("| setting | whole frame (s) | split into | slowest split frame (s) | frames | "
-          "split after refinement vs whole |")
+    print("| setting | whole frame (s) | split into | slowest split frame (s) | "
+          "refined vs whole | the same without filters |")
     print("|---|---:|---:|---:|---:|---:|")
     for name in progress.steps(args.methods, "methods"):
         params = MAXIMA[name]
-        whole_time, times, split, error = measure(renderer, window, params)
+        whole_time, times, split, error, against = measure(renderer, window, params,
+                                                           reference=reference)
+        plain = measure(renderer, window, params, filters=False) if split > 1 else None
         setting = ", ".join(f"{k} {v}" for k, v in params.items() if k != "Method")
+        unfiltered = f"{100 * plain[3]:.3f}%" if plain else "(not split)"
         print(f"| {name}: {setting} | {whole_time:.2f} | {split} | {max(times):.2f} | "
-              f"{len(times)} | {100 * error:.3f}% |", flush=True)
+              f"{100 * error:.3f}% | {unfiltered} |", flush=True)
+        if against:
+            print(f"  against the reference: the whole frame {100 * against[0]:.3f}%, "
+                  f"refined {100 * against[1]:.3f}%", flush=True)
 
 
 if __name__ == "__main__":

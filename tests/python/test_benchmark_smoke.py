@@ -317,3 +317,13 @@ def test_responsiveness_smoke():
                             capture_output=True, text=True, timeout=600)
     assert result.returncode == 0, result.stderr
     assert "3 changes" in result.stdout and "after the abort" in result.stdout
+
+
+def test_frame_bound_smoke():
+    script = os.path.join(os.path.dirname(BENCHMARK), "frame_bound.py")
+    result = subprocess.run([sys.executable, script, "--size", "32", "24", "--lights", "1",
+                             "--methods", "ray-march"],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    rows = [line for line in result.stdout.splitlines() if line.startswith("| ray-march")]
+    assert len(rows) == 1

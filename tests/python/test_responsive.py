@@ -270,7 +270,7 @@ def test_render_converged_reports_its_progress():
 
 # --- no setting stalls a frame: a long frame's work spread over frames -----------------------
 
-ALLOWANCE = 2 ** 27  # vtkLightShaftGeometry::FrameSegmentAllowance
+ALLOWANCE = 2 ** 26  # vtkLightShaftGeometry::FrameSegmentAllowance
 # The comparison leaves the filters out (the blur, and RAY_MARCH's interleaving, below): a
 # refined picture is filtered as a whole, not each estimate (docs/refinement-filters.md), so
 # with them the group also differs from a frame by the filters (tools/measure.sh frame-bound).
@@ -328,7 +328,7 @@ def frame_segments(shafts, window):
 @pytest.mark.parametrize("method", list(MAXIMA))
 def test_a_long_frame_is_split_and_its_shares_add_up_to_the_whole_frame(method, vtk_messages):
     """Four spotlights at a method's sampling maxima (160x120): with SplitLongFrames off a frame
-    is the whole setting (beyond 2^27 segments); on, each frame integrates at most 2^27 and a
+    is the whole setting (beyond 2^26 segments); on, each frame integrates at most 2^26 and a
     group of shares is the whole frame's picture within 0.1% (relative RMS)."""
     vtk_messages.expect("segments in a frame, more than the")  # (the segment budget's cap)
     vtk_messages.expect("lattice cells in a frame, more than the")
@@ -362,7 +362,7 @@ def test_random_changes_between_still_frames_keep_every_frame_within_the_allowan
     """Seeded: 24 random changes, as a GUI's sliders make them (a method and its sampling at
     their bounds, the shadow map, downsampling, the window's size, the camera, the medium, one
     light or four), each followed by two frames of the still view, with ProgressiveRefinement
-    and ExactFinish on: no frame integrates more than 2^27 segments (its time follows: about
+    and ExactFinish on: no frame integrates more than 2^26 segments (its time follows: about
     1-2 s here at most, tools/measure.sh frame-bound), and no frame stops the finish slowly."""
     vtk_messages.expect("segments in a frame, more than the")
     vtk_messages.expect("lattice cells in a frame, more than the")
