@@ -229,16 +229,20 @@ def test_the_reference_of_a_1080p_frame_shows_progress_and_stops_within_1_s_of_a
     filter_.Update()
     end = time.monotonic()
     assert aborted, "no abort: the frame finished within 2 s"
-    print(f"stopped {end - aborted[0]:.3f} s after the abort, at {seen[-1][1]:.3f} of the frame,"
-          f" {len(seen)} progress events")
     assert end - aborted[0] < 1.0
-    progress = [value for _, value in seen]
+    # (VTK 9.3 and later report 1.0 once the filter returns, aborted or not: the events up to
+    # the abort are the filter's.)
+    progress = [value for t, value in seen if t <= aborted[0]]
     assert len(progress) >= 5
     assert progress == sorted(progress)
+    print(f"stopped {end - aborted[0]:.3f} s after the abort, at {progress[-1]:.3f} of the "
+          f"frame, {len(progress)} progress events")
     assert 0.0 < progress[-1] < 1.0  # stopped part of the way
+    radiance, _ = arrays(filter_)
+    assert not radiance[-1].any()  # the top row was never integrated
     # Each batch is about a fifth of a second: the progress moves several times a second (after
     # the first event, VTK's, which precedes the capture of the scene).
-    times = [t for t, _ in seen[1:]]
+    times = [t for t, _ in seen[1:] if t <= aborted[0]]
     assert max(np.diff(times)) < 1.0
 
 
