@@ -339,17 +339,17 @@ void vtkLightShaftPass::Internals::SplitStillSetting(vtkLightShaftFrame& frame)
 // FrameSegmentAllowance segments (after the segment budget), RAY_MARCH, SLICES and EPIPOLAR
 // march a power-of-two share of its samples every frame, moving or still, the fewest shares
 // that fit (down to one sample a share: here the frame's time, not the still picture's, is
-// what matters); a group of shares samples as one frame
-// of it, as a budget's split does (vtkLightShaftRefinement::Begin). The methods divide their
-// samples (frame.SampleShare); SLICES keeps the whole setting's lattice. Also through a medium
-// from data or a volume and behind translucent surfaces in view, which a piece samples once
-// (at its midpoint, or as its mean by length): there a group is coarser than one frame of the
-// setting, and the view stays responsive; refinement's shifted pieces still converge.
+// what matters); a group of shares samples as one frame of it, as a budget's split does
+// (vtkLightShaftRefinement::Begin). The methods divide their samples (frame.SampleShare); SLICES
+// keeps the whole setting's lattice. Also through a medium from data or a volume and behind
+// translucent surfaces in view, which a piece samples once (at its midpoint, or as its mean by
+// length): there a group is coarser than one frame of the setting, and the view stays responsive;
+// refinement's shifted pieces still converge.
 void vtkLightShaftPass::Internals::SplitLongFrame(vtkLightShaftFrame& frame)
 {
   const vtkLightShaftParameters& p = frame.Parameters;
-  const int lights = std::max(frame.RadiatingLights, 1);
-  if (!p.SplitLongFrames || frame.RadiatingLights == 0)
+  const int lights = frame.RadiatingLights;
+  if (!p.SplitLongFrames || lights == 0)
   {
     return;
   }

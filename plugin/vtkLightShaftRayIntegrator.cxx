@@ -708,10 +708,9 @@ std::vector<Piece> FindLitPieces(const Transmittance& transmittance,
   };
   for (int k = 1; k <= samples; ++k)
   {
-    if (effort.Cancel && effort.Cancel->load(std::memory_order_relaxed))
+    if (effort.CancelRequested())
     {
-      effort.Cancelled = true; // the ray is discarded: what is lit no longer matters
-      return lit;
+      return lit; // the ray is discarded: what is lit no longer matters
     }
     const double u = u0 + (u1 - u0) * k / samples;
     const RGB now = transmittance(origin + toT(u) * dir);

@@ -72,14 +72,19 @@ struct Effort
   bool Exhausted = false;
   bool Cancelled = false;
 
-  /// Whether the ray should stop refining now (and why, recorded).
-  bool Spent()
+  /// Whether the ray is to be discarded now (recorded).
+  bool CancelRequested()
   {
     if (this->Cancel && this->Cancel->load(std::memory_order_relaxed))
     {
       this->Cancelled = true;
     }
-    else if (this->Limit > 0 && this->Evaluations >= this->Limit)
+    return this->Cancelled;
+  }
+  /// Whether the ray should stop refining now (and why, recorded).
+  bool Spent()
+  {
+    if (!this->CancelRequested() && this->Limit > 0 && this->Evaluations >= this->Limit)
     {
       this->Exhausted = true;
     }

@@ -309,7 +309,6 @@ vtkLightShaftReferenceJob::Tally vtkLightShaftReferenceJob::Integrate(vtkIdType 
   Tally tally;
   if (this->Models.empty() || !this->Tracers)
   {
-    tally.Pixels = last - first;
     return tally;
   }
   std::unique_ptr<vtkLightShaftReferenceScene::Tracer> tracer = this->Tracers->Take();
@@ -336,7 +335,6 @@ vtkLightShaftReferenceJob::Tally vtkLightShaftReferenceJob::Integrate(vtkIdType 
         outError[c] += pixelError[c];
       }
     }
-    ++tally.Pixels;
     tally.ClosedFormPixels += closed ? 1 : 0;
     tally.ExhaustedPixels += effort.Exhausted ? 1 : 0;
     tally.MostEvaluations = std::max(tally.MostEvaluations, effort.Evaluations);

@@ -56,7 +56,6 @@ public:
   /// What integrating a range of pixels did.
   struct Tally
   {
-    vtkIdType Pixels = 0;           ///< pixels integrated (fewer than asked: cancelled)
     vtkIdType ClosedFormPixels = 0; ///< of them, where a closed form computed a light's share
     vtkIdType ExhaustedPixels = 0;  ///< of them, where MaximumEvaluations ended the refinement
     long long MostEvaluations = 0;  ///< the most evaluations one pixel spent

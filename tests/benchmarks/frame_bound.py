@@ -1,7 +1,8 @@
 """No setting stalls a frame: the README's sphere scene with four spotlights at each method's
 sampling maxima (SLICES: 4096 slices, lattice 256; RAY_MARCH: 4096 steps; EPIPOLAR: 2048 lines
-x 2048 samples; and, not split, LIGHT_VOLUME 1024 and RADIAL_BLUR 1024), a 4096² shadow map, no budget, ProgressiveRefinement on with one group of
-estimates (RefinementFrames 1):
+x 2048 samples, 4096 steps; and, not split, LIGHT_VOLUME 1024 and RADIAL_BLUR 1024), 4096²
+shadow maps, no budget, ProgressiveRefinement on with one group of estimates
+(RefinementFrames 1; the scene and pass of tests/python/test_responsive.py):
 
 - the whole setting in one frame (SplitLongFrames off): its time and its in-scatter;
 - the same setting split among frames (SplitLongFrames on, the default): every frame's time
@@ -15,7 +16,6 @@ estimates (RefinementFrames 1):
 """
 
 import argparse
-import math
 import os
 import sys
 import time
@@ -25,44 +25,18 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import lightshaft_reference as ref  # noqa: E402
 import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
-from lightshafts import parameter_owner, scenes, vtkLightShaftPass  # noqa: E402
+import test_responsive as slow  # noqa: E402
+from lightshafts import vtkLightShaftPass  # noqa: E402
 
-MAXIMA = {
-    "slices": dict(Method=vtkLightShaftPass.SLICES, NumberOfSlices=4096, LatticeResolution=256),
-    "ray-march": dict(Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=4096),
-    "epipolar": dict(Method=vtkLightShaftPass.EPIPOLAR, EpipolarLines=2048, EpipolarSamples=2048,
-                     NumberOfSteps=4096),
+MAXIMA = dict(slow.MAXIMA, **{
     # Not split (SplitLongFrames leaves them whole): measured for the record.
     "light-volume": dict(Method=vtkLightShaftPass.LIGHT_VOLUME, LightVolumeResolution=1024),
     "radial-blur": dict(Method=vtkLightShaftPass.RADIAL_BLUR, RadialSamples=1024),
-}
-
-
-def four_spot_scene(width, height, lights=4):
-    renderer, window = rh.make_window(width, height)
-    info = scenes.sphere_and_floor(renderer)
-    for k in range(lights - 1):
-        angle = 2.0 * math.pi * k / (lights - 1)
-        scenes.add_spotlight(renderer, (5.0 * math.cos(angle), 6.0, 5.0 * math.sin(angle)),
-                             (0.0, 0.0, 0.0), cone_angle=25.0)
-    return renderer, window, info
+})
 
 
 def configured(renderer, params, split, filters=True):
-    shafts = vtkLightShaftPass()
-    shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
-    shafts.GetMedium().SetAbsorptionCoefficient(0.01, 0.01, 0.01)
-    shafts.SetShadowMapSize(4096)
-    shafts.ProgressiveRefinementOn()
-    shafts.SetRefinementFrames(1)
-    shafts.SetSplitLongFrames(split)
-    if not filters:
-        shafts.SetBlurRadius(0)
-        shafts.SetInterleaveSize(1)
-    for name, value in params.items():
-        getattr(parameter_owner(shafts, name), "Set" + name)(value)
-    renderer.SetPass(shafts)
-    return shafts
+    return slow.refining_pass(renderer, params, split, shadow_map=4096, filters=filters)
 
 
 def change(shafts):
@@ -116,7 +90,8 @@ def main():
                         help="also the whole frame's and the refined picture's error against "
                              "the float64 reference (minutes)")
     args = parser.parse_args()
-    renderer, window, _ = four_spot_scene(*args.size, lights=args.lights)
+    renderer, window = slow.spotlights_scene(*args.size, lights=args.lights,
+                                             sphere_resolution=256)
     reference = None
     if args.reference:
         shafts = configured(renderer, {}, split=False)

@@ -15,7 +15,6 @@ spotlights in a 65³ random density field, σ_s 10: about 0.2 s of a core per pi
 
 import argparse
 import os
-import random
 import sys
 import time
 
@@ -33,32 +32,7 @@ RUNNING = vtkLightShaftFrameReport.EXACT_FINISH_RUNNING
 
 
 def stop_times(changes, seed):
-    renderer, window, info, shafts = slow.slow_scene()
-    shafts.SetQualityToInteractive()
-    shafts.ProgressiveRefinementOn()
-    shafts.ExactFinishOn()
-    rng = random.Random(seed)
-    waits = []
-    for _ in progress.steps(range(changes), "changes"):
-        window.Render()
-        window.Render()
-        assert shafts.GetLastFrame().GetExactFinishState() == RUNNING
-        time.sleep(rng.uniform(0.0, 0.03))
-        change = rng.choice(["camera", "medium", "light", "prop", "size"])
-        if change == "camera":
-            renderer.GetActiveCamera().Azimuth(rng.uniform(-2.0, 2.0))
-        elif change == "medium":
-            shafts.GetMedium().SetScatteringCoefficient(rng.uniform(5.0, 10.0))
-        elif change == "light":
-            info.light.SetConeAngle(rng.uniform(30.0, 40.0))
-        elif change == "prop":
-            info.actors[0].SetPosition(0.0, rng.uniform(0.0, 0.2), 0.0)
-        else:
-            width = window.GetSize()[0]
-            window.SetSize(64 + (width - 64 + rng.randrange(1, 8)) % 8, 48)
-        window.Render()
-        waits.append(shafts.GetLastFrame().GetExactFinishStopTime())
-    return np.array(waits)
+    return np.array(slow.stop_waits(changes, seed, lambda it: progress.steps(it, "changes")))
 
 
 def abort_latency(after):

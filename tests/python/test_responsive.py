@@ -72,23 +72,18 @@ def arrays(filter_):
             vtk_to_numpy(data.GetArray("ErrorEstimate")).reshape(h, w, 3).copy())
 
 
-def test_any_change_stops_the_finish_within_milliseconds_however_slow_its_pixels():
-    """100 random changes of a still, finishing view (the camera, the medium, a light, a prop,
-    the window's size), each after a random wait so that the workers are anywhere inside a
-    pixel: the frame after each waits milliseconds for them (the frame report's stop time).
-
-    Before the workers looked inside pixels this waited for the rest of a row: 7 s at most.
-    The bounds are for a loaded machine (CI runs three suites on two cores; with three busy
-    processes beside it the median was 10 ms and the maximum 215 ms): the quiet machine's
-    figure, the maximum over 1,000 changes under 50 ms, is measured by
-    tests/benchmarks/responsiveness.py (tools/measure.sh responsiveness)."""
+def stop_waits(changes, seed, steps=lambda iterable: iterable):
+    """The frame report's ExactFinishStopTime after each of `changes` random changes (the
+    camera, the medium, a light, a prop, the window's size) of the slow scene's still,
+    finishing view, each after a random wait so that the workers are anywhere inside a pixel.
+    `steps` wraps the loop (a benchmark's progress bar)."""
     renderer, window, info, shafts = slow_scene()
     shafts.SetQualityToInteractive()
     shafts.ProgressiveRefinementOn()
     shafts.ExactFinishOn()
-    rng = random.Random(51)
+    rng = random.Random(seed)
     waits = []
-    for _ in range(100):
+    for _ in steps(range(changes)):
         window.Render()
         window.Render()  # the same view: the finish runs
         assert shafts.GetLastFrame().GetExactFinishState() == RUNNING
@@ -109,6 +104,20 @@ def test_any_change_stops_the_finish_within_milliseconds_however_slow_its_pixels
         frame = shafts.GetLastFrame()
         assert frame.GetExactFinishState() != RUNNING
         waits.append(frame.GetExactFinishStopTime())
+    return waits
+
+
+def test_any_change_stops_the_finish_within_milliseconds_however_slow_its_pixels():
+    """100 random changes of a still, finishing view (the camera, the medium, a light, a prop,
+    the window's size), each after a random wait so that the workers are anywhere inside a
+    pixel: the frame after each waits milliseconds for them (the frame report's stop time).
+
+    Before the workers looked inside pixels this waited for the rest of a row: 7 s at most.
+    The bounds are for a loaded machine (CI runs three suites on two cores; with three busy
+    processes beside it the median was 10 ms and the maximum 215 ms): the quiet machine's
+    figure, the maximum over 1,000 changes under 50 ms, is measured by
+    tests/benchmarks/responsiveness.py (tools/measure.sh responsiveness)."""
+    waits = stop_waits(100, seed=51)
     print(f"stop after a change: median {1e3 * np.median(waits):.2f} ms, "
           f"max {1e3 * max(waits):.2f} ms over {len(waits)} changes")
     assert np.median(waits) < 0.05, np.median(waits)
@@ -275,21 +284,21 @@ def test_render_converged_reports_its_progress():
 # --- no setting stalls a frame: a long frame's work spread over frames -----------------------
 
 ALLOWANCE = 2 ** 26  # vtkLightShaftGeometry::FrameSegmentAllowance
-# The comparison leaves the filters out (the blur, and RAY_MARCH's interleaving, below): a
-# refined picture is filtered as a whole, not each estimate (docs/refinement-filters.md), so
+# The comparisons leave the filters out (the blur, and RAY_MARCH's interleaving: refining_pass):
+# a refined picture is filtered as a whole, not each estimate (docs/refinement-filters.md), so
 # with them the group also differs from a frame by the filters (tools/measure.sh frame-bound).
-BLUR = 0
 MAXIMA = {
     "slices": dict(Method=vtkLightShaftPass.SLICES, NumberOfSlices=4096, LatticeResolution=256),
-    "ray-march": dict(Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=4096, InterleaveSize=1),
+    "ray-march": dict(Method=vtkLightShaftPass.RAY_MARCH, NumberOfSteps=4096),
     "epipolar": dict(Method=vtkLightShaftPass.EPIPOLAR, EpipolarLines=2048,
                      EpipolarSamples=2048, NumberOfSteps=4096),
 }
 
 
-def spotlights_scene(width=160, height=120, lights=4):
+def spotlights_scene(width=160, height=120, lights=4, sphere_resolution=64):
+    """The sphere scene's spotlight and `lights` - 1 more around it, at the same height."""
     renderer, window = rh.make_window(width, height)
-    scenes.sphere_and_floor(renderer, sphere_resolution=64)
+    scenes.sphere_and_floor(renderer, sphere_resolution=sphere_resolution)
     for k in range(lights - 1):
         angle = 2.0 * math.pi * k / (lights - 1)
         scenes.add_spotlight(renderer, (5.0 * math.cos(angle), 6.0, 5.0 * math.sin(angle)),
@@ -297,12 +306,16 @@ def spotlights_scene(width=160, height=120, lights=4):
     return renderer, window
 
 
-def refining_pass(renderer, params, split):
+def refining_pass(renderer, params, split, shadow_map=1024, filters=False):
+    """A pass refining one group of estimates (RefinementFrames 1), SplitLongFrames `split`,
+    without the blur and RAY_MARCH's interleaving unless `filters`, with `params` set."""
     shafts = vtkLightShaftPass()
     shafts.GetMedium().SetScatteringCoefficient(0.05, 0.04, 0.03)
     shafts.GetMedium().SetAbsorptionCoefficient(0.01, 0.01, 0.01)
-    shafts.SetShadowMapSize(1024)
-    shafts.SetBlurRadius(BLUR)
+    shafts.SetShadowMapSize(shadow_map)
+    if not filters:
+        shafts.SetBlurRadius(0)
+        shafts.SetInterleaveSize(1)
     shafts.ProgressiveRefinementOn()
     shafts.SetRefinementFrames(1)
     shafts.SetSplitLongFrames(split)
