@@ -109,7 +109,11 @@ vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
   vtkOpenGLRenderWindow* window = frame.Window;
   vtkTextureObject* textures[] = { this->Ends.Object,
     this->Coordinates.Ensure(window, TextureKind::RGBA32F, layout.Samples, layout.Lines),
-    this->Coarse.Ensure(window, TextureKind::RGBA32F, columns, layout.Lines),
+    // (A split setting's share adds the columns its shares decide by: stage 2.)
+    this->Coarse.Ensure(window,
+      TextureKind::RGBA32F,
+      frame.RefinementSplit > 1 ? 2 * columns : columns,
+      layout.Lines),
     this->Refined.Ensure(window, TextureKind::RGBA32F, layout.Samples, layout.Lines),
     this->Fine.Ensure(window, TextureKind::RGBA32F, layout.Samples, layout.Lines),
     this->Marked.Ensure(window, TextureKind::RGBA8, width, height) };
@@ -145,9 +149,11 @@ vtkTextureObject* vtkLightShaftEpipolarMethod::Render(vtkLightShaftFrame& frame,
       break;
     }
     SetLayoutUniforms(program, layout, step);
+    program->SetUniformi("epipolarColumns", columns);
     program->SetUniformi("numberOfSteps", steps);
     program->SetUniformf("samplingRotation", static_cast<float>(frame.SamplingRotation));
-    program->SetUniformf("sampleShare", static_cast<float>(frame.RefinementSplit));
+    program->SetUniformi("sampleShare", frame.RefinementSplit);
+    program->SetUniformi("samplePart", frame.SamplePart);
     for (int i = 0; i < 6; ++i)
     {
       program->SetUniformi(samplers[i], textures[i]->GetTextureUnit());

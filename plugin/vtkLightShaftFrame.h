@@ -92,6 +92,7 @@ struct vtkLightShaftStatistics
   int SlabBatches = 0;
   int LatticeResolution = 0;
   int NumberOfSteps = 0; ///< RAY_MARCH's and EPIPOLAR's steps after the segment budget (fewest)
+  int LightVolumeResolution = 0; ///< LIGHT_VOLUME's mesh cells across (fewest)
   int PostPasses = 0;
   int SceneRenders = 0;
   int RenderedProps = 0;
@@ -226,9 +227,9 @@ struct vtkLightShaftFrame
   const vtkLightShaftDensityField* VolumeField = nullptr;
   vtkTextureObject* VolumeShadow = nullptr;
   const vtkLightShaftFieldShadow* VolumeShadowLayout = nullptr;
-  /// Progressive refinement's shift of the sampling offsets (steps, slab jitter), in [0, 1),
-  /// and where in each piece its light-space lookups are, in (0, 1); 0 and 0.5 (the midpoint)
-  /// render the picture without refinement.
+  /// Progressive refinement's shift of the sampling offsets (steps, slab jitter), in [0, 1) of
+  /// the setting's pieces, and where in each piece its light-space lookups are, in (0, 1); 0
+  /// and 0.5 (the midpoint) render the picture without refinement.
   double SamplingRotation = 0.0;
   double LookupFraction = 0.5;
   /// Progressive refinement's shift of the shadow maps' texel grid, in texels ([-0.5, 0.5)).
@@ -237,16 +238,18 @@ struct vtkLightShaftFrame
   /// left out, the refined picture filters the average instead (vtkLightShaftRefinement).
   bool Unfiltered = false;
   /// Estimates that add up to one frame of the still setting: a still view after frames under
-  /// a budget marches a RefinementSplit-th of its steps per estimate where one frame of them
+  /// a budget integrates a RefinementSplit-th of its pieces per estimate where one frame of them
   /// would overrun the budget, and refinement shows the moving picture until they add up to
   /// one, then each complete group's (vtkLightShaftPass::Internals::SplitStillSetting). 1: not
   /// split. A setting whose frame would integrate more than
   /// vtkLightShaftGeometry::FrameSegmentAllowance segments is split so too, every frame, moving
-  /// or still (SplitLongFrames): the methods then march a SampleShare-th of their samples.
+  /// or still (SplitLongFrames).
   int RefinementSplit = 1;
-  /// The divisor of the methods' samples (steps, slabs), after the segment budget: a long
-  /// frame's split (RefinementSplit); 1 otherwise (a budget's split divides NumberOfSteps).
-  int SampleShare = 1;
+  /// Which share of a split setting's pieces (steps, slabs) the frame integrates, in
+  /// [0, RefinementSplit): pieces SamplePart, SamplePart + RefinementSplit, ..., each weighted
+  /// RefinementSplit, so that a group of shares adds up to one frame of the setting, piece for
+  /// piece (vtkLightShaftRefinement::Begin sets it).
+  int SamplePart = 0;
 
   /// The method whose slab program the frame readied (the frame report's GetShaderVariant names
   /// it).

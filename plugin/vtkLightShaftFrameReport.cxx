@@ -50,6 +50,7 @@ void vtkLightShaftFrameReport::Publish(const vtkLightShaftFrame& frame,
   this->NumberOfSlabBatches = stats.SlabBatches;
   this->LatticeResolution = stats.LatticeResolution;
   this->NumberOfSteps = stats.NumberOfSteps;
+  this->LightVolumeResolution = stats.LightVolumeResolution;
   this->NumberOfPostPasses = stats.PostPasses;
   this->NumberOfSceneRenders = stats.SceneRenders;
   this->MultiSamples = stats.MultiSamples;
@@ -244,6 +245,7 @@ void vtkLightShaftFrameReport::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GLErrorCount: " << this->GLErrorCount << "\n";
   os << indent << "NumberOfSlicesDrawn: " << this->NumberOfSlicesDrawn << "\n";
   os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
+  os << indent << "LightVolumeResolution: " << this->LightVolumeResolution << "\n";
   os << indent << "DownsampleFactor: " << this->DownsampleFactor << "\n";
   os << indent << "BackdropDepth: " << this->BackdropDepth << "\n";
   os << indent << "MediumFitted: " << this->MediumFitted << "\n";

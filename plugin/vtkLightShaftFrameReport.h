@@ -61,18 +61,22 @@ public:
   /**
    * The sampling. SLICES: slabs drawn over all lights, the view-depth range the first light's
    * slabs span, and their draw calls. The lattice resolution the slabs used (less than asked
-   * where the frame's budget of 2^21 lattice cells required; 0: none). The steps RAY_MARCH and
-   * EPIPOLAR took per ray (fewer than asked where the frame would integrate more than 2^30
-   * segments; the fewest of the lights; 0: neither method). Full-screen passes after the
-   * in-scatter (gather, blur, ...). RADIAL_BLUR's guard band (0: not run). The in-scatter's
-   * resolution factor (DownsampleFactor, or the budget's or target's choice). Defaults are 0,
-   * (0, 0), 0, 0, 0, 0, 0 and 1.
+   * where the frame's budget of 2^21 lattice cells required; 0: none). The steps of RAY_MARCH's
+   * and EPIPOLAR's rays (fewer than asked where the frame would integrate more than 2^30
+   * segments; the fewest of the lights; 0: neither method; a split setting's frame integrates a
+   * GetRefinementSplit()-th of them, and of the slabs). LIGHT_VOLUME's mesh cells across a map
+   * (fewer than asked where the map has fewer texels, or a refining view's frame would draw more
+   * than 2^22 cells: SplitLongFrames; the fewest of the lights; 0: not run). Full-screen passes
+   * after the in-scatter (gather, blur, ...). RADIAL_BLUR's guard band (0: not run). The
+   * in-scatter's resolution factor (DownsampleFactor, or the budget's or target's choice).
+   * Defaults are 0, (0, 0), 0, 0, 0, 0, 0, 0 and 1.
    */
   vtkGetMacro(NumberOfSlicesDrawn, int);
   vtkGetVector2Macro(SliceDepthRange, double);
   vtkGetMacro(NumberOfSlabBatches, int);
   vtkGetMacro(LatticeResolution, int);
   vtkGetMacro(NumberOfSteps, int);
+  vtkGetMacro(LightVolumeResolution, int);
   vtkGetMacro(NumberOfPostPasses, int);
   vtkGetMacro(RadialGuardBand, double);
   vtkGetMacro(DownsampleFactor, int);
@@ -161,7 +165,8 @@ public:
    * estimates (0: none; the first estimate is filtered as the parameters say, the later ones
    * are not: docs/quality-and-cost.md#interaction-frame-budget-and-refinement); the estimates
    * that make one frame of the still setting (more than 1 where a still view after frames under
-   * a budget splits a ray march that would overrun the budget's frame among estimates), and
+   * a budget splits a ray march that would overrun the budget's frame among estimates, or a
+   * setting would stall the frame: SplitLongFrames), and
    * whether the picture shown is an earlier one, held (the moving one until they add up to one
    * frame of the setting, then the last complete group's). Defaults are 0, false, false, 0, 1
    * and false.
@@ -275,6 +280,7 @@ protected:
   int NumberOfSlabBatches = 0;
   int LatticeResolution = 0;
   int NumberOfSteps = 0;
+  int LightVolumeResolution = 0;
   int NumberOfPostPasses = 0;
   double RadialGuardBand = 0.0;
   int DownsampleFactor = 1;

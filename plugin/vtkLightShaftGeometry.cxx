@@ -759,7 +759,9 @@ LitVolume ComputeLitVolume(const LightFrame& light, const CameraFrame& camera)
 std::vector<SlabFootprint> ComputeSlabFootprints(const LitVolume& lit,
   const CameraFrame& camera,
   int slabs,
-  bool jitter)
+  bool jitter,
+  int share,
+  int part)
 {
   const double nearest = lit.Nearest;
   const double deepest = lit.Deepest;
@@ -767,7 +769,7 @@ std::vector<SlabFootprint> ComputeSlabFootprints(const LitVolume& lit,
   const int drawnSlabs = jitter ? slabs + 1 : slabs;
   std::vector<SlabFootprint> footprints;
   std::vector<glm::dvec2> footprint;
-  for (int k = 0; k < drawnSlabs; ++k)
+  for (int k = part; k < drawnSlabs; k += std::max(share, 1))
   {
     const double za = std::max(nearest, nearest + (jitter ? k - 1 : k) * thickness);
     const double zb = std::min(deepest, nearest + (k + 1) * thickness);
@@ -903,6 +905,17 @@ int AffordableSamples(int requested, long long pixels, int lights)
   const long long share = SegmentBudget / std::max(lights, 1);
   const long long affordable = std::max(1LL, share / std::max(pixels, 1LL));
   return static_cast<int>(std::min<long long>(requested, affordable));
+}
+
+//------------------------------------------------------------------------------
+int AffordableLightVolume(int requested, int faces, int lights, long long pixels)
+{
+  const double scale = static_cast<double>(FrameLightVolumePixels) /
+                       static_cast<double>(std::max(pixels, FrameLightVolumePixels));
+  const double share = scale * static_cast<double>(FrameLightVolumeCellAllowance) /
+                       (static_cast<double>(std::max(lights, 1)) * std::max(faces, 1));
+  const int affordable = std::max(8, static_cast<int>(std::floor(std::sqrt(share))));
+  return std::min(requested, affordable);
 }
 
 //------------------------------------------------------------------------------

@@ -77,6 +77,37 @@ vtkTextureObject* vtkLightShaftLightVolumeMethod::Render(vtkLightShaftFrame& fra
 }
 
 //------------------------------------------------------------------------------
+// LightVolumeResolution, or fewer cells where a refining view's frame would draw more than
+// vtkLightShaftGeometry::FrameLightVolumeCellAllowance (SplitLongFrames), said once.
+int vtkLightShaftLightVolumeMethod::CellsWithinAllowance(vtkLightShaftFrame& frame, int faces)
+{
+  const vtkLightShaftParameters& p = frame.Parameters;
+  const int requested = p.LightVolumeResolution;
+  if (!p.ProgressiveRefinement || !p.SplitLongFrames)
+  {
+    return requested;
+  }
+  const long long pixels = static_cast<long long>(frame.Reduced[0]) * frame.Reduced[1];
+  const int affordable =
+    vtkLightShaftGeometry::AffordableLightVolume(requested, faces, frame.RadiatingLights, pixels);
+  // (One flag per kind of light: point lights' cube faces afford fewer cells than spots'.)
+  bool& warned = faces > 1 ? this->WarnedCubeAllowance : this->WarnedAllowance;
+  if (SayReduction(affordable != requested, warned))
+  {
+    vtkWarningWithObjectMacro(frame.Owner,
+      "LightVolumeResolution " << requested << " would draw "
+                               << static_cast<long long>(requested) * requested * faces *
+                                    frame.RadiatingLights
+                               << " mesh cells over " << pixels
+                               << " in-scatter pixels in a frame, more than a refining view's "
+                                  "frame allows (SplitLongFrames)"
+                               << SharedBy(frame) << ": using " << affordable
+                               << " (vtkLightShaftFrameReport::GetLightVolumeResolution).");
+  }
+  return affordable;
+}
+
+//------------------------------------------------------------------------------
 bool vtkLightShaftLightVolumeMethod::DrawCrossings(vtkLightShaftFrame& frame,
   const vtkLightShaftGeometry::LitVolume& lit,
   vtkTextureObject* shadowMap,
@@ -97,7 +128,10 @@ bool vtkLightShaftLightVolumeMethod::DrawCrossings(vtkLightShaftFrame& frame,
   // The mesh: as many cells across a face as the map has texels at most.
   const bool point = frame.Light.Model.Kind == vtkLightShaftModel::LightKind::Point;
   const int texels = static_cast<int>(point ? shadowMap->GetHeight() / 2 : shadowMap->GetWidth());
-  this->UploadGrid(std::max(1, std::min(frame.Parameters.LightVolumeResolution, texels)));
+  const int cells = this->CellsWithinAllowance(frame, point ? 6 : 1);
+  this->UploadGrid(std::max(1, std::min(cells, texels)));
+  int& recorded = frame.Statistics.LightVolumeResolution;
+  recorded = recorded > 0 ? std::min(recorded, this->GridCells) : this->GridCells;
   this->SetMeshUniforms(frame, lit, program, shadowMap, target.GetDepth(), texels);
 
   const int width = frame.Reduced[0];

@@ -56,6 +56,8 @@ private:
     vtkTextureObject* shadowMap,
     const vtkLightShaftShaders::Variant& variant,
     vtkLightShaftInScatterTarget& target);
+  /// The cells across a mesh of `faces` faces this frame affords (CellsWithinAllowance).
+  int CellsWithinAllowance(vtkLightShaftFrame& frame, int faces);
   /// The uniforms of the mesh and its crossings: camera, light, medium, map and far cap.
   void SetMeshUniforms(vtkLightShaftFrame& frame,
     const vtkLightShaftGeometry::LitVolume& lit,
@@ -80,6 +82,8 @@ private:
   vtkSmartPointer<vtkOpenGLBufferObject> Indices;
   int GridCells = 0;
   int IndexCount = 0;
+  bool WarnedAllowance = false;
+  bool WarnedCubeAllowance = false;
 };
 
 #endif

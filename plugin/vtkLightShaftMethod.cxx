@@ -93,10 +93,9 @@ std::string vtkLightShaftMethod::SharedBy(const vtkLightShaftFrame& frame)
 //------------------------------------------------------------------------------
 int vtkLightShaftMethod::StepsWithinBudget(vtkLightShaftFrame& frame, long long rays)
 {
-  // (A long frame's share of them: vtkLightShaftFrame::SampleShare.)
-  const int steps = std::max(1,
-    this->SamplesWithinBudget(frame, "NumberOfSteps", frame.Parameters.NumberOfSteps, rays) /
-      frame.SampleShare);
+  // (A split setting's share integrates a RefinementSplit-th of them: lightShaftMarch.)
+  const int steps =
+    this->SamplesWithinBudget(frame, "NumberOfSteps", frame.Parameters.NumberOfSteps, rays);
   int& recorded = frame.Statistics.NumberOfSteps;
   recorded = recorded > 0 ? std::min(recorded, steps) : steps;
   return steps;

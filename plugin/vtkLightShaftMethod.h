@@ -110,9 +110,9 @@ protected:
   /// " (shared by N lights)" when the frame's budgets are shared by N > 1 lights, else "".
   static std::string SharedBy(const vtkLightShaftFrame& frame);
 
-  /// SamplesWithinBudget for the frame's NumberOfSteps, a long frame's share of them
-  /// (frame.SampleShare), recorded in the frame's statistics (the fewest of its lights: the
-  /// frame report's GetNumberOfSteps).
+  /// SamplesWithinBudget for the frame's NumberOfSteps (the setting's: a split setting's share
+  /// integrates a frame.RefinementSplit-th of them), recorded in the frame's statistics (the
+  /// fewest of its lights: the frame report's GetNumberOfSteps).
   int StepsWithinBudget(vtkLightShaftFrame& frame, long long rays = -1);
 
   /// " accumulate=float32" or " accumulate=float16": the description of a float accumulation.

@@ -344,7 +344,9 @@ public:
   /**
    * LIGHT_VOLUME: the cells across the shadow map (a point light: across each cube face) of
    * the shadow volume's mesh, in [8, 1024]; each cell takes the depth of the map's texel at its
-   * centre, so no more are used than the map has texels. Default is 256.
+   * centre, so no more are used than the map has texels, and with SplitLongFrames and
+   * ProgressiveRefinement on no more than a frame's allowance (2^22 cells over the lights at
+   * 640x480, fewer on larger frames; one warning). Default is 256.
    */
   vtkSetClampMacro(LightVolumeResolution, int, 8, 1024);
   vtkGetMacro(LightVolumeResolution, int);
@@ -454,15 +456,17 @@ public:
    * Spread a long frame's work over frames (with ProgressiveRefinement): where the setting's
    * in-scatter would integrate more than 2^26 segments in a frame (a step of a march or a slab
    * across a pixel; at most about 2 s a frame on a CPU's llvmpipe), RAY_MARCH, SLICES and EPIPOLAR
-   * march a power-of-two share of its steps or slabs per frame, the fewest shares that fit
-   * (one step or slab each at least), moving or still; refinement accumulates a group of
-   * shares into one frame of the setting (each share looks up the shadow, cookie and noise at
-   * its own part of the longer pieces), and the frame report's GetRefinementSplit() says how
-   * many shares a frame's work was split into. Through a medium from data or a volume and
-   * behind translucent surfaces in view, which a piece samples once, a group is coarser than
-   * one frame of the setting (refinement's shifted pieces still converge). LIGHT_VOLUME,
-   * RADIAL_BLUR and ANALYTIC are not split. Off, or with ProgressiveRefinement off: every frame
-   * computes the whole setting (a batch render that wants it in one frame). Default is on.
+   * integrate a power-of-two share of its steps or slabs per frame (every n-th of them, each
+   * standing for n), the fewest shares that fit (one step or slab each at least), moving or
+   * still; RADIAL_BLUR so shares its samples beyond 2^30 a frame. Refinement accumulates a
+   * group of shares into one frame of the setting, piece for piece, and the frame report's
+   * GetRefinementSplit() says how many shares a frame's work was split into. (Through a medium
+   * from data, a share counts the extinction of the steps it leaves at the density of the one it
+   * takes: there a group is close to one frame of the setting, not equal. EPIPOLAR's shares may
+   * choose other samples to interpolate than the whole frame.) ANALYTIC is not split, nor is
+   * LIGHT_VOLUME's mesh: beyond a frame's allowance it is coarser (SetLightVolumeResolution).
+   * Off, or with ProgressiveRefinement off: every frame computes the whole setting (a batch
+   * render that wants it in one frame). Default is on.
    */
   vtkSetMacro(SplitLongFrames, bool);
   vtkGetMacro(SplitLongFrames, bool);

@@ -290,21 +290,20 @@ void vtkLightShaftPass::Internals::KeepMovingSampling(vtkLightShaftFrame& frame,
 //------------------------------------------------------------------------------
 // Final without blocking: a still view after frames under a budget whose setting is a ray march
 // the cost model predicts longer than the budget's frame marches a power-of-two share of its
-// steps per estimate, the fewest shares whose frame fits (MinimumSplitSteps steps at least).
-// Each group of that many estimates samples as one frame of the setting (each looks up its part
-// of the longer pieces: vtkLightShaftRefinement::Begin); refinement shows the moving picture
-// until a group is complete, and goes on to RefinementFrames groups. Not through a medium from
-// data or a volume (their density is sampled at the pieces' midpoints, which longer pieces would
-// coarsen), nor behind translucent surfaces in view (the camera leg is a piece's mean by length:
-// behind a half-transparent pane the sphere scene's Final, split, was 0.24% from the reference,
-// whole 0.09%).
+// steps per estimate, the fewest shares whose frame fits (MinimumSplitSteps steps a share at
+// least). Each group of that many estimates adds up to one frame of the setting, piece for
+// piece (each integrates its own part of the steps: vtkLightShaftRefinement::Begin); refinement
+// shows the moving picture until a group is complete, and goes on to RefinementFrames groups. Not
+// through a medium from data or a volume, whose extinction a share counts at its own pieces'
+// density only, nor behind translucent surfaces in view (when shares marched longer pieces, the
+// sphere scene's Final behind a half-transparent pane was 0.24% from the reference split, 0.09%
+// whole; not measured since they integrate the setting's own).
 void vtkLightShaftPass::Internals::SplitStillSetting(vtkLightShaftFrame& frame)
 {
   vtkLightShaftParameters& p = frame.Parameters;
   const int setting = frame.Statistics.ErrorModelSetting;
   const double budget = this->BudgetOfChoice;
   frame.RefinementSplit = 1;
-  frame.SampleShare = 1;
   if (!p.ProgressiveRefinement)
   {
     return;
@@ -330,21 +329,19 @@ void vtkLightShaftPass::Internals::SplitStillSetting(vtkLightShaftFrame& frame)
   {
     split *= 2;
   }
-  p.NumberOfSteps /= split;
   frame.RefinementSplit = split;
 }
 
 //------------------------------------------------------------------------------
 // No setting stalls a frame: where one frame of the setting would integrate more than
 // FrameSegmentAllowance segments (after the segment budget), RAY_MARCH, SLICES and EPIPOLAR
-// march a power-of-two share of its samples every frame, moving or still, the fewest shares
-// that fit (down to one sample a share: here the frame's time, not the still picture's, is
-// what matters); a group of shares samples as one frame of it, as a budget's split does
-// (vtkLightShaftRefinement::Begin). The methods divide their samples (frame.SampleShare); SLICES
-// keeps the whole setting's lattice. Also through a medium from data or a volume and behind
-// translucent surfaces in view, which a piece samples once (at its midpoint, or as its mean by
-// length): there a group is coarser than one frame of the setting, and the view stays responsive;
-// refinement's shifted pieces still converge.
+// integrate a power-of-two share of its pieces (steps, slabs) every frame, moving or still (and
+// RADIAL_BLUR, past FrameRadialSampleAllowance, a share of its samples), the
+// fewest shares that fit (down to one piece a share: here the frame's time, not the still
+// picture's, is what matters); a group of shares adds up to one frame of it, piece for piece, as
+// a budget's split does (frame.SamplePart: vtkLightShaftRefinement::Begin). (Through a medium
+// from data, a march's share counts the extinction of the pieces it leaves at the density of
+// the one it integrates: there a group is close to one frame of the setting, not equal.)
 void vtkLightShaftPass::Internals::SplitLongFrame(vtkLightShaftFrame& frame)
 {
   const vtkLightShaftParameters& p = frame.Parameters;
@@ -354,33 +351,36 @@ void vtkLightShaftPass::Internals::SplitLongFrame(vtkLightShaftFrame& frame)
     return;
   }
   const long long pixels = static_cast<long long>(frame.Reduced[0]) * frame.Reduced[1];
-  int requested = 0;
+  long long whole = 0;
   long long rays = pixels;
+  long long allowance = vtkLightShaftGeometry::FrameSegmentAllowance / lights;
   switch (p.Method)
   {
     case vtkLightShaftPass::RAY_MARCH:
-      requested = p.NumberOfSteps;
+      whole = vtkLightShaftGeometry::AffordableSamples(p.NumberOfSteps, rays, lights);
       break;
     case vtkLightShaftPass::SLICES:
       // (An automatic count is at most its maximum.)
-      requested = p.AutomaticSliceCount ? p.MaximumNumberOfSlices : p.NumberOfSlices;
+      whole = vtkLightShaftGeometry::AffordableSamples(
+        p.AutomaticSliceCount ? p.MaximumNumberOfSlices : p.NumberOfSlices, rays, lights);
       break;
     case vtkLightShaftPass::EPIPOLAR:
-      requested = p.NumberOfSteps;
       rays = vtkLightShaftEpipolarMethod::MarchedRays(frame);
+      whole = vtkLightShaftGeometry::AffordableSamples(p.NumberOfSteps, rays, lights);
+      break;
+    case vtkLightShaftPass::RADIAL_BLUR:
+      whole = p.RadialSamples;
+      allowance = vtkLightShaftGeometry::FrameRadialSampleAllowance / lights;
       break;
     default:
       return;
   }
-  const long long whole = vtkLightShaftGeometry::AffordableSamples(requested, rays, lights);
-  const long long allowance = vtkLightShaftGeometry::FrameSegmentAllowance / lights;
   int split = 1;
   while ((whole / split) * rays > allowance && whole / (2 * split) >= 1)
   {
     split *= 2;
   }
   frame.RefinementSplit = split;
-  frame.SampleShare = split;
 }
 
 //------------------------------------------------------------------------------

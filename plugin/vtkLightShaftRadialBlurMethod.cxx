@@ -192,6 +192,21 @@ vtkTextureObject* vtkLightShaftRadialBlurMethod::RenderOcclusion(vtkLightShaftFr
 }
 
 //------------------------------------------------------------------------------
+// The weights' sum over a walk of `samples` samples: decay^0 + ... + decay^(samples - 1) (the
+// same for every pixel, in double: a split setting's shares each take part of them).
+double vtkLightShaftRadialBlurMethod::DecayTotal(double decay, int samples)
+{
+  double total = 0.0;
+  double weight = 1.0;
+  for (int i = 0; i < samples; ++i)
+  {
+    total += weight;
+    weight *= decay;
+  }
+  return total;
+}
+
+//------------------------------------------------------------------------------
 // The radial walk from each pixel towards the light's screen position over the occlusion
 // buffer, darkening the unshadowed integral.
 vtkTextureObject* vtkLightShaftRadialBlurMethod::Blur(vtkLightShaftFrame& frame,
@@ -218,7 +233,10 @@ vtkTextureObject* vtkLightShaftRadialBlurMethod::Blur(vtkLightShaftFrame& frame,
   program->SetUniform2f("lightUV", lightUV);
   program->SetUniformf("fade", static_cast<float>(fade));
   program->SetUniformi("samples", p.RadialSamples);
+  program->SetUniformi("sampleShare", frame.RefinementSplit);
+  program->SetUniformi("samplePart", frame.SamplePart);
   program->SetUniformf("decay", static_cast<float>(p.Decay));
+  program->SetUniformf("decayTotal", static_cast<float>(DecayTotal(p.Decay, p.RadialSamples)));
   program->SetUniformf("weight", static_cast<float>(p.Weight));
   program->SetUniformf("density", static_cast<float>(p.Density));
   program->SetUniformi("stochastic", p.RadialJitter ? 1 : 0);

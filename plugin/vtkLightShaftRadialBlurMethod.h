@@ -42,6 +42,7 @@ public:
 
 private:
   static bool LightOnScreen(const vtkLightShaftFrame& frame, float lightUV[2], double& fade);
+  static double DecayTotal(double decay, int samples);
   double GuardBand(const vtkLightShaftFrame& frame);
   vtkTextureObject* RenderOcclusion(vtkLightShaftFrame& frame,
     vtkTextureObject* depth,

@@ -52,7 +52,8 @@ vtkTextureObject* vtkLightShaftRayMarchMethod::Render(vtkLightShaftFrame& frame,
   program->SetUniformi("numberOfSteps", steps);
   program->SetUniformi("interleaveSize", p.InterleaveSize);
   program->SetUniformf("samplingRotation", static_cast<float>(frame.SamplingRotation));
-  program->SetUniformf("sampleShare", static_cast<float>(frame.RefinementSplit));
+  program->SetUniformi("sampleShare", frame.RefinementSplit);
+  program->SetUniformi("samplePart", frame.SamplePart);
 
   target.Bind();
   vtkLightShaftSlabDrawer::Slabs slabs =

@@ -91,7 +91,8 @@ void vtkLightShaftRefinement::SetSampling(Signature& signature, const vtkLightSh
     double(p.DownsampleFactor),
     double(p.ShadowMapSize),
     double(p.AccumulationPrecision),
-    double(p.MediumShadowResolution) };
+    double(p.MediumShadowResolution),
+    double(frame.RefinementSplit) };
 }
 
 bool vtkLightShaftRefinement::IsStill(const Signature& signature) const
@@ -170,10 +171,10 @@ void vtkLightShaftRefinement::Begin(vtkLightShaftFrame& frame, Signature&& signa
   // The R4 sequence (Roberts 2018): the n-th estimate's shifts fall where the earlier ones left
   // the largest gaps, so n estimates sample their (step offset, lookup, map offset) space about
   // as evenly as a grid would. Estimate 0 has no shift.
-  // A split setting (Split estimates of a Split-th of the steps each) shifts as the setting's
-  // n-th estimate would for each group of Split, its estimates looking up the Split parts of
-  // each long piece that are the setting's short pieces (in bit-reversed order: a group's first
-  // estimates spread over the piece): together, a group samples as one frame of the setting.
+  // A split setting (Split estimates of a Split-th of the pieces each) shifts as the setting's
+  // n-th estimate would for each group of Split, its estimates integrating the Split parts of
+  // the setting's pieces (in bit-reversed order: a group's first estimates spread over them):
+  // together, a group is one frame of the setting, piece for piece.
   const int split = on ? this->Split : 1;
   const int n = on ? this->Estimates / split : 0;
   const int part = on ? this->Estimates % split : 0;
@@ -181,14 +182,17 @@ void vtkLightShaftRefinement::Begin(vtkLightShaftFrame& frame, Signature&& signa
     0.8566748838545029, 0.7338918566271260, 0.6287067210378087, 0.5385972572236101
   }; // 1 / g^i, g^5 = g + 1
   double whole = 0.0;
-  frame.SamplingRotation = std::modf(n * alpha[0], &whole) / split;
-  // (The group's first estimate looks up the middle part: shown alone, as a long frame's moving
-  // frame is, its lookups are at the pieces' middles.)
-  const int middleFirst = (BitReversed(part, split) + split / 2) % split;
-  frame.LookupFraction = (middleFirst + std::modf(0.5 + n * alpha[1], &whole)) / split;
+  frame.SamplingRotation = std::modf(n * alpha[0], &whole);
+  frame.LookupFraction = std::modf(0.5 + n * alpha[1], &whole);
+  // (The group's first estimate integrates the middle part: shown alone, as a long frame's
+  // moving frame is, each of its pieces stands for the span around it.)
+  frame.RefinementSplit = split;
+  frame.SamplePart = (BitReversed(part, split) + split / 2) % split;
   frame.ShadowMapOffset[0] = std::modf(0.5 + n * alpha[2], &whole) - 0.5;
   frame.ShadowMapOffset[1] = std::modf(0.5 + n * alpha[3], &whole) - 0.5;
-  frame.Unfiltered = on && this->Estimates > 0;
+  // The first group is filtered as the parameters say (each estimate: the filters are linear,
+  // so the group's mean is one frame of the setting filtered), the later ones are not.
+  frame.Unfiltered = on && this->Estimates >= split;
 }
 
 //------------------------------------------------------------------------------
@@ -307,9 +311,14 @@ vtkTextureObject* vtkLightShaftRefinement::Accumulate(vtkLightShaftFrame& frame,
   estimate->Deactivate();
   this->Current = next;
   ++this->Estimates;
-  this->Converged = !rotates || this->Estimates >= frame.Parameters.RefinementFrames * this->Split;
+  // (Samples that do not move converge with the first group: one frame of the setting.)
+  this->Converged = (!rotates && this->Estimates >= this->Split) ||
+                    this->Estimates >= frame.Parameters.RefinementFrames * this->Split;
   vtkTextureObject* picture = this->ChoosePicture(frame, previous, target);
-  if (this->Split > 1 && this->Estimates % this->Split == 0 && !this->Converged)
+  // (As a whole setting's second estimate, the second group is not shown until the third is
+  // complete: ChoosePicture.)
+  if (this->Split > 1 && this->Estimates % this->Split == 0 && !this->Converged &&
+      this->Estimates != 2 * this->Split)
   {
     this->HoldPicture(frame, picture); // shown until the next group is complete
   }
@@ -361,11 +370,13 @@ vtkTextureObject* vtkLightShaftRefinement::ChoosePicture(vtkLightShaftFrame& fra
   // errors no other yet cancels, was worse than the first alone on six of nine scenes and
   // settings, by up to 35% (five, up to 30%, with every estimate filtered:
   // docs/refinement-filters.md).
+  // (A split setting's group of estimates is one frame of the setting: it counts as one.)
+  const int frames = this->Estimates / this->Split;
   if (this->Estimates == 1)
   {
     this->FirstSamples = FirstFilterSamples(frame);
   }
-  this->Sigma = this->Estimates > 1 ? PictureSigma(this->FirstSamples, this->Estimates) : 0.0;
+  this->Sigma = frames > 1 ? PictureSigma(this->FirstSamples, frames) : 0.0;
   this->Sigma *= static_cast<double>(w) / frame.Reduced[0];
   this->Picture = average;
   if (this->Estimates == 2 && !this->Converged && this->Split == 1)

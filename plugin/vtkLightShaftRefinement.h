@@ -78,7 +78,7 @@ public:
    * Start the frame: a new history when `signature` differs from the last one's or refinement
    * is off. Sets the frame's SamplingRotation, LookupFraction and ShadowMapOffset for its
    * estimate: 0, 0.5 and 0 for a history's first (the picture without refinement), then the
-   * R4 sequence.
+   * R4 sequence; and for a split setting the SamplePart its estimate integrates.
    */
   void Begin(vtkLightShaftFrame& frame, Signature&& signature);
   /// Whether the history already holds the converged picture of this frame's signature.
@@ -94,7 +94,9 @@ public:
    * average converges to the unfiltered answer instead of keeping the filters' blur. The
    * picture of n estimates is the average filtered by a Gaussian that holds the first
    * picture's noise reduction: its samples along an axis times sqrt(n) are the first
-   * filters' (PictureSigma), none once the estimates alone hold that many.
+   * filters' (PictureSigma), none once the estimates alone hold that many. A split setting's
+   * group of estimates counts as one: the first group is filtered, each estimate (the filters
+   * are linear: its mean is one frame of the setting, filtered).
    */
   vtkTextureObject* Accumulate(vtkLightShaftFrame& frame, vtkTextureObject* estimate, bool rotates);
   /// The picture of the history (the converged one when IsConverged()).

@@ -191,10 +191,6 @@ void SetIntegrandUniforms(vtkShaderProgram* program, const vtkLightShaftFrame& f
   if (frame.LookupFraction != 0.5)
   {
     program->SetUniformf("lookupFraction", static_cast<float>(frame.LookupFraction));
-    if (program->IsUniformUsed("lookupShare")) // (by the light-space lookups' footprint)
-    {
-      program->SetUniformf("lookupShare", 1.0f / static_cast<float>(frame.RefinementSplit));
-    }
   }
   if (frame.Medium.Phase == vtkLightShaftMedium::HENYEY_GREENSTEIN)
   {

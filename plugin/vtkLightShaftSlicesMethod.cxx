@@ -85,20 +85,19 @@ vtkTextureObject* vtkLightShaftSlicesMethod::Render(vtkLightShaftFrame& frame,
   vtkLightShaftInScatterTarget& target)
 {
   const vtkLightShaftParameters& p = frame.Parameters;
-  const int whole = this->SamplesWithinBudget(frame,
+  const int slices = this->SamplesWithinBudget(frame,
     p.AutomaticSliceCount ? "The automatic slice count" : "NumberOfSlices",
     this->CountSlices(frame, lit));
-  const int slices = std::max(1, whole / frame.SampleShare); // (a long frame's share)
+  // (A split setting's share draws every RefinementSplit-th of the setting's slabs.)
   const bool jitter = p.Jitter;
-  this->Footprints =
-    vtkLightShaftGeometry::ComputeSlabFootprints(lit, frame.Camera, slices, jitter);
+  this->Footprints = vtkLightShaftGeometry::ComputeSlabFootprints(
+    lit, frame.Camera, slices, jitter, frame.RefinementSplit, frame.SamplePart);
   if (this->Footprints.empty())
   {
     return nullptr;
   }
-  // A long frame's share keeps the whole setting's lattice (its slabs and the ones it leaves).
-  const int lattice =
-    this->LatticeWithinBudget(frame, static_cast<int>(this->Footprints.size()) + whole - slices);
+  // The lattice of the whole setting's slabs (a share's keeps it).
+  const int lattice = this->LatticeWithinBudget(frame, jitter ? slices + 1 : slices);
   frame.Statistics.LatticeResolution = lattice;
 
   // Shadow map of the casters (none when nothing can shadow).
@@ -120,6 +119,7 @@ vtkTextureObject* vtkLightShaftSlicesMethod::Render(vtkLightShaftFrame& frame,
     return nullptr;
   }
   program->SetUniformf("samplingRotation", static_cast<float>(frame.SamplingRotation));
+  program->SetUniformf("sampleWeight", static_cast<float>(frame.RefinementSplit));
   if (eightBit)
   {
     program->SetUniformf(

@@ -8,6 +8,7 @@
 // pays for the code of branches it does not take) and a draw of the slab drawer:
 //   0 coordinates: each (sample, line) texel's pixel and its depth;
 //   1 coarse:      the march at every epipolarStep-th sample of each line (and its last);
+//                  a split setting's share also marches them the way all its shares decide by;
 //   2 refine:      the sources of the interpolation along the lines: the coarse samples, the
 //                  samples on either side of a depth break (marched), and every sample
 //                  between coarse neighbours whose in-scatter differs too much (marched);
@@ -27,13 +28,8 @@ uniform float slabStart; // the lit depth range
 uniform float slabEnd;
 uniform int numberOfSteps;
 uniform float samplingRotation; // in [0, 1): progressive refinement's shift of the steps
-uniform float sampleShare; // estimates a split setting's frame is shared among (1: whole)
-
-// The march's offset: the whole setting's shifted steps, a share's on every sampleShare-th.
-float epipolarOffset()
-{
-  return (1.0 - samplingRotation * sampleShare) / sampleShare;
-}
+uniform int sampleShare; // the frames a split setting's steps are shared among (1: whole)
+uniform int samplePart;  // which of them this is (lightShaftMarch)
 
 uniform int epipolarLines;
 uniform int epipolarSamples;
@@ -49,7 +45,9 @@ uniform float epipolarSpan;
 uniform sampler2D epipolarEnds;        // lines x 1: entry (xy) and exit (zw), target pixels
 uniform sampler2D epipolarCoordinates; // samples x lines: position (xy), view depth (z),
                                        // depth-buffer value (w)
-uniform sampler2D epipolarCoarse;      // coarse samples x lines: in-scatter (rgb)
+uniform sampler2D epipolarCoarse;      // coarse samples x lines: in-scatter (rgb); a split
+                                       // setting's share: its own, then the columns' deciding
+uniform int epipolarColumns;           // the coarse samples per line
 uniform sampler2D epipolarRefined;     // samples x lines: a source's in-scatter (rgb), 1 (a);
                                        // 0 elsewhere
 uniform sampler2D epipolarFine;        // samples x lines: in-scatter (rgb), view depth (a)
@@ -67,16 +65,27 @@ const float epipolarNearEpipole = 1.5;
 //VTK::LightShaft::Integrand
 //VTK::LightShaft::Segment
 
+// The ray through a pixel marched (refinement's estimates shift the steps).
+vec3 epipolarMarchRay(LightShaftRay ray)
+{
+  return lightShaftMarch(ray, numberOfSteps, 1.0 - samplingRotation, sampleShare, samplePart);
+}
+
 // The in-scatter of the ray through `pixel` (target pixels) whose surface's depth-buffer
-// value is `depth`, marched in full.
-vec3 epipolarMarch(vec2 pixel, float depth)
+// value is `depth`, marched in full; `deciding`: the same for every share of a split setting
+// (the whole march's longer spans, not the share's pieces), for stage 2 to decide by.
+vec3 epipolarMarch(vec2 pixel, float depth, bool deciding)
 {
   LightShaftRay ray;
   if (!lightShaftLitIntervalAt(pixel, depth, slabStart, slabEnd, ray))
   {
     return vec3(0.0);
   }
-  return lightShaftMarch(ray, numberOfSteps, epipolarOffset());
+  if (deciding)
+  {
+    return lightShaftMarch(ray, max(numberOfSteps / sampleShare, 1), 1.0, 1, 0);
+  }
+  return epipolarMarchRay(ray);
 }
 
 // Stage 0: where sample `sampleIndex` of line `line` lies (kept inside the outer pixel
@@ -124,8 +133,11 @@ vec4 epipolarRefinedSample(int sampleIndex, int line)
     int coarse = (sampleIndex == s0) ? column : column + 1;
     return vec4(texelFetch(epipolarCoarse, ivec2(coarse, line), 0).rgb, 1.0);
   }
-  vec3 l0 = texelFetch(epipolarCoarse, ivec2(column, line), 0).rgb;
-  vec3 l1 = texelFetch(epipolarCoarse, ivec2(column + 1, line), 0).rgb;
+  // (A split setting's shares decide alike, by the columns' deciding march: their group adds
+  // up to one frame of the setting that interpolates the same samples.)
+  int deciding = sampleShare > 1 ? epipolarColumns : 0;
+  vec3 l0 = texelFetch(epipolarCoarse, ivec2(deciding + column, line), 0).rgb;
+  vec3 l1 = texelFetch(epipolarCoarse, ivec2(deciding + column + 1, line), 0).rgb;
   bool smooth_ = all(lessThanEqual(abs(l1 - l0), epipolarRadianceTolerance * max(l0, l1)));
   float here = epipolarViewDepth(sampleIndex, line);
   if (smooth_ && epipolarSameSurface(here, epipolarViewDepth(sampleIndex - 1, line)) &&
@@ -134,7 +146,7 @@ vec4 epipolarRefinedSample(int sampleIndex, int line)
     return vec4(0.0);
   }
   vec4 point = texelFetch(epipolarCoordinates, ivec2(sampleIndex, line), 0);
-  return vec4(epipolarMarch(point.xy, point.w), 1.0);
+  return vec4(epipolarMarch(point.xy, point.w, false), 1.0);
 }
 
 // Stage 3: sample `sampleIndex` of line `line`, a source or interpolated between the nearest
@@ -303,9 +315,11 @@ void main()
 #if LIGHTSHAFT_EPIPOLAR_STAGE == 0
   gl_FragData[0] = epipolarCoordinate(texel.x, texel.y);
 #elif LIGHTSHAFT_EPIPOLAR_STAGE == 1
-  int sampleIndex = min(texel.x * epipolarStep, epipolarSamples - 1);
+  bool deciding = texel.x >= epipolarColumns; // (only a split setting's share has them)
+  int column = deciding ? texel.x - epipolarColumns : texel.x;
+  int sampleIndex = min(column * epipolarStep, epipolarSamples - 1);
   vec4 here = texelFetch(epipolarCoordinates, ivec2(sampleIndex, texel.y), 0);
-  gl_FragData[0] = vec4(epipolarMarch(here.xy, here.w), 0.0);
+  gl_FragData[0] = vec4(epipolarMarch(here.xy, here.w, deciding), 0.0);
 #elif LIGHTSHAFT_EPIPOLAR_STAGE == 2
   gl_FragData[0] = epipolarRefinedSample(texel.x, texel.y);
 #elif LIGHTSHAFT_EPIPOLAR_STAGE == 3
@@ -330,6 +344,6 @@ void main()
   {
     discard;
   }
-  gl_FragData[0] = vec4(lightShaftMarch(ray, numberOfSteps, epipolarOffset()), 0.0);
+  gl_FragData[0] = vec4(epipolarMarchRay(ray), 0.0);
 #endif
 }

@@ -14,7 +14,10 @@ uniform sampler2D occlusion;
 uniform vec2 lightUV;        // the light's position in texture coordinates (may be off-screen)
 uniform float fade;          // 1 with the light in front of the camera, 0 at or behind it
 uniform int samples;
+uniform int sampleShare;   // the frames a split setting's samples are shared among (1: whole)
+uniform int samplePart;    // which of them this is: samples samplePart + k sampleShare
 uniform float decay;
+uniform float decayTotal;  // the weights' sum over all samples, decay^0 + ... + decay^(n - 1)
 uniform float weight;
 uniform float density;       // fraction of the way to the light the samples cover
 uniform int stochastic;      // per-pixel offset of the sample positions
@@ -54,17 +57,18 @@ void main()
     start = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
   }
   float shaftDistance = shaft.a;
-  float illuminationDecay = 1.0;
+  // A split setting's share takes every sampleShare-th sample, standing for sampleShare of
+  // them: a group of shares adds up to the whole walk, sample for sample.
+  float illuminationDecay = samplePart == 0 ? 1.0 : pow(decay, float(samplePart));
+  float decayPerSample = sampleShare == 1 ? decay : pow(decay, float(sampleShare));
   float visible = 0.0;
-  float total = 0.0;
-  for (int i = 0; i < samples; ++i)
+  for (int i = samplePart; i < samples; i += sampleShare)
   {
     vec2 uv = texCoord + (float(i) + start) * step;
     float occluderDistance = texture(occlusion, 0.5 + (uv - 0.5) / guardBand).r;
     visible += illuminationDecay * ((occluderDistance < 0.99 * shaftDistance) ? 0.0 : 1.0);
-    total += illuminationDecay;
-    illuminationDecay *= decay;
+    illuminationDecay *= decayPerSample;
   }
-  float visibility = (total > 0.0) ? visible / total : 1.0;
+  float visibility = (decayTotal > 0.0) ? float(sampleShare) * visible / decayTotal : 1.0;
   gl_FragData[0] = vec4(shaft.rgb * (1.0 - weight * fade * (1.0 - visibility)), 0.0);
 }

@@ -12,7 +12,8 @@ uniform float slabEnd;
 uniform int numberOfSteps;
 uniform int interleaveSize; // M: the pixels of an M x M block march with M^2 offsets
 uniform float samplingRotation; // in [0, 1): progressive refinement's shift of every offset
-uniform float sampleShare; // estimates a split setting's frame is shared among (1: whole)
+uniform int sampleShare; // the frames a split setting's steps are shared among (1: whole)
+uniform int samplePart;  // which of them this is (lightShaftMarch)
 
 //VTK::LightShaft::Common
 //VTK::LightShaft::Integrand
@@ -39,11 +40,9 @@ void main()
     int scrambled = (cellIndex * (cells / 2 + 1)) % cells;
     offset = (float(scrambled) + 0.5) / float(cells);
   }
-  // Refinement's estimates shift the offsets together (0: unchanged), within (0, 1]: by the
-  // whole setting's steps, and a split setting's share puts its boundaries on every
-  // sampleShare-th of the whole setting's (its longer pieces are sampleShare of them).
-  offset -= samplingRotation * sampleShare;
+  // Refinement's estimates shift the offsets together (0: unchanged), within (0, 1].
+  offset -= samplingRotation;
   offset += offset <= 0.0 ? 1.0 : 0.0;
-  offset /= sampleShare;
-  gl_FragData[0] = vec4(lightShaftMarch(ray, numberOfSteps, offset), 0.0);
+  gl_FragData[0] =
+    vec4(lightShaftMarch(ray, numberOfSteps, offset, sampleShare, samplePart), 0.0);
 }

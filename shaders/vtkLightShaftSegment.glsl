@@ -13,6 +13,11 @@
 // The optical depth of the view ray from its origin to the start of the segment being
 // integrated (in density units: times sigma_t), advanced by lightShaftSegment.
 float lightShaftOpticalDepthSoFar = 0.0;
+// A share of a split setting's march integrates one piece of each longer span it steps over
+// (lightShaftMarch): the span's parts before and after the piece, which it counts at the
+// piece's density (0: the piece is its span).
+float lightShaftFieldLead = 0.0;
+float lightShaftFieldTrail = 0.0;
 #endif
 
 #ifdef LIGHTSHAFT_LATTICE
@@ -73,7 +78,6 @@ float lightShaftAttenuationIntegral(float x0, float x1, float h2)
 // medium from data at the midpoint always.
 #ifdef LIGHTSHAFT_REFINE
 uniform float lookupFraction; // where in a piece (of u) its lookups are; 0.5: the midpoint
-uniform float lookupShare;    // the part of the piece a lookup stands for (a split setting's)
 #endif
 
 //VTK::LightShaft::CameraLayers
@@ -120,9 +124,6 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
   // The sample stands for a pixel-wide, segment-long footprint: its size in light-square widths
   // picks the mip level, so cookie and noise are pre-filtered instead of aliasing.
   float pieceLength = x1 - x0;
-#ifdef LIGHTSHAFT_REFINE
-  pieceLength *= lookupShare;
-#endif
   float footprint = max(pixelFootprint.x * (-sampleVC.z) + pixelFootprint.y,
     pieceLength * sampleSinTheta);
   float footprintInSquares =
@@ -154,8 +155,10 @@ vec3 lightShaftSegment(vec3 originVC, vec3 dirVC, float b, float h2, float x0, f
   float density = lightShaftDensity(fieldVC);
   float segmentDepth = density * (x1 - x0);
   float lightLeg = lightShaftFieldLightLeg(fieldVC, fieldR);
-  float depth = lightShaftOpticalDepthSoFar + 0.5 * segmentDepth + lightLeg;
-  lightShaftOpticalDepthSoFar += segmentDepth;
+  float depth =
+    lightShaftOpticalDepthSoFar + density * lightShaftFieldLead + 0.5 * segmentDepth + lightLeg;
+  lightShaftOpticalDepthSoFar +=
+    segmentDepth + density * (lightShaftFieldLead + lightShaftFieldTrail);
   smoothMean *= density * exp(-sigmaT * depth);
 #endif
   return sigmaS * lightRadiantIntensity * modulation * (weight * visibility) * smoothMean;
@@ -243,10 +246,30 @@ LightShaftVariable lightShaftVariable(LightShaftRay ray)
   return v;
 }
 
-// The ray's lit part marched in `steps` segments (shorter towards the light when A falls off),
-// one shadow-map lookup each; the boundaries shifted by `offset` of a step (1: none; the
-// interleaved sampling of RAY_MARCH). Step j spans [j - 1 + offset, j + offset] steps, clamped.
-vec3 lightShaftMarch(LightShaftRay ray, int steps, float offset)
+// Boundary j of the ray's lit part marched in `steps` pieces (shorter towards the light when A
+// falls off), shifted by `offset` of a piece: piece j spans [boundary j - 1, boundary j].
+float lightShaftMarchBoundary(LightShaftRay ray, LightShaftVariable u, int j, int steps,
+  float offset)
+{
+  if (j < 0)
+  {
+    return ray.x0;
+  }
+  if (j >= steps)
+  {
+    return ray.x1;
+  }
+  float x = lightShaftPieceBoundary(u.u0, u.u1, (float(j) + offset) / float(steps), u.h,
+    u.constantA);
+  return clamp(x, ray.x0, ray.x1);
+}
+
+// The ray's lit part marched in `steps` segments, one shadow-map lookup each; the boundaries
+// shifted by `offset` of a step (1: none; the interleaved sampling of RAY_MARCH). Step j spans
+// [j - 1 + offset, j + offset] steps, clamped. A split setting's share (`share` > 1) integrates
+// steps part, part + share, ... only, each standing for the `share` steps of its span (times
+// share): a group of shares, part 0 to share - 1, adds up to the whole march, piece for piece.
+vec3 lightShaftMarch(LightShaftRay ray, int steps, float offset, int share, int part)
 {
   LightShaftVariable u = lightShaftVariable(ray);
 #ifdef LIGHTSHAFT_FIELD
@@ -255,19 +278,45 @@ vec3 lightShaftMarch(LightShaftRay ray, int steps, float offset)
     ray.originVC, ray.originVC + (ray.x0 - ray.b) * ray.dirVC);
 #endif
   vec3 radiance = vec3(0.0);
-  float xa = ray.x0;
-  for (int j = 0; j <= steps; ++j)
+  float xa = ray.x0; // (a share's pieces are not adjacent: each starts at its own boundary)
+#ifdef LIGHTSHAFT_FIELD
+  float spanStart = ray.x0;
+#endif
+  for (int first = 0; first <= steps; first += share)
   {
-    float xb =
-      lightShaftPieceBoundary(u.u0, u.u1, (float(j) + offset) / float(steps), u.h, u.constantA);
-    xb = (j == steps) ? ray.x1 : min(xb, ray.x1);
+    int j = first + part;
+    if (share > 1)
+    {
+      xa = lightShaftMarchBoundary(ray, u, j - 1, steps, offset);
+    }
+    float xb = j <= steps ? lightShaftMarchBoundary(ray, u, j, steps, offset) : xa;
+#ifdef LIGHTSHAFT_FIELD
+    float spanEnd =
+      share == 1 ? xb : lightShaftMarchBoundary(ray, u, first + share - 1, steps, offset);
+    if (xb > xa)
+    {
+      lightShaftFieldLead = xa - spanStart;
+      lightShaftFieldTrail = spanEnd - xb;
+    }
+    else
+    {
+      // (The span's medium still dims what lies behind it: at the density where it starts.)
+      lightShaftOpticalDepthSoFar += (spanEnd - spanStart) *
+        lightShaftDensity(ray.originVC + (spanStart - ray.b) * ray.dirVC);
+    }
+    spanStart = spanEnd;
+#endif
     if (xb > xa)
     {
       radiance += lightShaftSegment(ray.originVC, ray.dirVC, ray.b, ray.h2, xa, xb);
     }
-    xa = max(xa, xb);
+    xa = max(xa, xb); // (float's tan may step back an ulp: no piece is integrated twice)
   }
-  return radiance;
+#ifdef LIGHTSHAFT_FIELD
+  lightShaftFieldLead = 0.0;
+  lightShaftFieldTrail = 0.0;
+#endif
+  return radiance * float(share);
 }
 
 // The ray's lit part integrated in `pieces` pieces (lightShaftSegment each, with the lookups

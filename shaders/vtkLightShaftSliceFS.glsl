@@ -17,6 +17,7 @@ uniform float slabEnd;
 uniform float slabThickness;
 uniform float lastSlab;
 uniform float samplingRotation; // in [0, 1): progressive refinement's shift of the offsets
+uniform float sampleWeight; // the slabs each drawn slab stands for (a split setting's share)
 
 #ifdef LIGHTSHAFT_ACCUMULATE_8BIT
 uniform float accumulationScale; // Exposure: the talk's buffers hold displayed values
@@ -36,9 +37,6 @@ void main()
     9.0, 15.0, 7.0, 13.0, 5.0);
   // Refinement's estimates shift every pixel's offset by the same fraction of a slab (0:
   // unchanged), so that each pixel's boundaries visit the whole slab over the estimates.
-  // (A split setting's share keeps the whole per-pixel offset of its longer slabs: putting
-  // its boundaries on the whole setting's instead was measured farther from the whole frame,
-  // 0.43% against 0.26% at 16 shares, its lattice no longer centred on the pixels' slabs.)
   slabOffset = fract((bayer[cell.y * 4 + cell.x] + 0.5) / 16.0 + samplingRotation) - 1.0;
 #endif
   // Neighbouring slabs compute their shared boundary with the same expression: no gap.
@@ -57,7 +55,8 @@ void main()
   lightShaftOpticalDepthSoFar =
     lightShaftOpticalDepth(ray.originVC, ray.originVC + (ray.x0 - ray.b) * ray.dirVC);
 #endif
-  vec3 radiance = lightShaftSegment(ray.originVC, ray.dirVC, ray.b, ray.h2, ray.x0, ray.x1);
+  vec3 radiance =
+    sampleWeight * lightShaftSegment(ray.originVC, ray.dirVC, ray.b, ray.h2, ray.x0, ray.x1);
 
 #ifdef LIGHTSHAFT_ACCUMULATE_8BIT
   // The talk's trick: slab k adds into channel k mod 4 (one RGBA8 buffer per colour).

@@ -265,14 +265,15 @@ def final_after_moving(rate, refinement_frames=2):
 def test_a_still_setting_that_overruns_the_budget_is_split_among_estimates():
     # Moving under a budget nothing fits (a microsecond), the still Final frame would overrun
     # it: each estimate marches a power-of-two share of its steps, the fewest predicted to fit
-    # and 16 steps at least (here: none fits, so 16 steps, 16 estimates a Final frame). The
-    # picture shown is the moving one, bit for bit, until they add up to one Final frame.
+    # and 16 steps a share at least (here: none fits, so 16 estimates a Final frame, each
+    # marching every 16th of its 256 steps). The picture shown is the moving one, bit for bit,
+    # until they add up to one Final frame.
     renderer, window, shafts, (_, factor, _, moving) = final_after_moving(rate=1e6)
     assert factor == 4
     split = FINAL_STEPS // 16
     for estimates in range(1, split):
         frame = shafts.GetLastFrame()
-        assert (frame.GetRefinementSplit(), frame.GetNumberOfSteps()) == (split, 16)
+        assert (frame.GetRefinementSplit(), frame.GetNumberOfSteps()) == (split, FINAL_STEPS)
         assert setting_name(shafts) == "M256 i1 m2048"
         assert frame.GetRefinementEstimates() == estimates and frame.GetRefinementHeld()
         assert frame.GetPredictedError() == -1.0  # the moving picture's: at 1/4, unknown

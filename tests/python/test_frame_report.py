@@ -19,7 +19,7 @@ BEFORE_ANY_FRAME = {
     "Method": -1, "ViewportSize": (0, 0), "NumberOfSceneRenders": 0, "MultiSamples": 0,
     "PlainScene": False, "RendererFXAA": False, "GLErrorCount": 0, "NumberOfSlicesDrawn": 0,
     "SliceDepthRange": (0.0, 0.0), "NumberOfSlabBatches": 0, "LatticeResolution": 0,
-    "NumberOfSteps": 0, "NumberOfPostPasses": 0, "RadialGuardBand": 0.0, "DownsampleFactor": 1,
+    "NumberOfSteps": 0, "LightVolumeResolution": 0, "NumberOfPostPasses": 0, "RadialGuardBand": 0.0, "DownsampleFactor": 1,
     "ShaderVariant": "", "SliceShaderSource": "", "ShadowMapRendered": False,
     "NumberOfShadowCasters": 0, "LightDepthRange": (0.0, 0.0), "ShadowBias": 0.0,
     "PredictedError": -1.0, "ErrorModelSetting": -1, "DepthRangeInBeamWidths": 0.0,
