@@ -117,7 +117,8 @@ def render_converged(window, shafts, max_frames=None, progress=None):
     switches its ProgressiveRefinement on (and leaves it on) and renders until
     GetLastFrame().GetRefinementConverged(), at most `max_frames` estimates (default: its
     RefinementFrames, times the frame's GetRefinementSplit() where a still view after frames
-    under a budget splits its setting among estimates). With ExactFinish on it also waits for
+    under a budget, or a setting too long for one frame (SplitLongFrames), splits its setting
+    among estimates). With ExactFinish on it also waits for
     the exact finish to complete, rendering every 50 ms once the estimates are done.
 
     `progress`: called after every frame with how far the picture is, a float in [0, 1] that

@@ -350,7 +350,9 @@ def frame_segments(shafts, window):
 GROUP_TOLERANCE = {"slices": 1e-5, "ray-march": 1e-5, "epipolar": 1e-3}
 
 
-@pytest.mark.parametrize("filters", [False, True], ids=["unfiltered", "filtered"])
+# (With the filters: a sweep, as they are linear on every VTK.)
+@pytest.mark.parametrize("filters", [False, pytest.param(True, marks=pytest.mark.sweep)],
+                         ids=["unfiltered", "filtered"])
 @pytest.mark.parametrize("method", list(MAXIMA))
 def test_a_long_frame_is_split_and_its_shares_add_up_to_the_whole_frame(method, filters,
                                                                          vtk_messages):
