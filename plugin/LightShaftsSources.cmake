@@ -2,6 +2,7 @@
 # (plugin/CMakeLists.txt) and into the ParaView plugin's module (paraview/plugin/module).
 set(lightshafts_private_classes
   vtkLightShaftAnalyticMethod
+  vtkLightShaftCasterRender
   vtkLightShaftComposite
   vtkLightShaftCostModel
   vtkLightShaftDensityField
@@ -34,6 +35,7 @@ set(lightshafts_private_classes
   vtkLightShaftSceneCheck
   vtkLightShaftSceneRenderer
   vtkLightShaftSeparableFilter
+  vtkLightShaftShaderText
   vtkLightShaftShaders
   vtkLightShaftShadowMap
   vtkLightShaftSlabDrawer
@@ -49,11 +51,13 @@ set(lightshafts_private_classes
 set(lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassReadouts.cxx"
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassSampling.cxx")
 set(lightshafts_private_headers
+  "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftEnums.h"
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftFrame.h"
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftErrorModelTable.h"
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftMediumInternals.h"
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftOpenGL.h"
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftPassInternals.h"
+  "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftReferenceInput.h"
   "${CMAKE_CURRENT_LIST_DIR}/vtkLightShaftSetters.h")
 foreach (class IN LISTS lightshafts_private_classes)
   list(APPEND lightshafts_private_sources "${CMAKE_CURRENT_LIST_DIR}/${class}.cxx")

@@ -1,6 +1,6 @@
 #include "vtkLightShaftCostModel.h"
 
-#include "vtkLightShaftPass.h"
+#include "vtkLightShaftEnums.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,11 +39,11 @@ double PriorPlainFrames(const vtkLightShaftErrorModel::Setting& setting)
   }
   switch (setting.Method)
   {
-    case vtkLightShaftPass::RAY_MARCH:
+    case vtkLightShaftEnums::RAY_MARCH:
       return 2.0 * setting.Samples;
-    case vtkLightShaftPass::EPIPOLAR:
+    case vtkLightShaftEnums::EPIPOLAR:
       return 0.5 * setting.Samples;
-    case vtkLightShaftPass::LIGHT_VOLUME:
+    case vtkLightShaftEnums::LIGHT_VOLUME:
       return 0.1 * setting.Samples;
     default:
       return 0.5 * setting.Samples;
@@ -61,9 +61,9 @@ double ResolutionExponent(const vtkLightShaftErrorModel::Setting& setting)
 {
   switch (setting.Method)
   {
-    case vtkLightShaftPass::EPIPOLAR:
+    case vtkLightShaftEnums::EPIPOLAR:
       return 0.06;
-    case vtkLightShaftPass::LIGHT_VOLUME:
+    case vtkLightShaftEnums::LIGHT_VOLUME:
       return 0.55;
     default:
       return 0.85;
@@ -181,7 +181,7 @@ vtkLightShaftCostModel::Choice vtkLightShaftCostModel::Choose(double budget,
     for (int i = 0; i < vtkLightShaftErrorModel::GetNumberOfSettings(); ++i)
     {
       if (!closedForm &&
-          vtkLightShaftErrorModel::GetSetting(i).Method == vtkLightShaftPass::LIGHT_VOLUME)
+          vtkLightShaftErrorModel::GetSetting(i).Method == vtkLightShaftEnums::LIGHT_VOLUME)
       {
         continue;
       }

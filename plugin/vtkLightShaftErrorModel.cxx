@@ -1,7 +1,7 @@
 #include "vtkLightShaftErrorModel.h"
 
+#include "vtkLightShaftEnums.h"
 #include "vtkLightShaftErrorModelTable.h"
-#include "vtkLightShaftPass.h"
 
 #include <algorithm>
 #include <array>
@@ -121,7 +121,7 @@ Features Describe(const vtkLightShaftGeometry::LightFrame& light,
     for (int i = 0; i < NumberOfSettings; ++i)
     {
       // (LIGHT_VOLUME gives way to RAY_MARCH with a field: nothing to measure.)
-      const bool volume = GetSetting(i).Method == vtkLightShaftPass::LIGHT_VOLUME;
+      const bool volume = GetSetting(i).Method == vtkLightShaftEnums::LIGHT_VOLUME;
       samples[i] = volume ? 0 : GetSetting(i).Samples;
     }
     vtkLightShaftFieldError::Density withExtinction = *density;
@@ -154,6 +154,11 @@ const Setting& GetSetting(int index)
   return vtkLightShaftErrorModelTable::Rows[std::clamp(index, 0, NumberOfSettings - 1)].Ladder;
 }
 
+const char* GetSettingName(int index)
+{
+  return index >= 0 && index < GetNumberOfSettings() ? GetSetting(index).Name : "none";
+}
+
 const Setting& GetPreset(Preset preset)
 {
   const int index[] = { vtkLightShaftErrorModelTable::DraftSetting,
@@ -167,9 +172,9 @@ int FindSetting(const Setting& setting)
   for (int i = 0; i < NumberOfSettings; ++i)
   {
     const Setting& s = GetSetting(i);
-    const bool slices = s.Method == vtkLightShaftPass::SLICES;
-    const bool marched = s.Method == vtkLightShaftPass::RAY_MARCH;
-    const bool epipolar = s.Method == vtkLightShaftPass::EPIPOLAR;
+    const bool slices = s.Method == vtkLightShaftEnums::SLICES;
+    const bool marched = s.Method == vtkLightShaftEnums::RAY_MARCH;
+    const bool epipolar = s.Method == vtkLightShaftEnums::EPIPOLAR;
     if (s.Method == setting.Method && s.Samples == setting.Samples &&
         s.BlurRadius == setting.BlurRadius && s.DownsampleFactor == setting.DownsampleFactor &&
         s.ShadowMapSize == setting.ShadowMapSize && (!slices || s.Jitter == setting.Jitter) &&
@@ -203,7 +208,7 @@ double Predict(int index, const Features& features)
     return std::exp(logError);
   }
   const double factor =
-    GetSetting(std::clamp(index, 0, NumberOfSettings - 1)).Method == vtkLightShaftPass::EPIPOLAR
+    GetSetting(std::clamp(index, 0, NumberOfSettings - 1)).Method == vtkLightShaftEnums::EPIPOLAR
       ? FieldFactorEpipolar
       : FieldFactor;
   const std::size_t setting = std::min<std::size_t>(index, features.FieldError.size() - 1);
@@ -245,7 +250,7 @@ void SetLightLegError(Features& features, double error)
 int Choose(double target, const std::vector<Features>& lights, bool closedForm, double& predicted)
 {
   auto usable = [closedForm](int i)
-  { return closedForm || GetSetting(i).Method != vtkLightShaftPass::LIGHT_VOLUME; };
+  { return closedForm || GetSetting(i).Method != vtkLightShaftEnums::LIGHT_VOLUME; };
   int best = NumberOfSettings - 1;
   while (best > 0 && !usable(best))
   {

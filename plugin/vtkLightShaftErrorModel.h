@@ -81,7 +81,7 @@ constexpr double FieldMargin = 0.5;
 struct Setting
 {
   const char* Name;
-  int Method;  ///< vtkLightShaftPass::SLICES, RAY_MARCH, EPIPOLAR or LIGHT_VOLUME
+  int Method;  ///< vtkLightShaftEnums::SLICES, RAY_MARCH, EPIPOLAR or LIGHT_VOLUME
   int Samples; ///< slices, ray-march steps (EPIPOLAR: per sample), or light-volume cells
   bool Jitter; ///< SLICES
   int BlurRadius;
@@ -96,6 +96,8 @@ struct Setting
 /// The ladder's settings, cheapest first.
 int GetNumberOfSettings();
 const Setting& GetSetting(int index);
+/// A setting's name ("M256 i1 m2048", ...; "none" for an index off the ladder).
+const char* GetSettingName(int index);
 /// The quality presets: each the cheapest setting of the ladder whose training 90th-percentile
 /// error meets the preset's aim (Draft 5%, Interactive 2%, Final 0.5%).
 enum class Preset

@@ -2,7 +2,6 @@
 
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftOpenGL.h"
-#include "vtkLightShaftPass.h"
 #include "vtkLightShaftReferenceJob.h"
 #include "vtkLightShaftReferenceScene.h"
 
@@ -234,7 +233,7 @@ void vtkLightShaftExactFinish::Check(vtkRenderer* renderer)
 
 //------------------------------------------------------------------------------
 void vtkLightShaftExactFinish::Start(vtkLightShaftFrame& frame,
-  vtkLightShaftPass* pass,
+  const vtkLightShaftReferenceInput& input,
   vtkTextureObject* estimate)
 {
   if (this->Current != State::Off)
@@ -247,8 +246,12 @@ void vtkLightShaftExactFinish::Start(vtkLightShaftFrame& frame,
     return;
   }
   auto work = std::make_shared<Work>();
-  this->Problem = work->Job.Prepare(
-    frame.Renderer, pass, pass, frame.Size[0], frame.Size[1], vtkLightShaftReferenceJob::Options());
+  this->Problem = work->Job.Prepare(frame.Renderer,
+    input,
+    frame.Owner,
+    frame.Size[0],
+    frame.Size[1],
+    vtkLightShaftReferenceJob::Options());
   if (!this->Problem.empty())
   {
     this->Current = State::Failed;

@@ -15,7 +15,7 @@
 #include <thread> // For the workers
 #include <vector> // For the workers and the tiles
 
-class vtkLightShaftPass;
+struct vtkLightShaftReferenceInput;
 class vtkOpenGLFramebufferObject;
 class vtkRenderer;
 class vtkTextureObject;
@@ -54,10 +54,13 @@ public:
   };
 
   /**
-   * Start the finish of the frame's still view, the tiles ordered by the brightness of
-   * `estimate` (the picture shown, full resolution; read back once). Does nothing unless Off.
+   * Start the finish of the frame's still view of the `input`'s lights and medium, the tiles
+   * ordered by the brightness of `estimate` (the picture shown, full resolution; read back
+   * once). Does nothing unless Off.
    */
-  void Start(vtkLightShaftFrame& frame, vtkLightShaftPass* pass, vtkTextureObject* estimate);
+  void Start(vtkLightShaftFrame& frame,
+    const vtkLightShaftReferenceInput& input,
+    vtkTextureObject* estimate);
   /**
    * Cancel the workers and forget what they computed: the next Start() begins again. The
    * workers watch the request inside each pixel's integration, so this returns within

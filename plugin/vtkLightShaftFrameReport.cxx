@@ -1,9 +1,10 @@
 #include "vtkLightShaftFrameReport.h"
 
 #include "vtkLight.h"
+#include "vtkLightShaftEnums.h"
+#include "vtkLightShaftErrorModel.h"
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftLights.h"
-#include "vtkLightShaftPass.h"
 #include "vtkObjectFactory.h"
 #include "vtkVolume.h"
 #include "vtkWeakPointer.h"
@@ -238,7 +239,7 @@ double vtkLightShaftFrameReport::GetLightTranslucentBytes(int index)
 void vtkLightShaftFrameReport::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Method: " << vtkLightShaftPass::GetMethodName(this->Method) << "\n";
+  os << indent << "Method: " << vtkLightShaftEnums::MethodName(this->Method) << "\n";
   os << indent << "ViewportSize: (" << this->ViewportSize[0] << ", " << this->ViewportSize[1]
      << ")\n";
   os << indent << "PlainScene: " << this->PlainScene << "\n";
@@ -251,8 +252,9 @@ void vtkLightShaftFrameReport::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MediumFitted: " << this->MediumFitted << "\n";
   os << indent << "ShadowMapRendered: " << this->ShadowMapRendered << "\n";
   os << indent << "PredictedError: " << this->PredictedError << "\n";
-  os << indent << "ErrorModelSetting: "
-     << vtkLightShaftPass::GetErrorModelSettingName(this->ErrorModelSetting) << "\n";
+  os << indent
+     << "ErrorModelSetting: " << vtkLightShaftErrorModel::GetSettingName(this->ErrorModelSetting)
+     << "\n";
   os << indent << "TimeBudget: " << this->TimeBudget << "\n";
   os << indent << "FrameTime: " << this->FrameTime << "\n";
   os << indent << "RefinementEstimates: " << this->RefinementEstimates << "\n";

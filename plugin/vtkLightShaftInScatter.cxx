@@ -1,7 +1,7 @@
 #include "vtkLightShaftInScatter.h"
 
+#include "vtkLightShaftEnums.h"
 #include "vtkLightShaftFrame.h"
-#include "vtkLightShaftPass.h"
 
 #include "vtkObject.h"
 #include "vtkProp.h"
@@ -23,15 +23,15 @@ vtkLightShaftMethod* vtkLightShaftInScatter::GetMethod(int method)
 {
   switch (method)
   {
-    case vtkLightShaftPass::RAY_MARCH:
+    case vtkLightShaftEnums::RAY_MARCH:
       return &this->RayMarch;
-    case vtkLightShaftPass::RADIAL_BLUR:
+    case vtkLightShaftEnums::RADIAL_BLUR:
       return &this->RadialBlur;
-    case vtkLightShaftPass::ANALYTIC:
+    case vtkLightShaftEnums::ANALYTIC:
       return &this->Analytic;
-    case vtkLightShaftPass::EPIPOLAR:
+    case vtkLightShaftEnums::EPIPOLAR:
       return &this->Epipolar;
-    case vtkLightShaftPass::LIGHT_VOLUME:
+    case vtkLightShaftEnums::LIGHT_VOLUME:
       return &this->LightVolume;
     default:
       return &this->Slices;
@@ -41,8 +41,8 @@ vtkLightShaftMethod* vtkLightShaftInScatter::GetMethod(int method)
 //------------------------------------------------------------------------------
 bool vtkLightShaftInScatter::RendersField(int method)
 {
-  return method == vtkLightShaftPass::SLICES || method == vtkLightShaftPass::RAY_MARCH ||
-         method == vtkLightShaftPass::EPIPOLAR;
+  return method == vtkLightShaftEnums::SLICES || method == vtkLightShaftEnums::RAY_MARCH ||
+         method == vtkLightShaftEnums::EPIPOLAR;
 }
 
 //------------------------------------------------------------------------------
@@ -66,22 +66,22 @@ int vtkLightShaftInScatter::ChooseMethod(vtkLightShaftFrame& frame)
       warned = true;
     }
   };
-  if (method == vtkLightShaftPass::AUTOMATIC)
+  if (method == vtkLightShaftEnums::AUTOMATIC)
   {
     const bool noise = p.NoiseAmplitude > 0.0;
-    method = frame.Density                              ? vtkLightShaftPass::RAY_MARCH
-             : (!frame.Light.ShadowsPossible && !noise) ? vtkLightShaftPass::ANALYTIC
-                                                        : vtkLightShaftPass::SLICES;
+    method = frame.Density                              ? vtkLightShaftEnums::RAY_MARCH
+             : (!frame.Light.ShadowsPossible && !noise) ? vtkLightShaftEnums::ANALYTIC
+                                                        : vtkLightShaftEnums::SLICES;
   }
   if (frame.Density && !vtkLightShaftInScatter::RendersField(method))
   {
     say(this->WarnedFieldMethod,
       std::string("A medium from data (MediumDensity) is rendered by SLICES, RAY_MARCH and "
                   "EPIPOLAR: RAY_MARCH computes the shafts instead of method ") +
-        vtkLightShaftPass::GetMethodName(method) + ".");
-    return vtkLightShaftPass::RAY_MARCH;
+        vtkLightShaftEnums::MethodName(method) + ".");
+    return vtkLightShaftEnums::RAY_MARCH;
   }
-  if (method == vtkLightShaftPass::ANALYTIC && !frame.Light.Casters.empty())
+  if (method == vtkLightShaftEnums::ANALYTIC && !frame.Light.Casters.empty())
   {
     say(this->WarnedAnalyticShadows,
       "Method ANALYTIC ignores shadows, but " + std::to_string(frame.Light.Casters.size()) +
@@ -92,7 +92,7 @@ int vtkLightShaftInScatter::ChooseMethod(vtkLightShaftFrame& frame)
     std::any_of(frame.Light.Casters.begin(),
       frame.Light.Casters.end(),
       [](vtkProp* prop) { return prop->HasTranslucentPolygonalGeometry() != 0; });
-  if (method == vtkLightShaftPass::LIGHT_VOLUME && (frame.Cookie || frame.Noise || translucent))
+  if (method == vtkLightShaftEnums::LIGHT_VOLUME && (frame.Cookie || frame.Noise || translucent))
   {
     // The unshadowed integral up to a crossing is in closed form only without them; its mesh
     // is the opaque casters' shadow.
@@ -102,7 +102,7 @@ int vtkLightShaftInScatter::ChooseMethod(vtkLightShaftFrame& frame)
           : frame.Noise ? "density noise"
                         : "translucent casters") +
         ": RAY_MARCH computes the shafts of a light that has one.");
-    method = vtkLightShaftPass::RAY_MARCH;
+    method = vtkLightShaftEnums::RAY_MARCH;
   }
   return method;
 }

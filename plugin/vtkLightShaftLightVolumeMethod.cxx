@@ -2,6 +2,7 @@
 
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftInScatterTarget.h"
+#include "vtkLightShaftShadowMap.h"
 #include "vtkLightShaftSlabDrawer.h"
 
 #include "vtkLightShaftOpenGL.h"

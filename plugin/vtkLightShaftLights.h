@@ -25,39 +25,6 @@ class vtkRenderer;
 class vtkWindow;
 
 /**
- * What a frame did for one of its lights; published as vtkLightShaftFrameReport's GetLight*
- * read-outs.
- */
-struct vtkLightShaftLightStatistics
-{
-  int Kind = -1;
-  int Method = -1;
-  int SlicesDrawn = 0;
-  bool ShadowMapRendered = false;
-  bool ShadowMapReused = false;
-  int ShadowCasters = 0;
-  double LightDepthRange[2] = { 0.0, 0.0 }; ///< of its shadow map, when it had one
-  double ShadowBias = 0.0;                  ///< of its shadow map, when it had one
-  double Time = -1.0;                       ///< GPU milliseconds (timer queries), -1: unknown
-  /// The field's light-leg texture (vtkLightShaftFieldShadow): its bytes (0: none) and the
-  /// milliseconds its build took this frame (0: reused).
-  double FieldShadowBytes = 0.0;
-  double FieldShadowBuildTime = 0.0;
-  /// The same for the scene's vtkVolume's light-leg texture.
-  double VolumeShadowBytes = 0.0;
-  double VolumeShadowBuildTime = 0.0;
-  /// Its translucent casters' layers (vtkLightShaftTranslucentLayers): how many (0: none),
-  /// their bytes, and whether they were peeled this frame (not reused).
-  int TranslucentLayers = 0;
-  double TranslucentBytes = 0.0;
-  bool TranslucentLayersRendered = false;
-  std::string ShaderVariant;
-  /// Why the light's method gave way to another, or was used with a caveat (empty: as set).
-  std::string MethodFallback;
-  vtkWeakPointer<vtkLight> Light;
-};
-
-/**
  * One used light's state, kept from frame to frame while the light is used: its shadow map
  * (reused while nothing that decides it changes) and the timer of its in-scatter.
  */

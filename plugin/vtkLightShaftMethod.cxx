@@ -1,7 +1,7 @@
 #include "vtkLightShaftMethod.h"
 
+#include "vtkLightShaftEnums.h"
 #include "vtkLightShaftFrame.h"
-#include "vtkLightShaftPass.h"
 #include "vtkLightShaftShadowMap.h"
 
 #include "vtkObject.h"
@@ -17,7 +17,7 @@ vtkLightShaftResources::TextureKind vtkLightShaftMethod::AccumulationKind(
   int& buffers) const
 {
   buffers = 1;
-  return parameters.AccumulationPrecision == vtkLightShaftPass::ACCUMULATE_FLOAT16
+  return parameters.AccumulationPrecision == vtkLightShaftEnums::ACCUMULATE_FLOAT16
            ? vtkLightShaftResources::TextureKind::RGBA16F
            : vtkLightShaftResources::TextureKind::RGBA32F;
 }
@@ -25,7 +25,7 @@ vtkLightShaftResources::TextureKind vtkLightShaftMethod::AccumulationKind(
 //------------------------------------------------------------------------------
 const char* vtkLightShaftMethod::FloatAccumulation(const vtkLightShaftParameters& parameters)
 {
-  return parameters.AccumulationPrecision == vtkLightShaftPass::ACCUMULATE_FLOAT16
+  return parameters.AccumulationPrecision == vtkLightShaftEnums::ACCUMULATE_FLOAT16
            ? " accumulate=float16"
            : " accumulate=float32";
 }

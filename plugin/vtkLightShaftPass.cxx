@@ -3,6 +3,7 @@
 
 #include "vtkLightShaftComposite.h"
 #include "vtkLightShaftDensityField.h"
+#include "vtkLightShaftEnums.h"
 #include "vtkLightShaftErrorModel.h"
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftFrameReport.h"
@@ -284,9 +285,7 @@ void vtkLightShaftPass::SetTargetError(double error)
 
 const char* vtkLightShaftPass::GetErrorModelSettingName(int setting)
 {
-  return setting >= 0 && setting < vtkLightShaftErrorModel::GetNumberOfSettings()
-           ? vtkLightShaftErrorModel::GetSetting(setting).Name
-           : "none";
+  return vtkLightShaftErrorModel::GetSettingName(setting);
 }
 
 void vtkLightShaftPass::SetDecay(double decay)
@@ -306,26 +305,34 @@ void vtkLightShaftPass::SetWeight(double weight)
 
 const char* vtkLightShaftPass::GetMethodName(int method)
 {
-  switch (method)
-  {
-    case SLICES:
-      return "slices";
-    case RAY_MARCH:
-      return "ray-march";
-    case RADIAL_BLUR:
-      return "radial-blur";
-    case ANALYTIC:
-      return "analytic";
-    case AUTOMATIC:
-      return "automatic";
-    case EPIPOLAR:
-      return "epipolar";
-    case LIGHT_VOLUME:
-      return "light-volume";
-    default:
-      return "none";
-  }
+  return vtkLightShaftEnums::MethodName(method);
 }
+
+// The public enums are the layers' (vtkLightShaftEnums.h), for the wrappers to read.
+namespace
+{
+constexpr bool Same(int a, int b)
+{
+  return a == b;
+}
+}
+static_assert(Same(vtkLightShaftPass::SLICES, vtkLightShaftEnums::SLICES) &&
+                Same(vtkLightShaftPass::RAY_MARCH, vtkLightShaftEnums::RAY_MARCH) &&
+                Same(vtkLightShaftPass::RADIAL_BLUR, vtkLightShaftEnums::RADIAL_BLUR) &&
+                Same(vtkLightShaftPass::ANALYTIC, vtkLightShaftEnums::ANALYTIC) &&
+                Same(vtkLightShaftPass::AUTOMATIC, vtkLightShaftEnums::AUTOMATIC) &&
+                Same(vtkLightShaftPass::EPIPOLAR, vtkLightShaftEnums::EPIPOLAR) &&
+                Same(vtkLightShaftPass::LIGHT_VOLUME, vtkLightShaftEnums::LIGHT_VOLUME),
+  "the methods' values");
+static_assert(
+  Same(vtkLightShaftPass::ACCUMULATE_FLOAT32, vtkLightShaftEnums::ACCUMULATE_FLOAT32) &&
+    Same(vtkLightShaftPass::ACCUMULATE_FLOAT16, vtkLightShaftEnums::ACCUMULATE_FLOAT16) &&
+    Same(vtkLightShaftPass::ACCUMULATE_8BIT, vtkLightShaftEnums::ACCUMULATE_8BIT),
+  "the precisions' values");
+static_assert(
+  Same(vtkLightShaftPass::ShadowMapRenderedEvent, vtkLightShaftEnums::ShadowMapRenderedEvent) &&
+    Same(vtkLightShaftPass::RefinementNeededEvent, vtkLightShaftEnums::RefinementNeededEvent),
+  "the events' ids");
 
 namespace
 {
@@ -756,8 +763,9 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
       this->Refinement.GetEstimates() > 0)
   {
     finishStarts = !this->Finish.IsActive();
-    this->Finish.Start(
-      frame, static_cast<vtkLightShaftPass*>(frame.Owner), this->Refinement.GetHistory());
+    this->Finish.Start(frame,
+      vtkLightShaftPassReferenceInput(static_cast<vtkLightShaftPass*>(frame.Owner)),
+      this->Refinement.GetHistory());
     finishStarts = finishStarts && this->Finish.IsActive();
   }
   using FinishState = vtkLightShaftExactFinish::State;

@@ -10,22 +10,23 @@
 
 #include "vtkLightShaftPass.h"
 
-#include "vtkLightShaftComposite.h"     // For the composite
-#include "vtkLightShaftCostModel.h"     // For the frame budget's cost model
-#include "vtkLightShaftErrorModel.h"    // For the error model's features
-#include "vtkLightShaftExactFinish.h"   // For the exact finish
-#include "vtkLightShaftFrame.h"         // For the frame
-#include "vtkLightShaftFrameReport.h"   // For the last frame's read-outs
-#include "vtkLightShaftInScatter.h"     // For the in-scatter
-#include "vtkLightShaftLightTextures.h" // For the cookie and noise
-#include "vtkLightShaftLights.h"        // For the lights
-#include "vtkLightShaftMedium.h"        // For the medium
-#include "vtkLightShaftMediumTexture.h" // For the medium's density field
-#include "vtkLightShaftRefinement.h"    // For the progressive refinement
-#include "vtkLightShaftSceneCheck.h"    // For what of the scene cannot be used
-#include "vtkLightShaftSceneRenderer.h" // For the scene
-#include "vtkLightShaftSurfaceLight.h"  // For the surface light
-#include "vtkLightShaftVolumeTexture.h" // For the scene's volume
+#include "vtkLightShaftComposite.h"      // For the composite
+#include "vtkLightShaftCostModel.h"      // For the frame budget's cost model
+#include "vtkLightShaftErrorModel.h"     // For the error model's features
+#include "vtkLightShaftExactFinish.h"    // For the exact finish
+#include "vtkLightShaftFrame.h"          // For the frame
+#include "vtkLightShaftFrameReport.h"    // For the last frame's read-outs
+#include "vtkLightShaftInScatter.h"      // For the in-scatter
+#include "vtkLightShaftLightTextures.h"  // For the cookie and noise
+#include "vtkLightShaftLights.h"         // For the lights
+#include "vtkLightShaftMedium.h"         // For the medium
+#include "vtkLightShaftMediumTexture.h"  // For the medium's density field
+#include "vtkLightShaftReferenceInput.h" // For the reference's input
+#include "vtkLightShaftRefinement.h"     // For the progressive refinement
+#include "vtkLightShaftSceneCheck.h"     // For what of the scene cannot be used
+#include "vtkLightShaftSceneRenderer.h"  // For the scene
+#include "vtkLightShaftSurfaceLight.h"   // For the surface light
+#include "vtkLightShaftVolumeTexture.h"  // For the scene's volume
 
 #include "vtkCallbackCommand.h"         // For the window's deletion
 #include "vtkNew.h"                     // For vtkNew
@@ -188,5 +189,12 @@ public:
   std::string ShaderVariants(const vtkLightShaftFrame& frame) const;
   const char* ShaderSource() const;
 };
+
+/**
+ * The float64 reference's input from `pass`, through its public read-outs: its lights, medium,
+ * cookie, shadow casters' bounds, and the last frame's shadow maps (for vtkLightShaftReference
+ * and the exact finish: the reference never reads the pass).
+ */
+vtkLightShaftReferenceInput vtkLightShaftPassReferenceInput(vtkLightShaftPass* pass);
 
 #endif

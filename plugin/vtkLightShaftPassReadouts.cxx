@@ -106,3 +106,41 @@ bool vtkLightShaftPass::GetLastShadowMap(vtkImageData* depths,
   return this->Impl->Lights.StateOf(light).ShadowMap.ReadBack(
     this->Impl->Window, depths, worldToLightClip);
 }
+
+//------------------------------------------------------------------------------
+vtkLightShaftReferenceInput vtkLightShaftPassReferenceInput(vtkLightShaftPass* pass)
+{
+  vtkLightShaftReferenceInput input;
+  for (int i = 0; i < pass->GetNumberOfLights(); ++i)
+  {
+    input.Lights.push_back(pass->GetLight(i));
+  }
+  input.Medium = pass->GetMedium();
+  input.Cookie = pass->GetCookie();
+  input.CasterBoundsGiven = pass->GetShadowCasterBounds(input.CasterBounds);
+  // (The report's depth range and bias are its first mapped light's: one light only.)
+  input.LastShadowMap = [pass](vtkLight* light,
+                          vtkImageData* depths,
+                          vtkMatrix4x4* worldToLightClip,
+                          double depthRange[2],
+                          double& bias)
+  {
+    vtkLightShaftFrameReport* last = pass->GetLastFrame();
+    for (int i = 0; i < last->GetNumberOfUsedLights(); ++i)
+    {
+      if (last->GetUsedLight(i) == light)
+      {
+        if (!pass->GetLastShadowMap(depths, worldToLightClip, i))
+        {
+          return false;
+        }
+        depthRange[0] = last->GetLightDepthRange()[0];
+        depthRange[1] = last->GetLightDepthRange()[1];
+        bias = last->GetShadowBias();
+        return true;
+      }
+    }
+    return false;
+  };
+  return input;
+}

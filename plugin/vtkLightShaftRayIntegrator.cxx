@@ -5,7 +5,7 @@
 #include "vtkLightShaftMedium.h"
 #include "vtkLightShaftModel.h"
 #include "vtkLightShaftNoise.h"
-#include "vtkLightShaftPass.h"
+#include "vtkLightShaftReferenceInput.h"
 
 #include <algorithm>
 #include <limits>
@@ -464,11 +464,11 @@ RGB Model::Integrand(const Vec& origin, const Vec& dir, double t) const
 
 //------------------------------------------------------------------------------
 Model MakeModel(vtkLight* light,
-  vtkLightShaftPass* pass,
+  const vtkLightShaftReferenceInput& input,
   std::shared_ptr<const vtkLightShaftDensityField> field)
 {
   const vtkLightShaftModel::Light described = vtkLightShaftModel::DescribeLight(light);
-  vtkLightShaftMedium* given = pass->GetMedium();
+  vtkLightShaftMedium* given = input.Medium;
   const vtkLightShaftModel::Medium medium =
     vtkLightShaftModel::DescribeMedium(given->GetScatteringCoefficient(),
       given->GetAbsorptionCoefficient(),
@@ -501,9 +501,8 @@ Model MakeModel(vtkLight* light,
   model.SquareSide = described.SquareSide;
 
   // A point light ignores the cookie (the pass says so once).
-  if (model.Kind != vtkLightShaftModel::LightKind::Point && pass->GetCookie() &&
-      !vtkLightShaftImageToRGB(
-        pass->GetCookie(), model.Cookie, model.CookieWidth, model.CookieHeight))
+  if (model.Kind != vtkLightShaftModel::LightKind::Point && input.Cookie &&
+      !vtkLightShaftImageToRGB(input.Cookie, model.Cookie, model.CookieWidth, model.CookieHeight))
   {
     model.Cookie.clear(); // the pass ignores a cookie without an image too
   }

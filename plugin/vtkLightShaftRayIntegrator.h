@@ -20,7 +20,7 @@
 
 class vtkLight;
 class vtkLightShaftDensityField;
-class vtkLightShaftPass;
+struct vtkLightShaftReferenceInput;
 
 namespace vtkLightShaftRayIntegrator
 {
@@ -197,12 +197,12 @@ private:
 };
 
 /**
- * The model of `light` with `pass`'s medium, cookie and noise, read and laid out as the pass
- * reads and lays them out (level 0 of their images, bilinear; the pass pre-filters by
+ * The model of `light` with the `input`'s medium, cookie and noise, read and laid out as the
+ * pass reads and lays them out (level 0 of their images, bilinear; the pass pre-filters by
  * footprint, which differs only where the texture varies within a pixel's footprint).
  */
 Model MakeModel(vtkLight* light,
-  vtkLightShaftPass* pass,
+  const vtkLightShaftReferenceInput& input,
   std::shared_ptr<const vtkLightShaftDensityField> field = nullptr);
 
 /**

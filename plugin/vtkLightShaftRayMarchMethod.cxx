@@ -1,8 +1,8 @@
 #include "vtkLightShaftRayMarchMethod.h"
 
+#include "vtkLightShaftEnums.h"
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftInScatterTarget.h"
-#include "vtkLightShaftPass.h"
 #include "vtkLightShaftSlabDrawer.h"
 
 #include "vtkShaderProgram.h"

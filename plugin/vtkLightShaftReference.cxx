@@ -10,6 +10,7 @@
 #include "vtkLightShaftMedium.h"
 #include "vtkLightShaftModel.h"
 #include "vtkLightShaftPass.h"
+#include "vtkLightShaftPassInternals.h"
 #include "vtkLightShaftReferenceJob.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -196,7 +197,8 @@ int vtkLightShaftReference::RequestData(vtkInformation*,
   options.UseClosedForms = this->UseClosedForms;
   options.MaximumEvaluations = static_cast<long long>(this->MaximumEvaluations);
   vtkLightShaftReferenceJob job;
-  const std::string problem = job.Prepare(ren, pass, this, width, height, options);
+  const std::string problem =
+    job.Prepare(ren, vtkLightShaftPassReferenceInput(pass), this, width, height, options);
   this->LastNumberOfLights = job.GetNumberOfLights();
   if (!problem.empty())
   {

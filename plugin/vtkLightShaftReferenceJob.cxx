@@ -5,11 +5,10 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightShaftDensityField.h"
-#include "vtkLightShaftFrameReport.h"
 #include "vtkLightShaftGeometry.h"
 #include "vtkLightShaftMedium.h"
 #include "vtkLightShaftModel.h"
-#include "vtkLightShaftPass.h"
+#include "vtkLightShaftReferenceInput.h"
 #include "vtkLightShaftVolumeField.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -165,11 +164,11 @@ struct CameraRays
 };
 
 /**
- * Set `scene` to decide visibility with the pass's shadow map of the one light used; what is
- * wrong otherwise (empty: nothing). One light only: the pass publishes the depth range and
- * bias of its first mapped light; a point light's cube map is not read back.
+ * Set `scene` to decide visibility with the `input`'s last shadow map of the one light used;
+ * what is wrong otherwise (empty: nothing). One light only: the pass publishes the depth range
+ * and bias of its first mapped light; a point light's cube map is not read back.
  */
-std::string UseShadowMap(vtkLightShaftPass* pass,
+std::string UseShadowMap(const vtkLightShaftReferenceInput& input,
   vtkLightShaftReferenceScene& scene,
   const std::vector<vtkLight*>& lights,
   const std::vector<Model>& models)
@@ -188,16 +187,7 @@ std::string UseShadowMap(vtkLightShaftPass* pass,
                " visibility).";
     return problem.str();
   }
-  int index = -1;
-  vtkLightShaftFrameReport* last = pass->GetLastFrame();
-  for (int i = 0; i < last->GetNumberOfUsedLights(); ++i)
-  {
-    if (last->GetUsedLight(i) == lights[0])
-    {
-      index = i;
-    }
-  }
-  if (index < 0 || !scene.UseShadowMap(pass, index, models[0]))
+  if (!scene.UseShadowMap(input, lights[0], models[0]))
   {
     problem << "SHADOW_MAP visibility: the pass rendered no shadow map for light " << lights[0]
             << " in its last frame.";
@@ -207,12 +197,13 @@ std::string UseShadowMap(vtkLightShaftPass* pass,
 
 /// The backdrop's view depth as the pass takes it (vtkLightShaftModel::BackdropDepth); 0, no
 /// ray, when the scene is not in view.
-double Backdrop(vtkRenderer* renderer, vtkLightShaftPass* pass, vtkImageData* density)
+double Backdrop(vtkRenderer* renderer,
+  const vtkLightShaftReferenceInput& input,
+  vtkImageData* density)
 {
-  double given[6];
-  const bool distributed = pass->GetShadowCasterBounds(given);
   double bounds[6];
-  if (!vtkLightShaftModel::SceneBounds(renderer, distributed ? given : nullptr, density, bounds))
+  const double* given = input.CasterBoundsGiven ? input.CasterBounds : nullptr;
+  if (!vtkLightShaftModel::SceneBounds(renderer, given, density, bounds))
   {
     return 0.0;
   }
@@ -232,7 +223,7 @@ vtkLightShaftReferenceJob::~vtkLightShaftReferenceJob() = default;
 
 //------------------------------------------------------------------------------
 std::string vtkLightShaftReferenceJob::Prepare(vtkRenderer* renderer,
-  vtkLightShaftPass* pass,
+  const vtkLightShaftReferenceInput& input,
   vtkObject* caller,
   int width,
   int height,
@@ -246,19 +237,14 @@ std::string vtkLightShaftReferenceJob::Prepare(vtkRenderer* renderer,
   this->Tracers.reset();
 
   // The lights, chosen as the pass chooses them, and the model of each with the medium.
-  std::vector<vtkLight*> given;
-  for (int i = 0; i < pass->GetNumberOfLights(); ++i)
-  {
-    given.push_back(pass->GetLight(i));
-  }
   std::shared_ptr<vtkLightShaftDensityField> field;
-  vtkImageData* density = pass->GetMedium()->UpdateDensityField(caller);
+  vtkImageData* density = input.Medium->UpdateDensityField(caller);
   this->Camera.reset(new Rays(
-    renderer->GetActiveCamera(), Backdrop(renderer, pass, density), this->Width, this->Height));
+    renderer->GetActiveCamera(), Backdrop(renderer, input, density), this->Width, this->Height));
   if (density)
   {
     field = std::make_shared<vtkLightShaftDensityField>();
-    const std::string why = field->Read(density, pass->GetMedium()->GetDensityArrayName());
+    const std::string why = field->Read(density, input.Medium->GetDensityArrayName());
     if (!why.empty())
     {
       return "DensityField: the image " + why + ".";
@@ -267,11 +253,11 @@ std::string vtkLightShaftReferenceJob::Prepare(vtkRenderer* renderer,
   // The scene's volume (the first visible vtkVolume, as the pass takes it): its extinction
   // dims both legs.
   std::shared_ptr<const vtkLightShaftDensityField> extinction =
-    VolumeExtinction(renderer, pass->GetMedium()->GetDensityVolume());
+    VolumeExtinction(renderer, input.Medium->GetDensityVolume());
   std::vector<vtkLight*> used;
-  for (vtkLight* light : vtkLightShaftModel::FindLights(given, renderer))
+  for (vtkLight* light : vtkLightShaftModel::FindLights(input.Lights, renderer))
   {
-    this->Models.push_back(MakeModel(light, pass, field));
+    this->Models.push_back(MakeModel(light, input, field));
     this->Models.back().Extinction = extinction;
     used.push_back(light);
   }
@@ -288,7 +274,7 @@ std::string vtkLightShaftReferenceJob::Prepare(vtkRenderer* renderer,
   this->Scene.Capture(renderer);
   if (options.ShadowMapVisibility)
   {
-    const std::string problem = UseShadowMap(pass, this->Scene, used, this->Models);
+    const std::string problem = UseShadowMap(input, this->Scene, used, this->Models);
     if (!problem.empty())
     {
       this->Models.clear();

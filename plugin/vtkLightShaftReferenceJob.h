@@ -16,7 +16,7 @@
 #include <vector> // For the models
 
 class vtkLight;
-class vtkLightShaftPass;
+struct vtkLightShaftReferenceInput;
 class vtkObject;
 class vtkRenderer;
 
@@ -63,12 +63,13 @@ public:
   };
 
   /**
-   * Capture `renderer`'s scene as `pass` sees it, for a `width` x `height` image of its active
-   * camera. `caller` updates the medium's density pipeline. Returns what is wrong (empty:
-   * ready; a job with no usable light integrates zeros).
+   * Capture `renderer`'s scene with the `input`'s lights and medium (as the pass sees them), for
+   * a `width` x `height` image of its active camera. `caller` updates the medium's density
+   * pipeline. Returns what is wrong (empty: ready; a job with no usable light integrates
+   * zeros).
    */
   std::string Prepare(vtkRenderer* renderer,
-    vtkLightShaftPass* pass,
+    const vtkLightShaftReferenceInput& input,
     vtkObject* caller,
     int width,
     int height,

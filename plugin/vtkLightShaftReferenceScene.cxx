@@ -7,8 +7,7 @@
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
-#include "vtkLightShaftFrameReport.h"
-#include "vtkLightShaftPass.h"
+#include "vtkLightShaftReferenceInput.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -160,12 +159,14 @@ void vtkLightShaftReferenceScene::AddTriangles(vtkPolyData* polydata,
 }
 
 //------------------------------------------------------------------------------
-bool vtkLightShaftReferenceScene::UseShadowMap(vtkLightShaftPass* pass,
-  int index,
-  const vtkLightShaftRayIntegrator::Model& light)
+bool vtkLightShaftReferenceScene::UseShadowMap(const vtkLightShaftReferenceInput& input,
+  vtkLight* light,
+  const vtkLightShaftRayIntegrator::Model& model)
 {
-  if (light.Kind == vtkLightShaftModel::LightKind::Point ||
-      !pass->GetLastShadowMap(this->ShadowDepths, this->WorldToLightClip, index))
+  double depthRange[2] = { 0.0, 0.0 };
+  double bias = 0.0;
+  if (model.Kind == vtkLightShaftModel::LightKind::Point || !input.LastShadowMap ||
+      !input.LastShadowMap(light, this->ShadowDepths, this->WorldToLightClip, depthRange, bias))
   {
     return false;
   }
@@ -173,9 +174,9 @@ bool vtkLightShaftReferenceScene::UseShadowMap(vtkLightShaftPass* pass,
   this->ShadowSize = this->ShadowDepths->GetDimensions()[0];
   this->ShadowTexels =
     vtkFloatArray::SafeDownCast(this->ShadowDepths->GetPointData()->GetScalars())->GetPointer(0);
-  this->LightNear = pass->GetLastFrame()->GetLightDepthRange()[0];
-  this->LightFar = pass->GetLastFrame()->GetLightDepthRange()[1];
-  this->ShadowBias = pass->GetLastFrame()->GetShadowBias();
+  this->LightNear = depthRange[0];
+  this->LightFar = depthRange[1];
+  this->ShadowBias = bias;
   return true;
 }
 

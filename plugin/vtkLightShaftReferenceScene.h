@@ -19,7 +19,8 @@
 
 class vtkActor;
 class vtkImageData;
-class vtkLightShaftPass;
+class vtkLight;
+struct vtkLightShaftReferenceInput;
 class vtkMatrix4x4;
 class vtkPolyData;
 class vtkRenderer;
@@ -65,15 +66,15 @@ public:
   static std::vector<vtkPolyData*> Surfaces(vtkActor* actor, bool& polygonal);
 
   /**
-   * Decide visibility with the last shadow map of `pass`'s `index`-th used light, whose model
-   * is `light` (nearest texel, the pass's bias), instead of the exact rays: a spot's
-   * perspective map (relative bias) or a directional light's orthographic one (linear depth,
-   * absolute bias). False when that light had no shadow map in the last frame (and for a point
-   * light: its cube map is not read back).
+   * Decide visibility with the `input`'s last shadow map of `light`, whose model is `model`
+   * (nearest texel, the pass's bias), instead of the exact rays: a spot's perspective map
+   * (relative bias) or a directional light's orthographic one (linear depth, absolute bias).
+   * False when that light had no shadow map in the last frame (and for a point light: its cube
+   * map is not read back).
    */
-  bool UseShadowMap(vtkLightShaftPass* pass,
-    int index,
-    const vtkLightShaftRayIntegrator::Model& light);
+  bool UseShadowMap(const vtkLightShaftReferenceInput& input,
+    vtkLight* light,
+    const vtkLightShaftRayIntegrator::Model& model);
 
   /**
    * The scene's queries for one thread.
@@ -153,22 +154,6 @@ public:
 
   private:
     const vtkLightShaftReferenceScene& Scene;
-    /// The segment from x to the light (back to a directional light's plane), shortened at
-    /// both ends by a hair; false when there is none (x on or before the plane).
-    static bool ToLight(const Vec& x,
-      const vtkLightShaftRayIntegrator::Model& light,
-      Vec& from,
-      Vec& to);
-    /// Whether an opaque surface shadows x.
-    bool Shadowed(const Vec& x, const vtkLightShaftRayIntegrator::Model& light);
-    /// The interval of t where the triangles that shadow x shadow origin + t dir (their
-    /// shadow volumes' union, which holds x); false when one is degenerate.
-    bool ShadowOf(const Vec& x,
-      const vtkLightShaftRayIntegrator::Model& light,
-      const Vec& origin,
-      const Vec& dir,
-      double& first,
-      double& last);
     std::mutex Mutex;
     std::vector<std::unique_ptr<Tracer>> Free;
   };

@@ -1,8 +1,8 @@
 #include "vtkLightShaftRefinement.h"
 
+#include "vtkLightShaftEnums.h"
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftModel.h"
-#include "vtkLightShaftPass.h"
 
 #include "vtkLight.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -241,7 +241,7 @@ double FirstFilterSamples(const vtkLightShaftFrame& frame)
     p.InterleaveSize > 1 && std::any_of(frame.Statistics.Lights.begin(),
                               frame.Statistics.Lights.end(),
                               [](const vtkLightShaftLightStatistics& light)
-                              { return light.Method == vtkLightShaftPass::RAY_MARCH; });
+                              { return light.Method == vtkLightShaftEnums::RAY_MARCH; });
   if (gathered)
   {
     weights = Filter::Kernel::Gather(p.InterleaveSize).Weights();

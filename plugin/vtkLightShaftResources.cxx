@@ -1,6 +1,6 @@
 #include "vtkLightShaftResources.h"
 
-#include "vtkLightShaftShaders.h"
+#include "vtkLightShaftShaderText.h"
 
 #include "vtkLightShaftOpenGL.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -97,10 +97,10 @@ vtkShaderProgram* FullScreenPass::Ready(vtkOpenGLRenderWindow* window,
   const char* source,
   const std::vector<std::string>& defines)
 {
-  const std::string key = vtkLightShaftShaders::JoinDefines(defines);
+  const std::string key = vtkLightShaftShaderText::JoinDefines(defines);
   if (!this->Quad || this->Key != key)
   {
-    const std::string fragment = vtkLightShaftShaders::WithFeatures(source, defines);
+    const std::string fragment = vtkLightShaftShaderText::WithFeatures(source, defines);
     this->Quad.reset(new vtkOpenGLQuadHelper(window, nullptr, fragment.c_str(), ""));
     this->Key = key;
   }

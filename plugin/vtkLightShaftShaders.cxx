@@ -5,54 +5,18 @@
 #include "vtkLightShaftGeometry.h"
 #include "vtkLightShaftMedium.h"
 #include "vtkLightShaftMediumTexture.h"
-#include "vtkLightShaftPass.h"
+#include "vtkLightShaftShaderText.h"
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
-#include "vtkLightShaftCameraLayers.h"
-#include "vtkLightShaftCommon.h"
-#include "vtkLightShaftField.h"
-#include "vtkLightShaftIntegrand.h"
-#include "vtkLightShaftLightKind.h"
-#include "vtkLightShaftLightSpace.h"
-#include "vtkLightShaftSegment.h"
-#include "vtkLightShaftVolume.h"
-
 #include <algorithm>
 #include <cmath>
 
 namespace vtkLightShaftShaders
 {
-//------------------------------------------------------------------------------
-std::string JoinDefines(const std::vector<std::string>& defines)
-{
-  std::string features;
-  for (const auto& define : defines)
-  {
-    features += "#define " + define + "\n";
-  }
-  return features;
-}
-
-std::string WithFeatures(const char* source, const std::vector<std::string>& defines)
-{
-  std::string out = source;
-  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Features", JoinDefines(defines));
-  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Common", vtkLightShaftCommon);
-  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Integrand", vtkLightShaftIntegrand);
-  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Segment", vtkLightShaftSegment);
-  // Chunks the ones above use (each guarded against being included twice).
-  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::LightSpace", vtkLightShaftLightSpace);
-  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::LightKind", vtkLightShaftLightKind);
-  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Field", vtkLightShaftField);
-  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::Volume", vtkLightShaftVolume);
-  vtkShaderProgram::Substitute(out, "//VTK::LightShaft::CameraLayers", vtkLightShaftCameraLayers);
-  return out;
-}
-
 //------------------------------------------------------------------------------
 void Variant::Feature(bool on, const char* define, const char* name)
 {
@@ -128,13 +92,13 @@ vtkShaderProgram* Program::Ready(vtkOpenGLRenderWindow* window,
   const Variant& variant)
 {
   vtkOpenGLShaderCache* cache = window->GetShaderCache();
-  const std::string key = JoinDefines(variant.Defines);
+  const std::string key = vtkLightShaftShaderText::JoinDefines(variant.Defines);
   if (this->Shader && key == this->Key)
   {
     return cache->ReadyShaderProgram(this->Shader);
   }
-  this->FragmentSource = WithFeatures(fragment, variant.Defines);
-  const std::string vertexSource = WithFeatures(vertex, variant.Defines);
+  this->FragmentSource = vtkLightShaftShaderText::WithFeatures(fragment, variant.Defines);
+  const std::string vertexSource = vtkLightShaftShaderText::WithFeatures(vertex, variant.Defines);
   this->Shader = cache->ReadyShaderProgram(vertexSource.c_str(), this->FragmentSource.c_str(), "");
   this->Key = key;
   if (!this->Shader || !this->Shader->GetCompiled())

@@ -1,8 +1,8 @@
 /**
  * @file   vtkLightShaftShaders.h
- * @brief  Shader assembly for vtkLightShaftPass (private, not installed): feature variants as
- *         #defines, the shared GLSL chunks substituted, programs rebuilt only when their
- *         variant changes, and the uniforms several shaders share set in one place.
+ * @brief  The pass's shader variants and uniforms (private, not installed): feature variants
+ *         as #defines, programs rebuilt only when their variant changes (their text assembled
+ *         by vtkLightShaftShaderText), and the uniforms several shaders share set in one place.
  */
 
 #ifndef vtkLightShaftShaders_h
@@ -29,17 +29,6 @@ struct Light;
 
 namespace vtkLightShaftShaders
 {
-/// The defines as "#define NAME" lines.
-std::string JoinDefines(const std::vector<std::string>& defines);
-
-/**
- * `source` with its features (//VTK::LightShaft::Features: the defines) and the shared chunks
- * substituted: //VTK::LightShaft::Common (the view ray), ::Integrand (medium, smooth factors),
- * ::Segment (one segment's integral, the lit interval), ::LightSpace (shadow map, cookie and
- * noise lookups), ::LightKind (where a light of the variant's kind shines, its distance r).
- */
-std::string WithFeatures(const char* source, const std::vector<std::string>& defines);
-
 /**
  * A feature variant: the #defines a shader is compiled with, and their description as
  * vtkLightShaftFrameReport::GetShaderVariant reports it ("method=slices phase=isotropic shadow

@@ -1,8 +1,10 @@
 #include "vtkLightShaftShadowMap.h"
 
+#include "vtkLightShaftCasterRender.h"
+
+#include "vtkLightShaftEnums.h"
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftGeometry.h"
-#include "vtkLightShaftPass.h"
 
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
@@ -92,7 +94,7 @@ vtkTextureObject* vtkLightShaftShadowMap::Ready(vtkLightShaftFrame& frame)
   const int maximum = vtkTextureObject::GetMaximumTextureSize(window) / (cube ? 3 : 1);
   const int size = std::max(1, std::min(frame.Parameters.ShadowMapSize, maximum));
   Signature signature = this->Sign(frame, size);
-  const bool observed = frame.Owner->HasObserver(vtkLightShaftPass::ShadowMapRenderedEvent);
+  const bool observed = frame.Owner->HasObserver(vtkLightShaftEnums::ShadowMapRenderedEvent);
   if (this->Valid && !observed && this->Cube == cube && signature == this->Rendered)
   {
     stats.ShadowMapReused = true;
@@ -112,7 +114,7 @@ vtkTextureObject* vtkLightShaftShadowMap::Ready(vtkLightShaftFrame& frame)
     }
     // Observers may read and rewrite the map now (distributed processes combine theirs).
     this->EventTexture = this->Map.Object;
-    frame.Owner->InvokeEvent(vtkLightShaftPass::ShadowMapRenderedEvent);
+    frame.Owner->InvokeEvent(vtkLightShaftEnums::ShadowMapRenderedEvent);
     this->EventTexture = nullptr;
     // The translucent casters in front of the (combined) opaque ones.
     this->TranslucentLayerCount = this->Translucent.Render(frame,
@@ -233,41 +235,7 @@ void vtkLightShaftShadowMap::RenderCasters(vtkLightShaftFrame& frame,
   ostate->vtkglDepthFunc(GL_LEQUAL);
 
   // The opaque step of the casters with another camera, as vtkShadowMapBakerPass does.
-  RenderFromLight(frame, casters, camera, fbo, this->CameraPass);
-}
-
-//------------------------------------------------------------------------------
-void vtkLightShaftShadowMap::RenderFromLight(vtkLightShaftFrame& frame,
-  std::vector<vtkProp*>& casters,
-  vtkCamera* camera,
-  vtkOpenGLFramebufferObject* target,
-  vtkCameraPass* pass)
-{
-  vtkRenderer* ren = frame.Renderer;
-  vtkRenderState casterState(ren);
-  casterState.SetPropArrayAndCount(casters.data(), static_cast<int>(casters.size()));
-  casterState.SetFrameBuffer(target);
-  vtkSmartPointer<vtkCamera> sceneCamera = ren->GetActiveCamera();
-  if (camera == sceneCamera)
-  {
-    // The scene's own view (the camera leg's translucent layers): nothing to swap or restore.
-    pass->Render(&casterState);
-    return;
-  }
-  const vtkTypeBool automaticLights = ren->GetAutomaticLightCreation();
-  ren->SetAutomaticLightCreation(false);
-  ren->SetActiveCamera(camera);
-  pass->Render(&casterState);
-  ren->SetActiveCamera(sceneCamera);
-  ren->SetAutomaticLightCreation(automaticLights);
-#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
-  // The casters' step set the shaders' lighting uniforms in the other camera's frame and
-  // stamped them with its MTime; vtkOpenGLRenderer::UpdateLightingUniforms only sets them again
-  // when the active camera (or the lights) changed after that stamp. Seen with VTK 9.2
-  // (ParaView 5.11): a still scene camera kept the light camera's lighting from the second
-  // frame on.
-  sceneCamera->Modified();
-#endif
+  vtkLightShaftCasterRender::Render(frame, casters, camera, fbo, this->CameraPass);
 }
 
 //------------------------------------------------------------------------------

@@ -69,16 +69,6 @@ public:
   vtkTextureObject* Ready(vtkLightShaftFrame& frame);
 
   /**
-   * Render `pass` (a camera pass over one of VTK's steps) over `casters` into `target`, seen by
-   * `camera` (the scene's camera and automatic light creation are restored after).
-   */
-  static void RenderFromLight(vtkLightShaftFrame& frame,
-    std::vector<vtkProp*>& casters,
-    vtkCamera* camera,
-    vtkOpenGLFramebufferObject* target,
-    vtkCameraPass* pass);
-
-  /**
    * Render the opaque step of `casters` into the depth texture `depth` (cleared), seen by
    * `camera`: a shadow map's, or another (the radial blur's guard band).
    */

@@ -1,8 +1,8 @@
 #include "vtkLightShaftSlicesMethod.h"
 
+#include "vtkLightShaftEnums.h"
 #include "vtkLightShaftFrame.h"
 #include "vtkLightShaftInScatterTarget.h"
-#include "vtkLightShaftPass.h"
 #include "vtkLightShaftShadowMap.h"
 #include "vtkLightShaftSlabDrawer.h"
 
@@ -31,7 +31,7 @@ vtkLightShaftSlicesMethod::~vtkLightShaftSlicesMethod() = default;
 TextureKind vtkLightShaftSlicesMethod::AccumulationKind(const vtkLightShaftParameters& parameters,
   int& buffers) const
 {
-  if (parameters.AccumulationPrecision == vtkLightShaftPass::ACCUMULATE_8BIT)
+  if (parameters.AccumulationPrecision == vtkLightShaftEnums::ACCUMULATE_8BIT)
   {
     buffers = 3; // one RGBA8 buffer per colour, every fourth slab in each channel
     return TextureKind::RGBA8;
@@ -41,7 +41,7 @@ TextureKind vtkLightShaftSlicesMethod::AccumulationKind(const vtkLightShaftParam
 
 bool vtkLightShaftSlicesMethod::AddsIntoTarget(const vtkLightShaftFrame& frame) const
 {
-  return frame.Parameters.AccumulationPrecision != vtkLightShaftPass::ACCUMULATE_8BIT;
+  return frame.Parameters.AccumulationPrecision != vtkLightShaftEnums::ACCUMULATE_8BIT;
 }
 
 //------------------------------------------------------------------------------
@@ -103,7 +103,7 @@ vtkTextureObject* vtkLightShaftSlicesMethod::Render(vtkLightShaftFrame& frame,
   // Shadow map of the casters (none when nothing can shadow).
   vtkTextureObject* shadowMap = frame.ShadowMap->Ready(frame);
   const bool shadows = shadowMap != nullptr;
-  const bool eightBit = p.AccumulationPrecision == vtkLightShaftPass::ACCUMULATE_8BIT;
+  const bool eightBit = p.AccumulationPrecision == vtkLightShaftEnums::ACCUMULATE_8BIT;
   vtkLightShaftShaders::Variant variant =
     vtkLightShaftShaders::IntegrandVariant(this->GetName(), nullptr, frame, shadows);
   variant.Feature(jitter, "LIGHTSHAFT_JITTER", "jitter");

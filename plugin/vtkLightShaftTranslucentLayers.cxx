@@ -1,7 +1,7 @@
 #include "vtkLightShaftTranslucentLayers.h"
 
+#include "vtkLightShaftCasterRender.h"
 #include "vtkLightShaftFrame.h"
-#include "vtkLightShaftShadowMap.h"
 #include "vtkLightShaftTranslucentPeel.h"
 
 #include "vtkCameraPass.h"
@@ -210,7 +210,7 @@ bool vtkLightShaftTranslucentLayers::PeelFace(vtkLightShaftFrame& frame,
   this->Peel->SetOpaqueDepth(this->Opaque, rect);
   this->Peel->SetPreviousLayer(layer > 0 ? this->Layers[layer - 1].Object.Get() : nullptr, rect);
   glBeginQuery(GL_ANY_SAMPLES_PASSED, this->Query);
-  vtkLightShaftShadowMap::RenderFromLight(frame, casters, camera, face, this->CameraPass);
+  vtkLightShaftCasterRender::Render(frame, casters, camera, face, this->CameraPass);
   glEndQuery(GL_ANY_SAMPLES_PASSED);
   GLuint passed = 0;
   glGetQueryObjectuiv(this->Query, GL_QUERY_RESULT, &passed);

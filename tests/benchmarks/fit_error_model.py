@@ -115,7 +115,7 @@ def write_table(path, ladder, fits, presets):
              "#define vtkLightShaftErrorModelTable_h",
              "",
              "#include \"vtkLightShaftErrorModel.h\" // For vtkLightShaftErrorModel::Setting",
-             "#include \"vtkLightShaftPass.h\"       // For the methods",
+             "#include \"vtkLightShaftEnums.h\"      // For the methods",
              "",
              "namespace vtkLightShaftErrorModelTable",
              "{",
@@ -145,7 +145,7 @@ def write_table(path, ladder, fits, presets):
         jitter = str(p.get("Jitter", False)).lower()
         epipolar = (f'{p["EpipolarLines"]}, {p["EpipolarSamples"]}, {p["EpipolarStep"]}'
                     if method == "EPIPOLAR" else "0, 0, 0")
-        setting = (f'"{label}", vtkLightShaftPass::{method}, {samples}, {jitter}, '
+        setting = (f'"{label}", vtkLightShaftEnums::{method}, {samples}, {jitter}, '
                    f'{p["BlurRadius"]}, {p["DownsampleFactor"]}, {p["ShadowMapSize"]}, '
                    f'{p.get("InterleaveSize", 1)}, {epipolar}')
         coefficients = ", ".join(f"{b:.6g}" for b in beta)
