@@ -121,7 +121,7 @@ def test_error_model_fit_smoke(tmp_path):
     text = table.read_text()
     # The smoke ladder: its cheapest setting (EPIPOLAR) and its dearest (SLICES).
     assert text.count("{ { \"") == 2 and "constexpr Row Rows[]" in text
-    assert "vtkLightShaftPass::EPIPOLAR, 16" in text and "vtkLightShaftPass::SLICES, 512" in text
+    assert "vtkLightShaftEnums::EPIPOLAR, 16" in text and "vtkLightShaftEnums::SLICES, 512" in text
     assert "| setting | n | median error |" in (tmp_path / "error-model.md").read_text()
     with open(tmp_path / "error-model-training.csv") as f:
         rows = list(csv.DictReader(f))
