@@ -291,20 +291,23 @@ vec3 lightShaftMarch(LightShaftRay ray, int steps, float offset, int share, int 
     }
     float xb = j <= steps ? lightShaftMarchBoundary(ray, u, j, steps, offset) : xa;
 #ifdef LIGHTSHAFT_FIELD
-    float spanEnd =
-      share == 1 ? xb : lightShaftMarchBoundary(ray, u, first + share - 1, steps, offset);
-    if (xb > xa)
+    if (share > 1)
     {
-      lightShaftFieldLead = xa - spanStart;
-      lightShaftFieldTrail = spanEnd - xb;
+      // The span's medium before and after the piece, at the piece's density; an empty piece's
+      // span still dims what lies behind it, at the density where it starts.
+      float spanEnd = lightShaftMarchBoundary(ray, u, first + share - 1, steps, offset);
+      if (xb > xa)
+      {
+        lightShaftFieldLead = xa - spanStart;
+        lightShaftFieldTrail = spanEnd - xb;
+      }
+      else
+      {
+        lightShaftOpticalDepthSoFar += (spanEnd - spanStart) *
+          lightShaftDensity(ray.originVC + (spanStart - ray.b) * ray.dirVC);
+      }
+      spanStart = spanEnd;
     }
-    else
-    {
-      // (The span's medium still dims what lies behind it: at the density where it starts.)
-      lightShaftOpticalDepthSoFar += (spanEnd - spanStart) *
-        lightShaftDensity(ray.originVC + (spanStart - ray.b) * ray.dirVC);
-    }
-    spanStart = spanEnd;
 #endif
     if (xb > xa)
     {

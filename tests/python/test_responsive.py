@@ -410,6 +410,30 @@ def test_a_long_radial_blur_is_split_and_its_shares_add_up_to_the_whole_frame(vt
     assert error < 1e-5
 
 
+
+def test_a_refining_light_volume_draws_its_mesh_within_the_allowance(vtk_messages):
+    """LIGHT_VOLUME's mesh is not split: a refining view's frame draws at most 2^22 cells over
+    its lights (at up to 640x480: vtkLightShaftGeometry::FrameLightVolumeCellAllowance), five
+    spotlights at 1024 a coarser mesh, said once; the whole setting with SplitLongFrames or
+    refinement off."""
+    vtk_messages.expect("mesh cells over")
+    renderer, window = spotlights_scene(lights=5)
+    params = dict(Method=vtkLightShaftPass.LIGHT_VOLUME, LightVolumeResolution=1024)
+    shafts = refining_pass(renderer, params, split=True)
+    for sigma in (0.05, 0.06):  # (a change: the next frame draws the mesh again)
+        shafts.GetMedium().SetScatteringCoefficient(sigma, 0.04, 0.03)
+        window.Render()
+        assert shafts.GetLastFrame().GetLightVolumeResolution() == int(math.sqrt(2 ** 22 / 5))
+        assert np.isfinite(rh.in_scatter(shafts)).all()
+    assert sum("mesh cells over" in text for _, text in vtk_messages.messages) == 1
+    shafts.SetSplitLongFrames(False)
+    window.Render()
+    assert shafts.GetLastFrame().GetLightVolumeResolution() == 1024
+    shafts.SetSplitLongFrames(True)
+    shafts.ProgressiveRefinementOff()
+    window.Render()
+    assert shafts.GetLastFrame().GetLightVolumeResolution() == 1024
+
 @pytest.mark.sweep
 def test_random_changes_between_still_frames_keep_every_frame_within_the_allowance(
         vtk_messages):
