@@ -1,5 +1,5 @@
 # The GLSL sources vtkLightShaftPass embeds (vtk_encode_string), shared by the VTK module
-# (plugin/CMakeLists.txt) and the ParaView plugin's module (paraview/plugin/module).
+# (plugin/pass/CMakeLists.txt) and the ParaView plugin's module (paraview/plugin/module).
 set(lightshafts_pass_shaders
   vtkLightShaftAddFS
   vtkLightShaftAnalyticFS

@@ -34,7 +34,7 @@ uniform int samplePart;  // which of them this is (lightShaftMarch)
 uniform int epipolarLines;
 uniform int epipolarSamples;
 uniform int epipolarStep;
-// The layout (vtkLightShaftEpipolar::Layout): 0 radial, 1 fan, 2 parallel; the epipole; the
+// The layout (vtkLightShaftEpipolarGeometry::Layout): 0 radial, 1 fan, 2 parallel; the epipole; the
 // lines' axis and normal; where line 0 starts and how far the lines span (perimeter or offset).
 uniform int epipolarForm;
 uniform vec2 epipolarOrigin;
@@ -200,7 +200,7 @@ bool epipolarClip(vec2 p, vec2 d, out float s0, out float s1)
 }
 
 // A boundary point's coordinate along the target's perimeter, counter-clockwise from the
-// lower-left corner (vtkLightShaftEpipolar's).
+// lower-left corner (vtkLightShaftEpipolarGeometry's).
 float epipolarPerimeterCoordinate(vec2 b)
 {
   vec4 distances = vec4(abs(b.y), abs(b.x - targetSize.x), abs(b.y - targetSize.y), abs(b.x));
@@ -221,7 +221,7 @@ float epipolarPerimeterCoordinate(vec2 b)
   return 2.0 * targetSize.x + targetSize.y + (targetSize.y - c.y);
 }
 
-// Stage 3's Locate (vtkLightShaftEpipolar::Layout::Locate): the fractional line and sample
+// Stage 3's Locate (vtkLightShaftEpipolarGeometry::Layout::Locate): the fractional line and sample
 // of pixel centre p. The line through p is clipped from p itself, so that an epipole far off
 // the target costs no precision.
 bool epipolarLocate(vec2 p, out float line, out float sampleIndex)

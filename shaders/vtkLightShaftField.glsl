@@ -66,7 +66,7 @@ float lightShaftOpticalDepth(vec3 aVC, vec3 bVC)
 #if defined(LIGHTSHAFT_FIELD_SHADOW) || defined(LIGHTSHAFT_VOLUME) || defined(LIGHTSHAFT_VOLUME_SHADOW)
 #ifndef LIGHTSHAFT_TABLE_CHUNK
 #define LIGHTSHAFT_TABLE_CHUNK
-// A light leg precomputed per light (vtkLightShaftFieldShadow): the integral of a field from
+// A light leg precomputed per light (vtkLightShaftFieldTableTexture): the integral of a field from
 // the light to the point, tabulated in the light's frame. One face (orthographic for a
 // directional light, else perspective) or six (a cube around the light, world-axis aligned).
 struct LightShaftTable

@@ -2,7 +2,7 @@
 // (vtkLightShaftVolumeField's rule), a 3D texture (trilinear) over the volume's box, 0 outside.
 // It dims what lies behind it for the camera, shafts included, by exp(-integral of kappa)
 // along the view ray, and the light that reaches a sample through it by the light leg's
-// integral, tabulated per light (LightShaftTable, vtkLightShaftFieldShadow). Included once.
+// integral, tabulated per light (LightShaftTable, vtkLightShaftFieldTableTexture). Included once.
 #ifdef LIGHTSHAFT_VOLUME
 #ifndef LIGHTSHAFT_VOLUME_CHUNK
 #define LIGHTSHAFT_VOLUME_CHUNK

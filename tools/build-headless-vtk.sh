@@ -152,11 +152,12 @@ fetch_source glew
 glew_src=$source_dir
 
 # --- 3./4. what the build is -------------------------------------------------------------------
-# The smallest module set: the LightShafts module's dependencies (plugin/vtk.module) and what the
-# C++ tests use (FiltersSources, IOImage, InteractionStyle); the rest follows as dependencies.
+# The smallest module set: the LightShafts modules' dependencies (plugin/core/vtk.module and
+# plugin/pass/vtk.module) and what the C++ tests use (FiltersSources, IOImage, InteractionStyle);
+# the rest follows as dependencies.
 modules=(
   CommonCore CommonDataModel CommonExecutionModel CommonMath CommonTransforms
-  FiltersCore FiltersFlowPaths FiltersGeneral FiltersSources
+  FiltersCore FiltersGeneral FiltersSources
   IOImage InteractionStyle RenderingCore RenderingOpenGL2
 )
 # Third-party libraries the Debian source still vendors (ThirdParty/<name>/vtk<name>) are built

@@ -55,7 +55,7 @@
 #   tools/measure.sh random-scenes-light-volume  # the same scenes, LIGHT_VOLUME's settings
 #                                      # (docs/light-volume/random-scenes.md)
 #   tools/measure.sh error-model       # the TargetError model's training run and fit
-#                                      # (docs/error-model.md, plugin/vtkLightShaftErrorModelTable.h)
+#                                      # (docs/error-model.md, plugin/core/vtkLightShaftErrorModelTable.h)
 #   tools/measure.sh error-model-add SETTING...  # the same for settings added to the ladder
 #                                      # only (the others keep their training rows)
 #   tools/measure.sh reference-speed   # the float64 reference's time against the pass's frame

@@ -12,9 +12,11 @@ import vtkmodules.vtkCommonExecutionModel  # noqa: F401
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 import vtkmodules.vtkRenderingCore  # noqa: F401
 
-from .vtkLightShafts import (  # noqa: F401
-    vtkLightShaftFetchFloor, vtkLightShaftFrameReport, vtkLightShaftMedium, vtkLightShaftPass,
-    vtkLightShaftReference)
+# The two compiled modules: vtkLightShaftsCore (no OpenGL: the medium) and vtkLightShaftsOpenGL
+# (the pass and what renders).
+from .vtkLightShaftsCore import vtkLightShaftMedium  # noqa: F401
+from .vtkLightShaftsOpenGL import (  # noqa: F401
+    vtkLightShaftFetchFloor, vtkLightShaftFrameReport, vtkLightShaftPass, vtkLightShaftReference)
 
 __all__ = ["vtkLightShaftPass", "vtkLightShaftMedium", "vtkLightShaftFrameReport",
            "vtkLightShaftReference", "vtkLightShaftFetchFloor", "add_light_shafts", "configure",

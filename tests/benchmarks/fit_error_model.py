@@ -18,7 +18,7 @@ log(1 + optical depth), light in view with falling attenuation, light in view, p
 directional light, light in view times each log, log shadow-map texel in pixels), by ridge
 regression, and adds the 90th percentile of the leave-one-out
 residuals as a margin: the prediction is an upper estimate that held-out scenes should meet
-nine times in ten. It writes plugin/vtkLightShaftErrorModelTable.h (the ladder and the
+nine times in ten. It writes plugin/core/vtkLightShaftErrorModelTable.h (the ladder and the
 coefficients), docs/error-model.md (the fit, the presets the training percentiles choose) and
 docs/error-model-training.csv (the training rows with their features).
 
@@ -168,7 +168,7 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("training", nargs="+",
                         help="random-scenes.csv of --ladder runs (their rows are merged)")
-    parser.add_argument("--table", default=os.path.join(ROOT, "plugin",
+    parser.add_argument("--table", default=os.path.join(ROOT, "plugin", "core",
                                                         "vtkLightShaftErrorModelTable.h"))
     parser.add_argument("--docs", default=os.path.join(ROOT, "docs"))
     parser.add_argument("--previous", help="an earlier training CSV whose rows of the "

@@ -194,12 +194,12 @@ LADDER = [
 ]
 
 def _fitted_table():
-    with open(os.path.join(HERE, "..", "..", "plugin", "vtkLightShaftErrorModelTable.h")) as f:
+    with open(os.path.join(HERE, "..", "..", "plugin", "core", "vtkLightShaftErrorModelTable.h")) as f:
         return f.read()
 
 
 def fitted_ladder():
-    """The names of the ladder's settings in the fitted table (plugin/)."""
+    """The names of the ladder's settings in the fitted table (plugin/core/)."""
     return re.findall(r'^\s*\{ \{ "([^"]+)"', _fitted_table(), re.M)
 
 

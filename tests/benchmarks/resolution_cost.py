@@ -26,7 +26,7 @@ import progress  # noqa: E402
 import render_helpers as rh  # noqa: E402
 from lightshafts import parameter_owner, vtkLightShaftPass as P  # noqa: E402
 
-SETTINGS = {  # the ladder's E16, E32, V256 and M128 (plugin/vtkLightShaftErrorModelTable.h)
+SETTINGS = {  # the ladder's E16, E32, V256 and M128 (plugin/core/vtkLightShaftErrorModelTable.h)
     "E16 l128 s256 k8 m512": dict(Method=P.EPIPOLAR, NumberOfSteps=16, ShadowMapSize=512,
                                   EpipolarLines=128, EpipolarSamples=256, EpipolarStep=8),
     "E32 l256 s256 k8 m1024": dict(Method=P.EPIPOLAR, NumberOfSteps=32, ShadowMapSize=1024,

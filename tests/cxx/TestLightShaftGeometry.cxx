@@ -1,4 +1,5 @@
-// Unit tests of vtkLightShaftPass's geometry, on the CPU (no GL): polytope clipping, convex
+// Unit tests of LightShafts::Core's geometry, on the CPU (no GL: linked without OpenGL, run
+// without a display): polytope clipping, convex
 // hulls and polygon clipping, the camera frame, the light's bounding pyramid and caster
 // culling, the light camera, the lit volume, the slab footprints and their lattice, the
 // epipole and the epipolar lines; and the budget's cost model.
@@ -7,12 +8,17 @@
 
 #include "vtkLightShaftCostModel.h"
 #include "vtkLightShaftDensityField.h"
-#include "vtkLightShaftEpipolar.h"
+#include "vtkLightShaftEnums.h"
+#include "vtkLightShaftEpipolarGeometry.h"
 #include "vtkLightShaftErrorModel.h"
 #include "vtkLightShaftFieldError.h"
 #include "vtkLightShaftGeometry.h"
+#include "vtkLightShaftGeometryBudget.h"
+#include "vtkLightShaftGeometryClipping.h"
+#include "vtkLightShaftGeometryLights.h"
+#include "vtkLightShaftGeometryLitVolume.h"
+#include "vtkLightShaftGeometrySlabs.h"
 #include "vtkLightShaftModel.h"
-#include "vtkLightShaftPass.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -21,6 +27,7 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPropCollection.h"
@@ -51,6 +58,17 @@ void Check(bool condition, const std::string& what)
   }
 }
 
+// A polygonal mapper that only reports its input's bounds: the props of a scene without GL
+// (vtkPolyDataMapper::New needs the OpenGL module's factory).
+class BoundsOnlyMapper : public vtkPolyDataMapper
+{
+public:
+  static BoundsOnlyMapper* New();
+  vtkTypeMacro(BoundsOnlyMapper, vtkPolyDataMapper);
+  void RenderPiece(vtkRenderer*, vtkActor*) override {}
+};
+vtkStandardNewMacro(BoundsOnlyMapper);
+
 // Unit cubes at `centres`, added to `props`; returns their actors.
 std::vector<vtkSmartPointer<vtkActor>> AddUnitCubes(vtkPropCollection* props,
   std::initializer_list<std::array<double, 3>> centres)
@@ -60,7 +78,7 @@ std::vector<vtkSmartPointer<vtkActor>> AddUnitCubes(vtkPropCollection* props,
   {
     vtkNew<vtkCubeSource> cube;
     cube->SetCenter(centre.data());
-    vtkNew<vtkPolyDataMapper> mapper;
+    vtkNew<BoundsOnlyMapper> mapper;
     mapper->SetInputConnection(cube->GetOutputPort());
     actors.emplace_back(vtkSmartPointer<vtkActor>::New());
     actors.back()->SetMapper(mapper);
@@ -474,8 +492,8 @@ void TestCostModel()
   for (int i = 0; i < vtkLightShaftErrorModel::GetNumberOfSettings(); ++i)
   {
     const int method = vtkLightShaftErrorModel::GetSetting(i).Method;
-    epipolar = (epipolar < 0 && method == vtkLightShaftPass::EPIPOLAR) ? i : epipolar;
-    rayMarch = (rayMarch < 0 && method == vtkLightShaftPass::RAY_MARCH) ? i : rayMarch;
+    epipolar = (epipolar < 0 && method == vtkLightShaftEnums::EPIPOLAR) ? i : epipolar;
+    rayMarch = (rayMarch < 0 && method == vtkLightShaftEnums::RAY_MARCH) ? i : rayMarch;
   }
   Model model;
   const double prior = model.PredictShafts(epipolar, 4, pixels, 1);
@@ -509,7 +527,7 @@ void TestCostModel()
 // or undefined, for each light kind and camera.
 void TestEpipole()
 {
-  using vtkLightShaftEpipolar::Epipole;
+  using vtkLightShaftEpipolarGeometry::Epipole;
   const int width = 640;
   const int height = 480;
   const glm::dmat4 view(1.0);
@@ -527,45 +545,45 @@ void TestEpipole()
   vtkLightShaftGeometry::LightFrame spot;
   spot.Model.Kind = vtkLightShaftModel::LightKind::Spot;
   spot.PositionVC = glm::dvec3(1.0, 0.5, -5.0);
-  Epipole e = vtkLightShaftEpipolar::ComputeEpipole(spot, perspective, width, height);
+  Epipole e = vtkLightShaftEpipolarGeometry::ComputeEpipole(spot, perspective, width, height);
   Check(e.Where == Epipole::Kind::Point && !e.Behind &&
           glm::length(e.Pixel - pixelOf(glm::dvec4(spot.PositionVC, 1.0))) < 1e-9,
     "a spot in front of the camera: its projection");
   spot.PositionVC = glm::dvec3(1.0, 0.5, 5.0);
-  e = vtkLightShaftEpipolar::ComputeEpipole(spot, perspective, width, height);
+  e = vtkLightShaftEpipolarGeometry::ComputeEpipole(spot, perspective, width, height);
   Check(e.Where == Epipole::Kind::Point && e.Behind &&
           glm::length(e.Pixel - pixelOf(glm::dvec4(spot.PositionVC, 1.0))) < 1e-9,
     "a spot behind the camera: its projection, behind");
-  e = vtkLightShaftEpipolar::ComputeEpipole(spot, parallel, width, height);
+  e = vtkLightShaftEpipolarGeometry::ComputeEpipole(spot, parallel, width, height);
   Check(e.Where == Epipole::Kind::Point && !e.Behind, "a parallel camera sees a spot's image");
   spot.PositionVC = glm::dvec3(0.0);
-  e = vtkLightShaftEpipolar::ComputeEpipole(spot, perspective, width, height);
+  e = vtkLightShaftEpipolarGeometry::ComputeEpipole(spot, perspective, width, height);
   Check(e.Where == Epipole::Kind::Undefined, "a light at the eye: no epipole");
 
   vtkLightShaftGeometry::LightFrame sun;
   sun.Model.Kind = vtkLightShaftModel::LightKind::Directional;
   sun.AxisVC = glm::normalize(glm::dvec3(0.0, -1.0, 1.0)); // from above and ahead
-  e = vtkLightShaftEpipolar::ComputeEpipole(sun, perspective, width, height);
+  e = vtkLightShaftEpipolarGeometry::ComputeEpipole(sun, perspective, width, height);
   Check(e.Where == Epipole::Kind::Point && !e.Behind &&
           glm::length(e.Pixel - pixelOf(glm::dvec4(-sun.AxisVC, 0.0))) < 1e-9 && e.Pixel.y > height,
     "a sun ahead: its vanishing point, above the picture");
   sun.AxisVC = glm::dvec3(1.0, 0.0, 0.0);
-  e = vtkLightShaftEpipolar::ComputeEpipole(sun, perspective, width, height);
+  e = vtkLightShaftEpipolarGeometry::ComputeEpipole(sun, perspective, width, height);
   Check(e.Where == Epipole::Kind::AtInfinity && std::abs(std::abs(e.Direction.x) - 1.0) < 1e-12,
     "a sun parallel to the screen: horizontal parallel lines");
   sun.AxisVC = glm::normalize(glm::dvec3(0.0, -1.0, 1.0));
-  e = vtkLightShaftEpipolar::ComputeEpipole(sun, parallel, width, height);
+  e = vtkLightShaftEpipolarGeometry::ComputeEpipole(sun, parallel, width, height);
   Check(e.Where == Epipole::Kind::AtInfinity && std::abs(std::abs(e.Direction.y) - 1.0) < 1e-12,
     "a parallel camera and a sun: parallel lines along its image");
   sun.AxisVC = glm::dvec3(0.0, 0.0, -1.0);
-  e = vtkLightShaftEpipolar::ComputeEpipole(sun, parallel, width, height);
+  e = vtkLightShaftEpipolarGeometry::ComputeEpipole(sun, parallel, width, height);
   Check(e.Where == Epipole::Kind::Undefined, "a sun along a parallel camera's axis: undefined");
 }
 
 // Every pixel of the target lies between two neighbouring lines and along them; a line's own
 // points are found on it. Returns how far the nearer of the two points a pixel is interpolated
 // from (its neighbouring lines, at its fraction of their length) lies from it, at the most.
-double CheckLayout(const vtkLightShaftEpipolar::Layout& layout, const std::string& name)
+double CheckLayout(const vtkLightShaftEpipolarGeometry::Layout& layout, const std::string& name)
 {
   bool roundTrip = true;
   for (int i = 0; i < layout.Lines; ++i)
@@ -603,7 +621,7 @@ double CheckLayout(const vtkLightShaftEpipolar::Layout& layout, const std::strin
       // The two lines around p (cyclic when radial), at p's position along them.
       int below = static_cast<int>(std::floor(line));
       int above = below + 1;
-      if (layout.Form == vtkLightShaftEpipolar::Layout::Shape::Radial)
+      if (layout.Form == vtkLightShaftEpipolarGeometry::Layout::Shape::Radial)
       {
         below = (below + layout.Lines) % layout.Lines;
         above = above % layout.Lines;
@@ -621,8 +639,8 @@ double CheckLayout(const vtkLightShaftEpipolar::Layout& layout, const std::strin
 
 void TestEpipolarLayout()
 {
-  using vtkLightShaftEpipolar::Epipole;
-  using vtkLightShaftEpipolar::Layout;
+  using vtkLightShaftEpipolarGeometry::Epipole;
+  using vtkLightShaftEpipolarGeometry::Layout;
   // An epipole at (fx, fy) times the target's size.
   auto at = [](double fx, double fy)
   {
@@ -662,21 +680,23 @@ void TestEpipolarLayout()
       light.Pixel *= glm::dvec2(size);
       const std::string name =
         std::string(c.Name) + " (" + std::to_string(size.x) + "x" + std::to_string(size.y) + ")";
-      const Layout layout = vtkLightShaftEpipolar::ComputeLayout(light, size.x, size.y, 32, 9);
+      const Layout layout =
+        vtkLightShaftEpipolarGeometry::ComputeLayout(light, size.x, size.y, 32, 9);
       Check(layout.Form == c.Form && static_cast<int>(layout.Ends.size()) == 32, name + ": shape");
       const double farthest = CheckLayout(layout, name);
       // The interpolation is local: its points approach the pixel as the lines get denser
       // (where a line's entry turns a corner, neighbours at the same fraction of their lengths
       // are several spacings apart on 32 lines; 8 times the lines, 8 times closer).
-      const double denser = CheckLayout(
-        vtkLightShaftEpipolar::ComputeLayout(light, size.x, size.y, 256, 9), name + ", 256 lines");
+      const double denser =
+        CheckLayout(vtkLightShaftEpipolarGeometry::ComputeLayout(light, size.x, size.y, 256, 9),
+          name + ", 256 lines");
       Check(size.x == 3 || denser <= 0.25 * farthest + 1e-9,
         name + ": 8 times the lines bring the interpolated points at least 4 times closer (" +
           std::to_string(farthest) + " to " + std::to_string(denser) + " pixels)");
     }
   }
   const Layout tiny =
-    vtkLightShaftEpipolar::ComputeLayout(at(0.5, 0.5), 1, 1, 1, 1); // (0.5, 0.5) px
+    vtkLightShaftEpipolarGeometry::ComputeLayout(at(0.5, 0.5), 1, 1, 1, 1); // (0.5, 0.5) px
   Check(tiny.Lines == 4 && tiny.Samples == 2, "at least 4 lines of 2 samples");
   CheckLayout(tiny, "a 1x1 target");
 }

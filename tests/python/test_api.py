@@ -250,7 +250,7 @@ def _table_presets():
     """The presets the fitted table names: {"Draft": "S64 b0 d1 m1024", ...}."""
     import os
     import re
-    path = os.path.join(os.path.dirname(__file__), "..", "..", "plugin",
+    path = os.path.join(os.path.dirname(__file__), "..", "..", "plugin", "core",
                         "vtkLightShaftErrorModelTable.h")
     with open(path) as table:
         return dict(re.findall(r"constexpr int (\w+)Setting = \d+; // (.+), aim", table.read()))

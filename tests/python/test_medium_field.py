@@ -352,7 +352,7 @@ def test_the_scene_is_dimmed_by_the_field_not_by_the_coefficients():
     assert np.abs(homogeneous - plain).max() > 20  # (the medium does dim and light the scene)
 
 
-# The light leg's table (vtkLightShaftFieldShadow, MediumShadowResolution): one face in the
+# The light leg's table (vtkLightShaftFieldTableTexture, MediumShadowResolution): one face in the
 # light's frame when the light sees the field's box from outside, a cube around it otherwise.
 def single_face_bytes(depth):
     """A table of one face at the default resolution (64^2 columns), `depth` texels deep."""

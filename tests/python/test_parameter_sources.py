@@ -26,7 +26,8 @@ PARAVIEW_NAMES = {"ShaftExposure": "Exposure", "ShaftMethod": "Method", "ShaftJi
                   "MediumBackgroundDensity": "BackgroundDensity",
                   "MediumShadowResolution": "FieldShadowResolution"}
 # The public headers whose documented groups hold parameters, and the class of each.
-HEADERS = {"vtkLightShaftPass.h": vtkLightShaftPass, "vtkLightShaftMedium.h": vtkLightShaftMedium}
+HEADERS = {"pass/vtkLightShaftPass.h": vtkLightShaftPass,
+           "core/vtkLightShaftMedium.h": vtkLightShaftMedium}
 
 
 def has_parameter(name):

@@ -186,7 +186,7 @@ def test_features_follow_geometry():
 
 
 def _table_rows():
-    path = os.path.join(ROOT, "plugin", "vtkLightShaftErrorModelTable.h")
+    path = os.path.join(ROOT, "plugin", "core", "vtkLightShaftErrorModelTable.h")
     rows = []
     with open(path) as table:
         lines = table.readlines()

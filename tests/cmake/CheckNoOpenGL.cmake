@@ -1,0 +1,22 @@
+# Fails when one of FILES (a library or an executable) loads an OpenGL, EGL, OSMesa or X library,
+# directly or through its dependencies (ldd): LightShafts::Core and its tests must not.
+#   cmake -DFILES="a;b" -P CheckNoOpenGL.cmake
+find_program(LDD ldd REQUIRED)
+set(forbidden "lib(GL|GLX|GLU|GLdispatch|OpenGL|EGL|OSMesa|glapi|gbm|X11|xcb|vtkRenderingOpenGL2|vtkglad|vtkglew|GLEW)[-.0-9]*\\.so")
+foreach (file IN LISTS FILES)
+  if (NOT EXISTS "${file}")
+    message(FATAL_ERROR "CheckNoOpenGL: ${file} does not exist")
+  endif ()
+  execute_process(COMMAND "${LDD}" "${file}" OUTPUT_VARIABLE libraries RESULT_VARIABLE status)
+  if (NOT status EQUAL 0)
+    message(FATAL_ERROR "CheckNoOpenGL: ldd ${file} failed (${status})")
+  endif ()
+  string(REGEX MATCHALL "[^\n]*${forbidden}[^\n]*" found "${libraries}")
+  if (found)
+    string(REPLACE ";" "\n" found "${found}")
+    message(FATAL_ERROR "CheckNoOpenGL: ${file} loads a GL or X library:\n${found}")
+  endif ()
+  string(REGEX MATCHALL "\n" lines "${libraries}")
+  list(LENGTH lines count)
+  message(STATUS "${file}: ${count} libraries, none of GL, EGL, OSMesa or X")
+endforeach ()
