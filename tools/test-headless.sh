@@ -87,8 +87,9 @@ run_ctest() {
     echo "ctest failed ($build/ctest.log)" >&2
     return 1
   fi
-  for test_name in LightShaftGeometry LightShaftPass.ImageRegression LightShaftAccuracy \
-    LightShaftContexts LightShafts.InstalledPackage; do
+  for test_name in LightShaftGeometry LightShaftReferenceCore LightShafts.CoreWithoutOpenGL \
+    LightShaftPass.ImageRegression LightShaftAccuracy LightShaftContexts \
+    LightShafts.InstalledPackage; do
     if ! grep -qE "Test +#[0-9]+: $test_name \.+ +Passed" "$build/ctest.log"; then
       cat "$build/ctest.log" >&2
       echo "ctest did not run and pass $test_name ($build/ctest.log)" >&2

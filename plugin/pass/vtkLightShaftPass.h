@@ -226,8 +226,7 @@ public:
    * shifts each pixel of a 4x4 block by its own sixteenth of a slab; AutomaticSliceCount
    * spaces the slabs (far clipping distance) / MaximumNumberOfSlices apart, in [1, 4096]; the
    * smooth part of the integrand on an n x n lattice per slab, LatticeResolution in [0, 256]
-   * (0: per pixel); and the precision the slabs add up in (ACCUMULATE_8BIT: the GDC 2004
-   * talk's four-channel trick). Defaults are 64, on, off, 512, 0 and ACCUMULATE_FLOAT32.
+   * (0: per pixel). Defaults are 64, on, off, 512 and 0.
    */
   vtkSetClampMacro(NumberOfSlices, int, 1, 4096);
   vtkGetMacro(NumberOfSlices, int);
@@ -241,6 +240,14 @@ public:
   vtkGetMacro(MaximumNumberOfSlices, int);
   vtkSetClampMacro(LatticeResolution, int, 0, 256);
   vtkGetMacro(LatticeResolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * SLICES: the precision the slabs add up in (ACCUMULATE_8BIT: the GDC 2004 talk's
+   * four-channel trick, slab k in channel k mod 4 of an RGBA8 buffer). Default is
+   * ACCUMULATE_FLOAT32.
+   */
   vtkSetClampMacro(AccumulationPrecision, int, ACCUMULATE_FLOAT32, ACCUMULATE_8BIT);
   vtkGetMacro(AccumulationPrecision, int);
   void SetAccumulationPrecisionToFloat32() { this->SetAccumulationPrecision(ACCUMULATE_FLOAT32); }
