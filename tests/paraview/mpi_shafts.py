@@ -1,7 +1,8 @@
 """pvbatch script (serial or under mpirun): the test scene with the sphere turned so that the
 pieces ParaView splits it into are its left and right halves, rendered with the shafts on and
 off; writes the in-scatter images (shafts minus no shafts) with DistributedShadowMap off and on,
-and how the sphere was split, to OUTPUT.npz. Usage: pvbatch mpi_shafts.py OUTPUT.npz"""
+the largest difference an empty medium makes to the picture, and how the sphere was split, to
+OUTPUT.npz. Usage: pvbatch mpi_shafts.py OUTPUT.npz"""
 
 import os
 import sys
@@ -39,6 +40,13 @@ def main():
         view.LightShafts = 0
         plain = scene.screenshot(view, output + ".plain.png")
         images[f"in_scatter_{distributed}"] = (shafts - plain).mean(axis=-1)
+    # A medium that neither scatters nor absorbs: the view's picture is ParaView's own, bit for
+    # bit (its FXAA included), on one process or several.
+    view.LightShafts = 1
+    view.ScatteringCoefficient = [0.0, 0.0, 0.0]
+    view.AbsorptionCoefficient = [0.0, 0.0, 0.0]
+    empty = scene.screenshot(view, output + ".empty.png")
+    images["empty_medium_difference"] = np.abs(empty.astype(float) - plain.astype(float)).max()
     np.savez(output, processes=processes, process_range=np.array(process_range),
              left=np.array(scene.to_pixel(view, (-0.45, 1.6, 0.0))),
              right=np.array(scene.to_pixel(view, (0.45, 1.6, 0.0))),

@@ -51,10 +51,9 @@ for distributed in (0, 1):
     image = np2[f"in_scatter_{distributed}"]
     below = [patch(image, np2[side]) for side in ("left", "right")]
     diff = np.abs(image - reference)
-    # The pixels off by more than 4 levels are on the sphere's silhouette, where IceT's
-    # composited depth differs from a serial render's (ParaView 5.13 and 6.1 more than 5.11:
-    # mean |diff| 0.065 against 0.031, in the same 0.13-0.14% of the pixels). Everywhere else
-    # the images must agree.
+    # Combined maps give the serial picture (0.00% of the pixels off by more than 4 levels on
+    # ParaView 5.11, 5.13 and 6.1); before the view kept the renderer's FXAA under MPI, the
+    # sphere's silhouette was off in 0.13% of them.
     off = diff > 4
     rest = float(diff[~off].mean())
     print(f"DistributedShadowMap {distributed}: below the sphere left {below[0]:.2f}, right "
@@ -65,8 +64,15 @@ for distributed in (0, 1):
           f"|diff| of the others {rest:.4f}")
     if distributed == 0 and max(below) < 5.0:
         failures.append("without combining, no leak was seen (is the data split?)")
-    if distributed == 1 and (max(below) > 1.0 or off.mean() > 0.005 or rest > 0.01):
+    if distributed == 1 and (max(below) > 1.0 or off.mean() > 0.0005 or rest > 0.01):
         failures.append("with the combined shadow map the shafts differ from the serial run")
+# An empty medium leaves ParaView's picture as it is, bit for bit (on several processes too:
+# there the view once turned off the renderer's FXAA, which IceT's compositing does not replace).
+for name, run in (("serial", serial), ("np 2", np2)):
+    difference = float(run["empty_medium_difference"])
+    print(f"{name}: an empty medium changes the picture by at most {difference:.0f} levels")
+    if difference != 0.0:
+        failures.append(f"{name}: an empty medium changed ParaView's picture")
 for failure in failures:
     print("FAIL:", failure)
 sys.exit(1 if failures else 0)

@@ -175,10 +175,13 @@ void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
   // With its image-processing slot filled, ParaView 5.11 antialiases twice: its FXAA pass runs
   // around the slot, and the renderer's own FXAA inside the scene's default pass. Keep the
   // outer one (it sees the final picture, shafts included) and turn the renderer's off for
-  // this render (restored at its end), so the medium off gives a RenderView's picture.
+  // this render (restored at its end), so the medium off gives a RenderView's picture. On
+  // several processes (IceT composites the image) the outer one does not run (measured: the
+  // pictures lose their antialiasing): the renderer's stays.
   vtkRenderer* renderer = this->GetRenderer();
   if (this->SynchronizedRenderers->GetImageProcessingPass() &&
-      this->SynchronizedRenderers->GetUseFXAA() && renderer->GetUseFXAA())
+      this->SynchronizedRenderers->GetUseFXAA() && renderer->GetUseFXAA() &&
+      !DistributedController())
   {
     renderer->SetUseFXAA(false);
     this->Impl->RestoreRendererFXAA = true;
