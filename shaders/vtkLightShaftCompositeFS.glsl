@@ -7,7 +7,10 @@
 // scene was rendered multisampled: the composite runs once per sample, reading and writing that
 // sample's colour and depth, so the target keeps its antialiasing and resolves as it would
 // have without the pass), LIGHTSHAFT_WRITE_DEPTH (the scene's depth is written here, when the
-// target's depth format differs from the scene's; else it is copied after the composite).
+// target's depth format differs from the scene's; else it is copied after the composite),
+// LIGHTSHAFT_BACKGROUND (the renderer's flat background painted behind the scene's uncovered
+// part, 1 - alpha, before the medium dims it: a compositor rendered the scene over a transparent
+// background, premultiplied, and blends the background in after the pass).
 //VTK::LightShaft::Features
 #ifdef LIGHTSHAFT_MULTISAMPLE
 #extension GL_ARB_sample_shading : require
@@ -22,6 +25,9 @@ in vec2 texCoord;
 uniform sampler2D inScatter;
 uniform vec3 sigmaT;
 uniform float exposure;
+#ifdef LIGHTSHAFT_BACKGROUND
+uniform vec3 background;
+#endif
 
 #ifdef LIGHTSHAFT_MULTISAMPLE
 uniform sampler2DMS sceneColorSamples;
@@ -60,6 +66,9 @@ void main()
   // Nearest sample: the in-scatter buffer is full size here (upsampled when it was computed
   // at a lower resolution).
   vec3 inScattered = texture(inScatter, texCoord).rgb;
+#ifdef LIGHTSHAFT_BACKGROUND
+  color = vec4(color.rgb + (1.0 - color.a) * background, 1.0);
+#endif
 
 #ifdef LIGHTSHAFT_SURFACE_CORRECTION
   color.rgb = max(color.rgb - surfaceCorrectionAt(pixel), vec3(0.0));

@@ -1,6 +1,7 @@
 """ParaView-style script: a spotlight's shafts through a plume from the pipeline (MediumDensity).
 
     xvfb-run -a tools/pvbatch examples/paraview/smoke_plume.py -o plume.png
+    mpirun -np 2 tools/pvbatch examples/paraview/smoke_plume.py -o plume.png   (the same picture)
 
 The plume is made by the pipeline, as a simulation's output would come: VTK's wavelet
 (Wavelet) as turbulence, a Calculator that shapes it into a column rising from the floor,
@@ -25,11 +26,14 @@ candidates = ([os.environ.get("LIGHTSHAFTS_PARAVIEW_PLUGIN", "")]
               + glob.glob("/usr/local/lib/paraview-*/plugins/LightShafts/LightShafts.so"))
 parser = argparse.ArgumentParser()
 parser.add_argument("-o", "--output", default="smoke_plume.png")
+parser.add_argument("--size", type=int, nargs=2, default=[800, 600], metavar=("W", "H"))
+parser.add_argument("--absorb-only", action="store_true",
+                    help="scattering 0: the plume only dims what lies behind it")
 args = parser.parse_args()
 
 LoadPlugin(next(p for p in candidates if p and os.path.exists(p)), remote=False, ns=globals())
 view = CreateView("LightShaftsRenderView")
-view.ViewSize = [800, 600]
+view.ViewSize = args.size
 view.OrientationAxesVisibility = 0
 view.UseColorPaletteForBackground = 0
 view.Background = [0.01, 0.01, 0.015]
@@ -60,7 +64,8 @@ view.MediumDensity = plume
 view.MediumDensityArray = "smoke"
 view.MediumDensityScale = 5.0
 view.MediumBackgroundDensity = 0.08                 # the haze around the plume
-view.ScatteringCoefficient = [0.3 / S, 0.28 / S, 0.26 / S]    # per world unit
+scattering = 0.0 if args.absorb_only else 1.0
+view.ScatteringCoefficient = [scattering * 0.3 / S, scattering * 0.28 / S, scattering * 0.26 / S]
 view.AbsorptionCoefficient = [0.05 / S, 0.05 / S, 0.05 / S]
 view.ShaftMethod = 1                                # RAY_MARCH
 view.NumberOfSteps = 128
@@ -72,5 +77,5 @@ view.CameraFocalPoint = [0.0, 3.2 * S, 0.0]
 view.CameraViewUp = [0.0, 1.0, 0.0]
 view.CameraViewAngle = 38.0
 Render(view)
-SaveScreenshot(args.output, view, ImageResolution=[800, 600])
+SaveScreenshot(args.output, view, ImageResolution=args.size)
 print("wrote", args.output)

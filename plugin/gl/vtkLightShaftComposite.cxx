@@ -14,8 +14,37 @@
 
 #include "vtkLightShaftCompositeFS.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <string>
 #include <vector>
+
+namespace
+{
+// Whether the pass paints a background behind the scene image's uncovered part (1 - alpha):
+// asked (PaintBackground: a compositor renders the scene over a transparent background and
+// blends the background in after the pass, as ParaView's IceT does on several processes), so
+// that the medium dims it as it dims a background the renderer cleared to.
+bool PaintsBackground(const vtkLightShaftFrame& frame)
+{
+  return frame.Parameters.PaintBackground && frame.Parameters.PaintedBackground &&
+         !frame.Renderer->Transparent();
+}
+
+// The background as a renderer clearing the scene's target would leave it: 8-bit targets hold
+// it rounded to a level.
+std::array<float, 3> ClearedBackground(const double* background, bool highRange)
+{
+  std::array<float, 3> color;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double value = std::min(std::max(background[c], 0.0), 1.0);
+    color[c] = static_cast<float>(highRange ? value : std::round(value * 255.0) / 255.0);
+  }
+  return color;
+}
+}
 
 //------------------------------------------------------------------------------
 vtkLightShaftComposite::vtkLightShaftComposite() = default;
@@ -56,6 +85,11 @@ void vtkLightShaftComposite::Render(vtkLightShaftFrame& frame, vtkTextureObject*
   {
     defines.emplace_back("LIGHTSHAFT_WRITE_DEPTH");
   }
+  const bool background = PaintsBackground(frame);
+  if (background)
+  {
+    defines.emplace_back("LIGHTSHAFT_BACKGROUND");
+  }
   vtkShaderProgram* program = this->Pass.Ready(frame.Window, vtkLightShaftCompositeFS, defines);
   if (!program)
   {
@@ -74,6 +108,11 @@ void vtkLightShaftComposite::Render(vtkLightShaftFrame& frame, vtkTextureObject*
   program->SetUniformi(("sceneDepth" + suffix).c_str(), scene.Depth->GetTextureUnit());
   program->SetUniformi("inScatter", inScatter->GetTextureUnit());
   program->SetUniformf("exposure", static_cast<float>(frame.Parameters.Exposure));
+  if (background)
+  {
+    program->SetUniform3f(
+      "background", ClearedBackground(frame.Parameters.PaintedBackground, scene.HighRange).data());
+  }
   if (attenuate)
   {
     vtkLightShaftShaders::SetViewUniforms(program, frame.Camera, w, h);

@@ -75,6 +75,8 @@ struct vtkLightShaftParameters
   bool RadialJitter{};
   double RadialGuardBand{};
   const double* ShadowCasterBounds = nullptr; ///< set for distributed rendering, else nullptr
+  bool PaintBackground{}; ///< a compositor blends the background in after the pass
+  const double* PaintedBackground = nullptr; ///< the background it blends in (RGB)
   bool ProgressiveRefinement{};
   int RefinementFrames{};
   bool ExactFinish{};

@@ -493,6 +493,11 @@ void vtkLightShaftPass::SetShadowCasterBounds(const double bounds[6])
   }
 }
 
+void vtkLightShaftPass::SetPaintedBackground(double r, double g, double b)
+{
+  SetClamped(this, "PaintedBackground", this->PaintedBackground, { r, g, b }, 0.0, 1.0);
+}
+
 void vtkLightShaftPass::UnsetShadowCasterBounds()
 {
   if (this->UseShadowCasterBounds)
@@ -689,6 +694,8 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
   p.RadialJitter = self.RadialJitter;
   p.RadialGuardBand = self.RadialGuardBand;
   p.ShadowCasterBounds = self.UseShadowCasterBounds ? self.ShadowCasterBounds : nullptr;
+  p.PaintBackground = self.PaintBackground;
+  p.PaintedBackground = self.PaintedBackground;
   p.TargetError = self.TargetError;
   p.ProgressiveRefinement = self.ProgressiveRefinement;
   p.RefinementFrames = self.RefinementFrames;
@@ -943,52 +950,4 @@ void vtkLightShaftPass::Internals::RenderLight(vtkLightShaftFrame& frame,
   frame.FieldShadow = nullptr;
   frame.VolumeShadow = nullptr;
   frame.FieldShadowLayout = nullptr;
-}
-
-//------------------------------------------------------------------------------
-void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
-{
-  this->Superclass::PrintSelf(os, indent);
-  os << indent << "Lights: " << this->GetNumberOfLights() << " given\n";
-  os << indent << "Medium: " << this->Impl->Medium.Get() << "\n";
-  this->Impl->Medium->PrintSelf(os, indent.GetNextIndent());
-  os << indent << "Exposure: " << this->Exposure << "\n";
-  os << indent << "FitMediumToScene: " << this->FitMediumToScene << "\n";
-  os << indent << "AttenuateScene: " << this->AttenuateScene << "\n";
-  os << indent << "ShadowSurfaces: " << this->ShadowSurfaces << "\n";
-  os << indent << "AttenuateSurfaceLight: " << this->AttenuateSurfaceLight << "\n";
-  os << indent << "NumberOfSlices: " << this->NumberOfSlices << "\n";
-  os << indent << "ShadowMapSize: " << this->ShadowMapSize << "\n";
-  os << indent << "Cookie: " << this->Impl->Textures.GetCookie() << "\n";
-  os << indent << "AutomaticSliceCount: " << this->AutomaticSliceCount << "\n";
-  os << indent << "MaximumNumberOfSlices: " << this->MaximumNumberOfSlices << "\n";
-  os << indent << "Jitter: " << this->Jitter << "\n";
-  os << indent << "Method: " << GetMethodName(this->Method) << "\n";
-  os << indent << "LatticeResolution: " << this->LatticeResolution << "\n";
-  os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
-  os << indent << "InterleaveSize: " << this->InterleaveSize << "\n";
-  os << indent << "RadialSamples: " << this->RadialSamples << "\n";
-  os << indent << "EpipolarLines: " << this->EpipolarLines << "\n";
-  os << indent << "EpipolarSamples: " << this->EpipolarSamples << "\n";
-  os << indent << "EpipolarStep: " << this->EpipolarStep << "\n";
-  os << indent << "LightVolumeResolution: " << this->LightVolumeResolution << "\n";
-  os << indent << "TranslucentShadows: " << this->TranslucentShadows << "\n";
-  os << indent << "TranslucentShadowLayers: " << this->TranslucentShadowLayers << "\n";
-  os << indent << "Decay: " << this->Decay << "\n";
-  os << indent << "Density: " << this->Density << "\n";
-  os << indent << "Weight: " << this->Weight << "\n";
-  os << indent << "RadialJitter: " << this->RadialJitter << "\n";
-  os << indent << "RadialGuardBand: " << this->RadialGuardBand << "\n";
-  os << indent << "TargetError: " << this->TargetError << "\n";
-  os << indent << "ProgressiveRefinement: " << this->ProgressiveRefinement << "\n";
-  os << indent << "RefinementFrames: " << this->RefinementFrames << "\n";
-  os << indent << "ExactFinish: " << this->ExactFinish << "\n";
-  os << indent << "SplitLongFrames: " << this->SplitLongFrames << "\n";
-  os << indent << "TimeBudget: " << this->TimeBudget << "\n";
-  os << indent << "UseAllocatedRenderTime: " << this->UseAllocatedRenderTime << "\n";
-  os << indent << "BlurRadius: " << this->BlurRadius << "\n";
-  os << indent << "DownsampleFactor: " << this->DownsampleFactor << "\n";
-  os << indent << "AccumulationPrecision: " << this->AccumulationPrecision << "\n";
-  os << indent << "LastFrame:\n";
-  this->Impl->LastFrame->PrintSelf(os, indent.GetNextIndent());
 }

@@ -326,11 +326,19 @@ public:
   /**
    * Distributed rendering (ParaView under MPI): the world bounds of every process's shadow
    * casters; set, all processes render their maps with one light camera, for an observer of
-   * ShadowMapRenderedEvent to combine (docs/paraview.md). Default is unset.
+   * ShadowMapRenderedEvent to combine (docs/paraview.md). PaintBackground: the delegate renders
+   * the scene over a transparent background and a compositor blends the background in after
+   * the pass (IceT), so the pass paints PaintedBackground (RGB, each in [0, 1]) behind the
+   * scene's uncovered part before the medium dims it. Defaults are unset, off and (0, 0, 0).
    */
   void SetShadowCasterBounds(const double bounds[6]);
   void UnsetShadowCasterBounds();
   bool GetShadowCasterBounds(double bounds[6]);
+  vtkSetMacro(PaintBackground, bool);
+  vtkGetMacro(PaintBackground, bool);
+  vtkBooleanMacro(PaintBackground, bool);
+  void SetPaintedBackground(double r, double g, double b);
+  vtkGetVector3Macro(PaintedBackground, double);
   ///@}
 
   ///@{
@@ -465,6 +473,8 @@ protected:
   double TimeBudget = 0.0;
   bool UseAllocatedRenderTime = true;
 
+  bool PaintBackground = false;
+  double PaintedBackground[3] = { 0.0, 0.0, 0.0 };
   bool UseShadowCasterBounds = false;
   double ShadowCasterBounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 };
 

@@ -1,5 +1,5 @@
 """The hooks distributed rendering uses (ParaView under MPI): ShadowMapRenderedEvent with
-GetShadowMapTexture(), and SetShadowCasterBounds()."""
+GetShadowMapTexture(), SetShadowCasterBounds(), and PaintBackground with PaintedBackground."""
 
 import math
 
@@ -93,3 +93,38 @@ def test_non_finite_shadow_caster_bounds_are_refused(messages):
     shafts.SetShadowCasterBounds([0.0, 1.0, 0.0, math.nan, 0.0, 1.0])
     assert not shafts.GetShadowCasterBounds([0.0] * 6)
     assert len(log.errors) == 1 and "ShadowCasterBounds" in log.errors[0]
+
+
+def test_a_painted_background_is_dimmed_as_the_renderer_s_own():
+    """A compositor (ParaView's IceT) renders the scene over a transparent background and blends
+    the background in after the pass: with PaintBackground the pass paints it behind the scene's
+    uncovered part before the medium dims it, as it dims a background the renderer cleared to."""
+    background = (0.2, 0.3, 0.4)
+    shots = {}
+    for case in ("cleared", "painted", "unpainted"):
+        renderer, window = rh.make_window(160, 120)
+        scenes.sphere_and_floor(renderer, sphere_resolution=32)
+        shafts = rh.plain_slab_pass(slices=64, shadow_map=512, sigma_a=(0.05, 0.05, 0.05))
+        if case == "cleared":
+            renderer.SetBackground(*background)
+        else:
+            renderer.SetBackground(0.0, 0.0, 0.0)
+            renderer.SetBackgroundAlpha(0.0)  # the scene image: nothing where nothing is drawn
+            shafts.SetPaintBackground(case == "painted")
+            shafts.SetPaintedBackground(*background)
+        renderer.SetPass(shafts)
+        window.Render()
+        shots[case] = rh.screenshot(window).astype(float)
+        assert shafts.GetLastFrame().GetGLErrorCount() == 0
+    difference = np.abs(shots["painted"] - shots["cleared"])
+    assert difference.max() <= 1.0 and difference.mean() < 0.05, (difference.max(),
+                                                                  difference.mean())
+    # Unpainted, the sky lacks the background: the test sees the difference.
+    assert np.abs(shots["unpainted"] - shots["cleared"]).mean() > 3.0
+
+
+def test_painted_background_refuses_nan_and_clamps():
+    shafts = vtkLightShaftPass()
+    assert not shafts.GetPaintBackground()
+    shafts.SetPaintedBackground(2.0, -1.0, 0.5)
+    assert shafts.GetPaintedBackground() == (1.0, 0.0, 0.5)

@@ -188,6 +188,14 @@ void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
   }
   this->UpdateMediumVolume();
   vtkLightShaftPass* shafts = this->Impl->Shafts;
+  // IceT composites the processes' images over a transparent background and blends the
+  // renderer's flat background in after the pass (the renderer's is black while it renders):
+  // the pass paints it where the medium must dim it. A gradient or textured background is left
+  // to IceT.
+  shafts->SetPaintBackground(DistributedController() && !renderer->GetGradientBackground() &&
+                             !renderer->GetTexturedBackground());
+  shafts->SetPaintedBackground(
+    renderer->GetBackground()[0], renderer->GetBackground()[1], renderer->GetBackground()[2]);
   if (this->Impl->FitMedium && !this->Impl->FitAsked)
   {
     // Asked now, after ParaView pushed the properties' defaults; the user's values given
