@@ -79,3 +79,10 @@ view.CameraViewAngle = 38.0
 Render(view)
 SaveScreenshot(args.output, view, ImageResolution=args.size)
 print("wrote", args.output)
+# How the plume is held: on several processes (mpirun) each computes its piece of the image and
+# the view gathers what the shafts need, so its points summed over the processes are about the
+# whole image's, not a multiple of it.
+extent = turbulence.WholeExtent
+whole = (extent[1] - extent[0] + 1) * (extent[3] - extent[2] + 1) * (extent[5] - extent[4] + 1)
+print(f"the plume: {plume.GetDataInformation().GetNumberOfPoints()} points over the processes"
+      f" (its whole image: {whole})")

@@ -13,8 +13,18 @@
 
 namespace
 {
-// The array rho is read from: the named one (points, then cells), else the scalars.
-vtkDataArray* DensityArray(vtkImageData* image, const char* name, bool& cells, std::string& why)
+
+bool Finite3(const double v[3])
+{
+  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkLightShaftDensityField::FindArray(vtkImageData* image,
+  const char* name,
+  bool& cells,
+  std::string& why)
 {
   vtkDataArray* array = nullptr;
   if (name && *name)
@@ -45,12 +55,6 @@ vtkDataArray* DensityArray(vtkImageData* image, const char* name, bool& cells, s
   return array;
 }
 
-bool Finite3(const double v[3])
-{
-  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
-}
-}
-
 //------------------------------------------------------------------------------
 std::string vtkLightShaftDensityField::Read(vtkImageData* image, const char* arrayName)
 {
@@ -69,7 +73,7 @@ std::string vtkLightShaftDensityField::Read(vtkImageData* image, const char* arr
   }
   bool cells = false;
   std::string why;
-  vtkDataArray* array = DensityArray(image, arrayName, cells, why);
+  vtkDataArray* array = FindArray(image, arrayName, cells, why);
   if (!array)
   {
     return why;

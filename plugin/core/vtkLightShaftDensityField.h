@@ -13,6 +13,7 @@
 #include <string>  // For the reason an image is refused
 #include <vector>  // For the samples and the breakpoints
 
+class vtkDataArray;
 class vtkImageData;
 
 /**
@@ -36,6 +37,15 @@ class vtkLightShaftDensityField
 public:
   /// The largest field read, in samples (512^3: 512 MiB as float32).
   static constexpr std::size_t MaximumSamples = std::size_t(1) << 27;
+
+  /**
+   * The array rho is read from, by the rule above: the named one (points, then cells; `cells`
+   * says which), else the scalars; nullptr with the reason in `why`.
+   */
+  static vtkDataArray* FindArray(vtkImageData* image,
+    const char* name,
+    bool& cells,
+    std::string& why);
 
   /**
    * Reads `image`'s density (see the class description); `arrayName` empty or null: the

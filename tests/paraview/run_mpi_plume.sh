@@ -3,7 +3,8 @@
 # Calculator as the view's MediumDensity) at 400x300 under `mpirun -np 2` and `-np 4` pvbatch
 # against a serial pvbatch, with scattering and with absorption only. Each must be the serial
 # picture: a mean difference of at most 0.2 levels, at most 0.3% of the pixels off by more than
-# 4 levels (docs/paraview-mpi.md).
+# 4 levels (docs/paraview-mpi.md). And the plume must be split, not copied: its points summed over
+# the processes at most 1.2 times its whole image's (each process computes its piece).
 # Usage: run_mpi_plume.sh OUTPUT_DIR   (PYTHONPATH and the plugin from the environment)
 set -u
 out="$1"
@@ -37,6 +38,7 @@ for mode in scattering absorb-only; do
   done
 done
 /usr/bin/python3 - "$out" <<'PY' || status=1
+import re
 import sys
 import numpy as np
 from matplotlib.image import imread
@@ -53,6 +55,20 @@ for mode in ("scattering", "absorb-only"):
               f"{100 * off:.2f}% of pixels off by > 4 levels, at most {diff.max():.0f}")
         if mean > 0.2 or off > 0.003:
             failures.append(f"{mode} at np {np_} is not the serial picture")
+for mode in ("scattering", "absorb-only"):
+    for np_ in (1, 2, 4):
+        with open(f"{out}/{mode}-np{np_}.log") as log:
+            found = re.search(r"the plume: (\d+) points over the processes \(its whole image: (\d+)\)",
+                              log.read())
+        if not found:
+            failures.append(f"{mode} at np {np_}: the example did not say how the plume is held")
+            continue
+        held, whole = int(found.group(1)), int(found.group(2))
+        if mode == "scattering":
+            print(f"np {np_}: the plume's points over the processes {held} (whole image {whole}:"
+                  f" {held / whole:.3f} times)")
+        if held > (whole if np_ == 1 else 1.2 * whole):
+            failures.append(f"{mode} at np {np_}: the plume is held {held / whole:.2f} times")
 for failure in failures:
     print("FAIL:", failure)
 sys.exit(1 if failures else 0)

@@ -14,6 +14,7 @@
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVImageProcessingChain.h"
+#include "vtkPVLightShaftsFieldGather.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
@@ -33,6 +34,8 @@ class vtkPVLightShaftsView::Internals
 public:
   vtkNew<vtkLightShaftPass> Shafts;
   vtkNew<vtkPVImageProcessingChain> Chain;
+  // Under MPI: the MediumDensity source's pieces gathered into its whole image.
+  vtkNew<vtkPVLightShaftsFieldGather> FieldGather;
   // The render view's own tone-mapping pass (private to vtkPVRenderView; see the constructor).
   vtkSmartPointer<vtkImageProcessingPass> ToneMapping;
   bool UseToneMapping = false;
@@ -826,6 +829,12 @@ void vtkPVLightShaftsView::SetNoiseVelocity2(double u, double v)
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetMediumDensityConnection(vtkAlgorithmOutput* output)
 {
+  if (output && DistributedController())
+  {
+    // Each process computes its piece of the source; the pass sees the whole image.
+    this->Impl->FieldGather->SetInputConnection(output);
+    output = this->Impl->FieldGather->GetOutputPort();
+  }
   this->Impl->DensityConnection = output;
   if (!this->MediumFromVolume)
   {
@@ -884,6 +893,7 @@ void vtkPVLightShaftsView::UpdateMediumVolume()
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetMediumDensityArray(const char* name)
 {
+  this->Impl->FieldGather->SetArrayName(name);
   this->Impl->Shafts->GetMedium()->SetDensityArrayName(name);
 }
 

@@ -1,0 +1,66 @@
+/**
+ * @class   vtkPVLightShaftsFieldGather
+ * @brief   The light-shaft view's medium from data on several processes: each process updates
+ *          only its piece of the source's image, and the pieces of the density array are
+ *          gathered into the whole image on every process.
+ *
+ * The input is the view's MediumDensity source. Each process asks it for piece rank of size (its
+ * extent, no ghost levels), so the source computes and holds only that part; the output has the
+ * input's whole extent and rho alone (the first component of vtkLightShaftDensityField's array:
+ * the named point or cell array, else the scalars) as float32, as the pass keeps it, combined with
+ * a MAX reduction over the processes: every sample comes from a process that computed it (the
+ * points two pieces share are equal there).
+ * The pass then sees the serial image. RequestData is collective: every process executes it in
+ * the same render (their pipelines are the same).
+ */
+
+#ifndef vtkPVLightShaftsFieldGather_h
+#define vtkPVLightShaftsFieldGather_h
+
+#include "vtkImageAlgorithm.h"      // For the base class
+#include "vtkPVLightShaftsModule.h" // For the export macro
+
+#include <string> // For the array's name
+
+class vtkMultiProcessController;
+
+class VTKLIGHTSHAFTS_EXPORT vtkPVLightShaftsFieldGather : public vtkImageAlgorithm
+{
+public:
+  static vtkPVLightShaftsFieldGather* New();
+  vtkTypeMacro(vtkPVLightShaftsFieldGather, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The density array's name (empty: the scalars), as the medium's DensityArrayName. Default
+   * is empty.
+   */
+  void SetArrayName(const char* name);
+  const char* GetArrayName() const { return this->ArrayName.c_str(); }
+  ///@}
+
+  ///@{
+  /**
+   * The processes that share the source (nullptr: the global controller). Default is nullptr.
+   */
+  void SetController(vtkMultiProcessController* controller);
+  vtkMultiProcessController* GetController();
+  ///@}
+
+protected:
+  vtkPVLightShaftsFieldGather();
+  ~vtkPVLightShaftsFieldGather() override;
+
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkPVLightShaftsFieldGather(const vtkPVLightShaftsFieldGather&) = delete;
+  void operator=(const vtkPVLightShaftsFieldGather&) = delete;
+
+  std::string ArrayName;
+  vtkMultiProcessController* Controller = nullptr;
+};
+
+#endif
