@@ -29,9 +29,7 @@ void ExtendDepthRange(const double bounds[6],
 {
   for (int corner = 0; corner < 8; ++corner)
   {
-    const glm::dvec3 p(
-      bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)]);
-    const double depth = glm::dot(p - apex, axis);
+    const double depth = glm::dot(BoxCorner(bounds, corner) - apex, axis);
     nearest = std::min(nearest, depth);
     deepest = std::max(deepest, depth);
   }

@@ -137,11 +137,13 @@ def test_scalar_clamping(name, low, high, expect_low, expect_high):
     assert getattr(parameter_owner(p, name), "Get" + name)() == expect_high
 
 
-@pytest.mark.parametrize("name", ["ScatteringCoefficient", "AbsorptionCoefficient"])
-def test_vector_clamping(name):
+@pytest.mark.parametrize("name,high", [("ScatteringCoefficient", 1e6),
+                                       ("AbsorptionCoefficient", 1e6),
+                                       ("PaintedBackground", 1.0)])
+def test_vector_clamping(name, high):
     p = vtkLightShaftPass()
     getattr(parameter_owner(p, name), "Set" + name)(-1.0, 0.5, 1e9)
-    assert getattr(parameter_owner(p, name), "Get" + name)() == (0.0, 0.5, 1e6)
+    assert getattr(parameter_owner(p, name), "Get" + name)() == (0.0, 0.5, high)
 
 
 @pytest.mark.parametrize("name,args", [
@@ -161,6 +163,8 @@ def test_vector_clamping(name):
     ("TargetError", (math.nan,)),
     ("TimeBudget", (math.nan,)),
     ("TimeBudget", (math.inf,)),
+    ("PaintedBackground", (math.nan, 0.5, 0.5)),
+    ("PaintedBackground", (0.5, 0.5, math.inf)),
 ])
 def test_non_finite_refused(messages, name, args):
     p = vtkLightShaftPass()

@@ -121,10 +121,3 @@ def test_a_painted_background_is_dimmed_as_the_renderer_s_own():
                                                                   difference.mean())
     # Unpainted, the sky lacks the background: the test sees the difference.
     assert np.abs(shots["unpainted"] - shots["cleared"]).mean() > 3.0
-
-
-def test_painted_background_refuses_nan_and_clamps():
-    shafts = vtkLightShaftPass()
-    assert not shafts.GetPaintBackground()
-    shafts.SetPaintedBackground(2.0, -1.0, 0.5)
-    assert shafts.GetPaintedBackground() == (1.0, 0.0, 0.5)

@@ -829,11 +829,12 @@ void vtkPVLightShaftsView::SetNoiseVelocity2(double u, double v)
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetMediumDensityConnection(vtkAlgorithmOutput* output)
 {
-  if (output && DistributedController())
+  if (DistributedController())
   {
-    // Each process computes its piece of the source; the pass sees the whole image.
+    // Each process computes its piece of the source; the pass sees the whole image. (No
+    // source: the gather lets go of the last one.)
     this->Impl->FieldGather->SetInputConnection(output);
-    output = this->Impl->FieldGather->GetOutputPort();
+    output = output ? this->Impl->FieldGather->GetOutputPort() : nullptr;
   }
   this->Impl->DensityConnection = output;
   if (!this->MediumFromVolume)
