@@ -64,6 +64,9 @@
 #   tools/measure.sh frame-bound       # four spotlights at each method's sampling maxima: the
 #                                      # whole frame, and split among frames (docs/robustness.md)
 #   tools/measure.sh fixed-cost        # a frame's cost besides its integral, a few random scenes
+#   tools/measure.sh mpi-scaling       # the shafts' work divided among ParaView's MPI
+#                                      # processes, np 1, 2, 4 (docs/paraview-mpi-scaling.md;
+#                                      # about 3 min)
 #   tools/measure.sh pytest TEST...    # a test, printing what it measured (-s)
 #
 # Extra arguments go to the script (e.g. tools/measure.sh random-scenes --scenes 5).
@@ -145,6 +148,7 @@ case "$what" in
   responsiveness) run tests/benchmarks/responsiveness.py "$@" ;;
   frame-bound) run tests/benchmarks/frame_bound.py "$@" ;;
   fixed-cost) run tests/benchmarks/fixed_cost.py "$@" ;;
+  mpi-scaling) run tests/benchmarks/paraview_mpi_table.py "$@" ;;
   pytest) run -m pytest -p no:cacheprovider -q -s "$@" ;;
   *)
     sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"  # the header comment

@@ -29,6 +29,8 @@ parser.add_argument("-o", "--output", default="smoke_plume.png")
 parser.add_argument("--size", type=int, nargs=2, default=[800, 600], metavar=("W", "H"))
 parser.add_argument("--absorb-only", action="store_true",
                     help="scattering 0: the plume only dims what lies behind it")
+parser.add_argument("--points", type=int, default=37,
+                    help="the plume's samples across (37; 256 gives a 256 x 333 x 256 field)")
 args = parser.parse_args()
 
 LoadPlugin(next(p for p in candidates if p and os.path.exists(p)), remote=False, ns=globals())
@@ -39,19 +41,23 @@ view.UseColorPaletteForBackground = 0
 view.Background = [0.01, 0.01, 0.015]
 view.UseLight = 0                                   # the spotlight alone
 
-Show(Plane(Origin=[-48, 0, -48], Point1=[48, 0, -48], Point2=[-48, 0, 48],
-           XResolution=64, YResolution=64), view)
 
 # The wavelet's points sit at their indices (spacing 1): the plume spans [-18, 18] x [0, 47]
 # x [-18, 18] world units, and the scene is built to that scale (S world units to the Python
-# example's one: examples/smoke_plume.py).
-S = 6.0
-turbulence = Wavelet(WholeExtent=[-18, 18, 0, 47, -18, 18], Center=[0, 24, 0])
+# example's one: examples/smoke_plume.py). --points scales the plume's samples and the scene
+# with them.
+half = args.points // 2
+S = 6.0 * half / 18
+top = round(47 * half / 18)
+turbulence = Wavelet(WholeExtent=[-half, half, 0, top, -half, half], Center=[0, 24 * half / 18, 0])
 plume = Calculator(Input=turbulence, ResultArrayName="smoke")
 x, y, z = f"(coordsX / {S})", f"(coordsY / {S})", f"(coordsZ / {S})"
 width = f"(0.35 + 0.22 * {y})"                      # the column widens as it rises
 plume.Function = (f"exp(-(({x} - 0.08 * {y}^2)^2 + {z}^2) / (2 * {width}^2))"  # and leans
                   f" * exp(-0.12 * {y}) * (0.4 + 1.2 * abs(RTData - 37) / 240)")
+
+Show(Plane(Origin=[-8 * S, 0, -8 * S], Point1=[8 * S, 0, -8 * S], Point2=[-8 * S, 0, 8 * S],
+           XResolution=64, YResolution=64), view)
 
 light = AddLight(view=view)                         # ParaView's light API (Light Inspector)
 light.Coords = "Scene"

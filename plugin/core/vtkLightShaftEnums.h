@@ -38,7 +38,10 @@ enum AccumulationPrecision
 enum Event
 {
   ShadowMapRenderedEvent = vtkCommand::UserEvent + 4301,
-  RefinementNeededEvent = vtkCommand::UserEvent + 4302
+  RefinementNeededEvent = vtkCommand::UserEvent + 4302,
+  SceneDepthReadyEvent = vtkCommand::UserEvent + 4303,
+  InScatterPieceEvent = vtkCommand::UserEvent + 4304,
+  ShadowMapReuseEvent = vtkCommand::UserEvent + 4305
 };
 
 /// A method's name ("slices", "ray-march", ...; "none" for any other value).

@@ -159,4 +159,43 @@ double FarthestViewPoint(const CameraFrame& camera, const glm::dvec3& pointVC)
   }
   return farthest;
 }
+
+//------------------------------------------------------------------------------
+int ImagePieceBlockRows(int pieces, int height)
+{
+  return std::min(std::max(height / (16 * std::max(pieces, 1)), 4), 16);
+}
+
+std::vector<RowBlock> ImagePieceRows(int piece, int pieces, int height)
+{
+  std::vector<RowBlock> rows;
+  if (pieces < 1 || piece < 0 || piece >= pieces || height < 1)
+  {
+    return rows;
+  }
+  const int block = ImagePieceBlockRows(pieces, height);
+  for (int first = piece * block; first < height; first += pieces * block)
+  {
+    rows.push_back(RowBlock{ first, std::min(first + block, height) });
+  }
+  return rows;
+}
+
+std::vector<RowBlock> GrowRows(const std::vector<RowBlock>& rows, int margin, int height)
+{
+  std::vector<RowBlock> grown;
+  for (const RowBlock& b : rows)
+  {
+    const RowBlock g{ std::max(b.First - margin, 0), std::min(b.End + margin, height) };
+    if (!grown.empty() && g.First <= grown.back().End)
+    {
+      grown.back().End = std::max(grown.back().End, g.End);
+    }
+    else
+    {
+      grown.push_back(g);
+    }
+  }
+  return grown;
+}
 }

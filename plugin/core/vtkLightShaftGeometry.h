@@ -21,7 +21,7 @@
 
 #include <array>  // For the float conversions
 #include <string> // For the reason a camera is unusable
-#include <vector> // For the views and the casters
+#include <vector> // For the views, the casters and the image pieces' rows
 
 class vtkCamera;
 class vtkMatrix4x4;
@@ -146,6 +146,26 @@ struct LightFrame
 
 /// The farthest point of the view volume (camera plane to the camera's FarDepth) from `pointVC`.
 double FarthestViewPoint(const CameraFrame& camera, const glm::dvec3& pointVC);
+
+/// Rows [First, End) of an image.
+struct RowBlock
+{
+  int First = 0;
+  int End = 0;
+};
+
+/**
+ * The rows of an image `height` rows high whose in-scatter piece `piece` of `pieces` computes
+ * (distributed rendering: vtkLightShaftPass::SetImagePiece): blocks of ImagePieceBlockRows rows
+ * dealt out in turn, block b to piece b mod pieces, so that each piece has rows all over the
+ * picture (a shaft's cost differs from row to row). Every row belongs to exactly one piece.
+ */
+std::vector<RowBlock> ImagePieceRows(int piece, int pieces, int height);
+/// The rows of a block: a sixteenth of a piece's share of the rows, at least 4 and at most 16
+/// (the smaller, the more evenly a beam's rows are shared; measured in docs/paraview-mpi.md).
+int ImagePieceBlockRows(int pieces, int height);
+/// `rows` grown by `margin` rows on each side, within [0, height), blocks that meet merged.
+std::vector<RowBlock> GrowRows(const std::vector<RowBlock>& rows, int margin, int height);
 }
 
 #endif

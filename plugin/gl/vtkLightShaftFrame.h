@@ -19,7 +19,7 @@
 #include "vtkWeakPointer.h"          // For the statistics' light
 
 #include <string> // For the shader variant
-#include <vector> // For the per-light statistics
+#include <vector> // For the per-light statistics and the image piece's rows
 
 class vtkLight;
 class vtkLightShaftDensityField;
@@ -77,6 +77,8 @@ struct vtkLightShaftParameters
   const double* ShadowCasterBounds = nullptr; ///< set for distributed rendering, else nullptr
   bool PaintBackground{}; ///< a compositor blends the background in after the pass
   const double* PaintedBackground = nullptr; ///< the background it blends in (RGB)
+  int ImagePiece{};                          ///< this process's piece of the in-scatter's rows
+  int ImagePieces{};                         ///< (1: the whole image)
   bool ProgressiveRefinement{};
   int RefinementFrames{};
   bool ExactFinish{};
@@ -176,6 +178,10 @@ struct vtkLightShaftStatistics
   double PredictedFrameTime = -1.0;
   double FrameTime = -1.0;
   int BudgetLights = 0;
+  /// Image pieces: the rows of the in-scatter this process computed (0: not split) and the
+  /// fragments its split methods shaded (-1: not counted; counted only when split).
+  int ImagePieceRows = 0;
+  long long InScatterFragments = -1;
 };
 
 /**
@@ -286,6 +292,11 @@ struct vtkLightShaftFrame
   /// RefinementSplit, so that a group of shares adds up to one frame of the setting, piece for
   /// piece (vtkLightShaftRefinement::Begin sets it).
   int SamplePart = 0;
+  /// Image pieces (vtkLightShaftPass::SetImagePiece): the rows of the in-scatter this process
+  /// computes (empty: all), and those the current light's method limits its drawing to
+  /// (nullptr: all; set for the methods that split, vtkLightShaftInScatter::Add).
+  std::vector<vtkLightShaftGeometry::RowBlock> PieceRows;
+  const std::vector<vtkLightShaftGeometry::RowBlock>* ComputeRows = nullptr;
 
   /// The method whose slab program the frame readied (the frame report's GetShaderVariant names
   /// it).

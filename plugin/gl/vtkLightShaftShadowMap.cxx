@@ -94,8 +94,21 @@ vtkTextureObject* vtkLightShaftShadowMap::Ready(vtkLightShaftFrame& frame)
   const int maximum = vtkTextureObject::GetMaximumTextureSize(window) / (cube ? 3 : 1);
   const int size = std::max(1, std::min(frame.Parameters.ShadowMapSize, maximum));
   Signature signature = this->Sign(frame, size);
-  const bool observed = frame.Owner->HasObserver(vtkLightShaftEnums::ShadowMapRenderedEvent);
-  if (this->Valid && !observed && this->Cube == cube && signature == this->Rendered)
+  bool reuse = this->Valid && this->Cube == cube && signature == this->Rendered;
+  if (frame.Owner->HasObserver(vtkLightShaftEnums::ShadowMapRenderedEvent))
+  {
+    // The map's observers rewrite it (distributed processes combine theirs): it is rendered
+    // again, unless an observer of ShadowMapReuseEvent agrees that it can be reused (every
+    // process's map unchanged: the combined one the texture holds is still right).
+    int agreed = reuse ? 1 : 0;
+    const bool asked = frame.Owner->HasObserver(vtkLightShaftEnums::ShadowMapReuseEvent);
+    if (asked)
+    {
+      frame.Owner->InvokeEvent(vtkLightShaftEnums::ShadowMapReuseEvent, &agreed);
+    }
+    reuse = asked && reuse && agreed == 1;
+  }
+  if (reuse)
   {
     stats.ShadowMapReused = true;
   }

@@ -11,6 +11,8 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include <algorithm>
+
 //------------------------------------------------------------------------------
 vtkLightShaftSlabDrawer::vtkLightShaftSlabDrawer() = default;
 vtkLightShaftSlabDrawer::~vtkLightShaftSlabDrawer() = default;
@@ -115,7 +117,7 @@ void vtkLightShaftSlabDrawer::DrawBatch(vtkShaderProgram* program,
       program, this->Buffer, "sliceVertex", 0, 4 * sizeof(float), VTK_FLOAT, 4, false);
     this->VertexArrayProgram = program;
   }
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size() / 4));
+  this->DrawRows(static_cast<int>(vertices.size() / 4), frame);
   this->VertexArray->Release();
   if (more)
   {
@@ -123,6 +125,22 @@ void vtkLightShaftSlabDrawer::DrawBatch(vtkShaderProgram* program,
   }
   ++frame.Statistics.SlabBatches;
   vertices.clear();
+}
+
+//------------------------------------------------------------------------------
+void vtkLightShaftSlabDrawer::DrawRows(int vertices, const vtkLightShaftFrame& frame)
+{
+  if (!this->Rows)
+  {
+    glDrawArrays(GL_TRIANGLES, 0, vertices);
+    return;
+  }
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  for (const vtkLightShaftGeometry::RowBlock& block : *this->Rows)
+  {
+    ostate->vtkglScissor(0, block.First, frame.Reduced[0], block.End - block.First);
+    glDrawArrays(GL_TRIANGLES, 0, vertices);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -143,6 +161,17 @@ void vtkLightShaftSlabDrawer::Draw(vtkLightShaftFrame& frame,
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   this->SetUniforms(frame, program, slabs);
+  // An image piece's rows: a scissor per block, and the fragments that pass counted (the share
+  // of the frame's in-scatter this process computes).
+  this->Rows = slabs.Rows;
+  GLuint fragments = 0;
+  const GLboolean scissorWasOn = glIsEnabled(GL_SCISSOR_TEST);
+  if (this->Rows)
+  {
+    ostate->vtkglEnable(GL_SCISSOR_TEST);
+    glGenQueries(1, &fragments);
+    glBeginQuery(GL_SAMPLES_PASSED, fragments);
+  }
 
   this->Vertices.clear();
   for (const vtkLightShaftGeometry::SlabFootprint& slab : *slabs.Footprints)
@@ -154,6 +183,21 @@ void vtkLightShaftSlabDrawer::Draw(vtkLightShaftFrame& frame,
     }
   }
   this->DrawBatch(program, false, frame);
+  if (this->Rows)
+  {
+    glEndQuery(GL_SAMPLES_PASSED);
+    GLuint64 passed = 0;
+    glGetQueryObjectui64v(fragments, GL_QUERY_RESULT, &passed);
+    glDeleteQueries(1, &fragments);
+    long long& counted = frame.Statistics.InScatterFragments;
+    counted = std::max(counted, 0LL) + static_cast<long long>(passed);
+    ostate->vtkglScissor(0, 0, frame.Reduced[0], frame.Reduced[1]);
+    if (!scissorWasOn)
+    {
+      ostate->vtkglDisable(GL_SCISSOR_TEST);
+    }
+    this->Rows = nullptr;
+  }
 
   slabs.Depth->Deactivate();
   for (vtkTextureObject* t : { slabs.ShadowMap,

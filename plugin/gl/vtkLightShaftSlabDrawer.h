@@ -51,6 +51,8 @@ public:
     vtkTextureObject* Depth = nullptr;     ///< the depth the shafts read
     vtkTextureObject* ShadowMap = nullptr; ///< nullptr: no shadow lookup
     double ShadowBias = 0.0;
+    /// The target's rows drawn (image pieces: frame.ComputeRows); nullptr: all of them.
+    const std::vector<vtkLightShaftGeometry::RowBlock>* Rows = nullptr;
 
     /// `count` slabs of equal thickness over the lit volume's depth range, drawn as
     /// `footprints`, reading the depth `depth`.
@@ -65,7 +67,8 @@ public:
 
   /**
    * Draw `slabs` with `program` (ready, with the method's own uniforms set) into the bound
-   * target, added to what it holds. Records the batches in the frame's statistics.
+   * target, added to what it holds, in `slabs.Rows` only when set (one scissor per block; the
+   * fragments counted into the frame's statistics). Records the batches there too.
    */
   void Draw(vtkLightShaftFrame& frame, vtkShaderProgram* program, const Slabs& slabs);
 
@@ -77,6 +80,10 @@ private:
 
   void SetUniforms(vtkLightShaftFrame& frame, vtkShaderProgram* program, const Slabs& slabs);
   void DrawBatch(vtkShaderProgram* program, bool more, vtkLightShaftFrame& frame);
+  /// The batch's triangles, once per block of `Rows` (scissored) or once.
+  void DrawRows(int vertices, const vtkLightShaftFrame& frame);
+
+  const std::vector<vtkLightShaftGeometry::RowBlock>* Rows = nullptr; ///< of the Draw under way
 
   vtkSmartPointer<vtkOpenGLVertexArrayObject> VertexArray;
   vtkSmartPointer<vtkOpenGLBufferObject> Buffer;

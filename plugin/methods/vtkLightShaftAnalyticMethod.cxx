@@ -50,6 +50,7 @@ vtkTextureObject* vtkLightShaftAnalyticMethod::RenderUnshadowed(vtkLightShaftFra
   target.Bind();
   vtkLightShaftSlabDrawer::Slabs slabs =
     vtkLightShaftSlabDrawer::Slabs::Over(lit, this->Footprints, target.GetDepth());
+  slabs.Rows = frame.ComputeRows; // (nullptr inside RADIAL_BLUR: it needs the whole image)
   this->Drawer.Draw(frame, program, slabs);
   frame.LightStatistics->SlicesDrawn = static_cast<int>(this->Footprints.size());
   return target.GetAccumulation(0);

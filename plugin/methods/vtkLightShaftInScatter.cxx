@@ -188,7 +188,13 @@ void vtkLightShaftInScatter::Add(vtkLightShaftFrame& frame, int method)
     frame.Statistics.SliceDepthRange[0] = lit.Nearest;
     frame.Statistics.SliceDepthRange[1] = lit.Deepest;
   }
+  // Image pieces: the methods that compute each pixel on its own draw the piece's rows only.
+  const bool perPixel = method == vtkLightShaftEnums::SLICES ||
+                        method == vtkLightShaftEnums::RAY_MARCH ||
+                        method == vtkLightShaftEnums::ANALYTIC;
+  frame.ComputeRows = (perPixel && frame.Parameters.ImagePieces > 1) ? &frame.PieceRows : nullptr;
   vtkTextureObject* computed = computing->Render(frame, lit, this->Target);
+  frame.ComputeRows = nullptr;
   if (frame.ShaderMethod)
   {
     this->ShaderMethod = frame.ShaderMethod;
@@ -209,7 +215,7 @@ void vtkLightShaftInScatter::Add(vtkLightShaftFrame& frame, int method)
 }
 
 //------------------------------------------------------------------------------
-vtkTextureObject* vtkLightShaftInScatter::Finish(vtkLightShaftFrame& frame, bool& computed)
+vtkTextureObject* vtkLightShaftInScatter::Sum(vtkLightShaftFrame& frame, bool& computed)
 {
   vtkTextureObject* lights = nullptr;
   if (this->Pending && !this->Target.GetSum() && !this->TargetHolds)
@@ -242,6 +248,12 @@ vtkTextureObject* vtkLightShaftInScatter::Finish(vtkLightShaftFrame& frame, bool
     }
     return this->Target.GetAccumulation(0);
   }
+  return lights;
+}
+
+vtkTextureObject* vtkLightShaftInScatter::PostProcess(vtkLightShaftFrame& frame,
+  vtkTextureObject* lights)
+{
   return this->Post.Render(frame, lights, this->Target.GetDepth(), frame.Scene.ShaftDepth);
 }
 

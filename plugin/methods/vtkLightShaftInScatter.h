@@ -61,9 +61,11 @@ public:
    */
   void Add(vtkLightShaftFrame& frame, int method);
 
-  /// The lights' L_in at full resolution, post-processed (zeros when no light added any), and
-  /// whether any did.
-  vtkTextureObject* Finish(vtkLightShaftFrame& frame, bool& computed);
+  /// The lights' L_in summed, at the target's (reduced) resolution (zeros when no light added
+  /// any), and whether any did.
+  vtkTextureObject* Sum(vtkLightShaftFrame& frame, bool& computed);
+  /// Sum's L_in post-processed, at full resolution.
+  vtkTextureObject* PostProcess(vtkLightShaftFrame& frame, vtkTextureObject* lights);
 
   /// The feature variant and fragment source of the slab program readied last.
   const vtkLightShaftMethod* GetShaderMethod() const { return this->ShaderMethod; }

@@ -60,6 +60,14 @@ vtkTextureObject* vtkLightShaftRayMarchMethod::Render(vtkLightShaftFrame& frame,
     vtkLightShaftSlabDrawer::Slabs::Over(lit, this->Footprints, target.GetDepth());
   slabs.ShadowMap = shadowMap;
   slabs.ShadowBias = shadowMap ? frame.LightStatistics->ShadowBias : 0.0;
+  slabs.Rows = frame.ComputeRows;
+  if (frame.ComputeRows && Gathers(frame))
+  {
+    // The gather averages InterleaveSize rows on each side: the piece's rows need them too.
+    this->GatherRows =
+      vtkLightShaftGeometry::GrowRows(*frame.ComputeRows, p.InterleaveSize, frame.Reduced[1]);
+    slabs.Rows = &this->GatherRows;
+  }
   this->Drawer.Draw(frame, program, slabs);
   frame.LightStatistics->SlicesDrawn = static_cast<int>(this->Footprints.size());
 

@@ -10,7 +10,7 @@
 #include "vtkLightShaftMethod.h"          // For the base class
 #include "vtkLightShaftSeparableFilter.h" // For the gather
 
-#include <vector> // For the footprint
+#include <vector> // For the footprint and the rows
 
 class vtkLightShaftSlabDrawer;
 
@@ -42,6 +42,7 @@ private:
 
   vtkLightShaftSlabDrawer& Drawer;
   std::vector<vtkLightShaftGeometry::SlabFootprint> Footprints;
+  std::vector<vtkLightShaftGeometry::RowBlock> GatherRows; ///< an image piece's, grown
   vtkLightShaftSeparableFilter Gather;
 };
 

@@ -135,6 +135,7 @@ vtkTextureObject* vtkLightShaftSlicesMethod::Render(vtkLightShaftFrame& frame,
   slabs.LatticeShift = jitter ? -0.5 : 0.0;
   slabs.ShadowMap = shadowMap;
   slabs.ShadowBias = shadows ? frame.LightStatistics->ShadowBias : 0.0;
+  slabs.Rows = frame.ComputeRows;
   this->Drawer.Draw(frame, program, slabs);
   frame.LightStatistics->SlicesDrawn = static_cast<int>(this->Footprints.size());
   return eightBit ? this->ResolveEightBit(frame, target) : target.GetAccumulation(0);

@@ -62,6 +62,8 @@ void vtkLightShaftFrameReport::Publish(const vtkLightShaftFrame& frame,
   this->BackdropDepth = frame.SceneInView ? frame.Camera.FarDepth : 0.0;
   this->MediumFitted = frame.MediumFitted;
   this->RadialGuardBand = stats.RadialGuardBand;
+  this->ImagePieceRows = stats.ImagePieceRows;
+  this->InScatterFragments = stats.InScatterFragments;
   this->PredictedError = stats.PredictedError;
   this->ErrorModelSetting = stats.ErrorModelSetting;
   this->RefinementEstimates = stats.RefinementEstimates;
@@ -244,6 +246,8 @@ void vtkLightShaftFrameReport::PrintSelf(ostream& os, vtkIndent indent)
      << ")\n";
   os << indent << "PlainScene: " << this->PlainScene << "\n";
   os << indent << "GLErrorCount: " << this->GLErrorCount << "\n";
+  os << indent << "ImagePieceRows: " << this->ImagePieceRows << "\n";
+  os << indent << "InScatterFragments: " << this->InScatterFragments << "\n";
   os << indent << "NumberOfSlicesDrawn: " << this->NumberOfSlicesDrawn << "\n";
   os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
   os << indent << "LightVolumeResolution: " << this->LightVolumeResolution << "\n";

@@ -91,6 +91,16 @@ public:
    */
   vtkGetMacro(BackdropDepth, double);
 
+  ///@{
+  /**
+   * Image pieces (vtkLightShaftPass::SetImagePiece): the in-scatter's rows this process
+   * computed (0: the frame was not split), and the fragments its SLICES, RAY_MARCH or ANALYTIC
+   * slabs shaded there (-1: not split, not counted). Defaults are 0 and -1.
+   */
+  vtkGetMacro(ImagePieceRows, int);
+  vtkGetMacro(InScatterFragments, long long);
+  ///@}
+
   /**
    * Whether this frame chose the medium's ScatteringCoefficient and the pass's Exposure from
    * the scene (vtkLightShaftPass::SetFitMediumToScene); their getters give the values. Default
@@ -276,6 +286,8 @@ protected:
   int NumberOfSlicesDrawn = 0;
   double SliceDepthRange[2] = { 0.0, 0.0 };
   double BackdropDepth = 0.0;
+  int ImagePieceRows = 0;
+  long long InScatterFragments = -1;
   bool MediumFitted = false;
   int NumberOfSlabBatches = 0;
   int LatticeResolution = 0;

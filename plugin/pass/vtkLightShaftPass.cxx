@@ -332,7 +332,10 @@ static_assert(
   "the precisions' values");
 static_assert(
   Same(vtkLightShaftPass::ShadowMapRenderedEvent, vtkLightShaftEnums::ShadowMapRenderedEvent) &&
-    Same(vtkLightShaftPass::RefinementNeededEvent, vtkLightShaftEnums::RefinementNeededEvent),
+    Same(vtkLightShaftPass::RefinementNeededEvent, vtkLightShaftEnums::RefinementNeededEvent) &&
+    Same(vtkLightShaftPass::SceneDepthReadyEvent, vtkLightShaftEnums::SceneDepthReadyEvent) &&
+    Same(vtkLightShaftPass::InScatterPieceEvent, vtkLightShaftEnums::InScatterPieceEvent) &&
+    Same(vtkLightShaftPass::ShadowMapReuseEvent, vtkLightShaftEnums::ShadowMapReuseEvent),
   "the events' ids");
 
 namespace
@@ -496,6 +499,18 @@ void vtkLightShaftPass::SetShadowCasterBounds(const double bounds[6])
 void vtkLightShaftPass::SetPaintedBackground(double r, double g, double b)
 {
   SetClamped(this, "PaintedBackground", this->PaintedBackground, { r, g, b }, 0.0, 1.0);
+}
+
+void vtkLightShaftPass::SetImagePiece(int piece, int numberOfPieces)
+{
+  const int pieces = std::max(numberOfPieces, 1);
+  piece = std::min(std::max(piece, 0), pieces - 1);
+  if (piece != this->ImagePiece || pieces != this->NumberOfImagePieces)
+  {
+    this->ImagePiece = piece;
+    this->NumberOfImagePieces = pieces;
+    this->Modified();
+  }
 }
 
 void vtkLightShaftPass::UnsetShadowCasterBounds()
@@ -696,6 +711,8 @@ vtkLightShaftParameters vtkLightShaftPass::Internals::Snapshot(vtkLightShaftPass
   p.ShadowCasterBounds = self.UseShadowCasterBounds ? self.ShadowCasterBounds : nullptr;
   p.PaintBackground = self.PaintBackground;
   p.PaintedBackground = self.PaintedBackground;
+  p.ImagePiece = self.ImagePiece;
+  p.ImagePieces = self.NumberOfImagePieces;
   p.TargetError = self.TargetError;
   p.ProgressiveRefinement = self.ProgressiveRefinement;
   p.RefinementFrames = self.RefinementFrames;
@@ -868,6 +885,7 @@ vtkTextureObject* vtkLightShaftPass::Internals::ComputeInScatter(vtkLightShaftFr
   frame.Volume = this->VolumeTexture.Ready(frame, this->Medium->GetDensityVolume());
   frame.VolumeField = frame.Volume ? &this->VolumeTexture.GetField() : nullptr;
   frame.Statistics.Volume = frame.Volume ? this->VolumeTexture.GetVolume() : nullptr;
+  this->BeginImagePiece(frame);
   // Each light: its in-scatter added to the others', its surface light corrected.
   this->InScatter.Begin(frame);
   frame.Statistics.Lights.resize(lights.size());
@@ -885,7 +903,19 @@ vtkTextureObject* vtkLightShaftPass::Internals::ComputeInScatter(vtkLightShaftFr
   }
   frame.LightStatistics = nullptr;
   this->ComputedLights = frame.Statistics.Lights;
-  vtkTextureObject* inScatter = this->InScatter.Finish(frame, computed);
+  vtkTextureObject* inScatter = this->InScatter.Sum(frame, computed);
+  if (computed)
+  {
+    if (frame.Parameters.ImagePieces > 1)
+    {
+      // The observers gather the pieces' rows (the lights summed, before the filters, which
+      // read neighbouring rows).
+      this->InScatterForEvent = inScatter;
+      frame.Owner->InvokeEvent(vtkLightShaftEnums::InScatterPieceEvent);
+      this->InScatterForEvent = nullptr;
+    }
+    inScatter = this->InScatter.PostProcess(frame, inScatter);
+  }
   return this->Refinement.Accumulate(frame, inScatter, rotates);
 }
 

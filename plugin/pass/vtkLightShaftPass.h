@@ -11,12 +11,11 @@
  *   renderer->SetPass(shafts);
  * @endcode
  *
- * The pass holds how the shafts are computed (method, sampling, presets, target error, budget,
- * refinement, exposure, lights, cookie, shadows on surfaces, translucency); what the medium is
- * is a shareable vtkLightShaftMedium (GetMedium), what the last frame did a
- * vtkLightShaftFrameReport (GetLastFrame). Each frame renders the scene through the delegate,
- * each scattering light's shadow map and the in-scattered radiance L_in, then composites
- * out = scene * exp(-sigma_t * t_surface) + Exposure * L_in (docs/methods.md).
+ * The pass holds how the shafts are computed; what the medium is is a shareable
+ * vtkLightShaftMedium (GetMedium), what the last frame did a vtkLightShaftFrameReport
+ * (GetLastFrame). Each frame renders the scene through the delegate, each scattering light's
+ * shadow map and the in-scattered radiance L_in, then composites out = scene * exp(-sigma_t *
+ * t_surface) + Exposure * L_in (docs/methods.md).
  *
  * A medium that neither scatters nor absorbs, or no usable light, leaves the delegate's image
  * unchanged (pixel-identical). Floating-point setters refuse NaN and infinities with an error
@@ -75,18 +74,20 @@ public:
     /// After the shadow map is rendered and before it is used: GetShadowMapTexture() is valid
     /// (and may be rewritten, e.g. combined over distributed processes), the context current.
     ShadowMapRenderedEvent = vtkCommand::UserEvent + 4301,
-    /// After a frame whose still picture is refining: render again, from a timer or the event
-    /// loop (lightshafts.refine_while_still), never inside the callback.
-    RefinementNeededEvent = vtkCommand::UserEvent + 4302
+    /// After a frame whose still picture is refining: render again, never inside the callback.
+    RefinementNeededEvent = vtkCommand::UserEvent + 4302,
+    /// With image pieces, before the in-scatter: GetSceneDepthTexture() is valid.
+    SceneDepthReadyEvent = vtkCommand::UserEvent + 4303,
+    /// With image pieces, before post-processing: GetInScatterPieceTexture() is valid.
+    InScatterPieceEvent = vtkCommand::UserEvent + 4304,
+    /// Before an observed shadow map is reused: callData an int, 1 if unchanged here; the map
+    /// is kept only if observers leave it 1 (distributed: every process's map is unchanged).
+    ShadowMapReuseEvent = vtkCommand::UserEvent + 4305
   };
 
-  /// Render the scene and its light shafts (called by the renderer).
-  void Render(const vtkRenderState* s) override;
+  void Render(const vtkRenderState* s) override; ///< the scene and its shafts (the renderer)
 
-  /**
-   * Free every GL object the pass holds; safe to call more than once. nullptr stands for the
-   * window the pass last rendered in (none: nothing to free).
-   */
+  /// Free every GL object the pass holds (idempotent); nullptr: the window it last rendered in.
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
   /// The kinds of VTK light (docs/lights-and-cookies.md).
@@ -144,10 +145,9 @@ public:
   /**
    * Choose the medium from the scene: the next frame with a 3D prop and a light sets the
    * medium's grey ScatteringCoefficient (no absorption) and the Exposure so that a scene of any
-   * size gives the same picture up to scale (docs/getting-started.md); their getters then report
-   * them. A coefficient or exposure set after this is switched on wins; switching it on again
-   * chooses again. Default is off (add_light_shafts and the PyVista and ParaView views switch
-   * it on when given no coefficient or exposure).
+   * size gives the same picture up to scale (docs/getting-started.md). A value set after this
+   * wins; switching it on again chooses again. Default is off (add_light_shafts and the
+   * PyVista and ParaView views switch it on when given no coefficient or exposure).
    */
   void SetFitMediumToScene(bool fit);
   vtkGetMacro(FitMediumToScene, bool);
@@ -157,9 +157,8 @@ public:
   ///@{
   /**
    * ShadowSurfaces: each light's share of a surface's colour shadowed by its shadow map and,
-   * with AttenuateSurfaceLight, dimmed by the medium on the light's way to the surface (one more
-   * render of the scene and a full-screen pass per light, also in an empty medium;
-   * docs/lights-and-cookies.md). Defaults are off and on.
+   * with AttenuateSurfaceLight, dimmed by the medium on the light's way (one more render of the
+   * scene and a pass per light, also in an empty medium). Defaults are off and on.
    */
   vtkSetMacro(ShadowSurfaces, bool);
   vtkGetMacro(ShadowSurfaces, bool);
@@ -193,8 +192,8 @@ public:
 
   ///@{
   /**
-   * Cookie (gobo): an RGB image projected from each spot and directional light onto the shafts
-   * and surfaces (point lights get none; docs/lights-and-cookies.md). Default is nullptr.
+   * Cookie (gobo): an RGB image projected from each spot and directional light (not point
+   * lights) onto the shafts and surfaces. Default is nullptr.
    */
   void SetCookie(vtkTexture* cookie);
   vtkTexture* GetCookie();
@@ -329,7 +328,9 @@ public:
    * ShadowMapRenderedEvent to combine (docs/paraview.md). PaintBackground: the delegate renders
    * the scene over a transparent background and a compositor blends the background in after
    * the pass (IceT), so the pass paints PaintedBackground (RGB, each in [0, 1]) behind the
-   * scene's uncovered part before the medium dims it. Defaults are unset, off and (0, 0, 0).
+   * scene's uncovered part before the medium dims it. SetImagePiece: SLICES, RAY_MARCH and
+   * ANALYTIC compute this piece's rows of the in-scatter only, for the events' observers to
+   * exchange (docs/paraview-mpi.md). Defaults are unset, off, (0, 0, 0) and piece 0 of 1.
    */
   void SetShadowCasterBounds(const double bounds[6]);
   void UnsetShadowCasterBounds();
@@ -339,14 +340,16 @@ public:
   vtkBooleanMacro(PaintBackground, bool);
   void SetPaintedBackground(double r, double g, double b);
   vtkGetVector3Macro(PaintedBackground, double);
+  void SetImagePiece(int piece, int numberOfPieces);
+  vtkGetMacro(ImagePiece, int);
+  vtkGetMacro(NumberOfImagePieces, int);
   ///@}
 
   ///@{
   /**
-   * Quality presets: the cheapest setting of the error model's ladder whose 90th-percentile
-   * error on random scenes meets Draft 5%, Interactive 2% or Final 0.5% (EPIPOLAR, LIGHT_VOLUME
-   * and RAY_MARCH settings). They set the method, its sampling and the post-processing; other
-   * parameters are unchanged (docs/quality-and-cost.md). The defaults are none of them.
+   * Quality presets: the cheapest ladder setting whose 90th-percentile error on random scenes
+   * meets Draft 5%, Interactive 2% or Final 0.5%; they set the method, its sampling and the
+   * post-processing only (docs/quality-and-cost.md). The defaults are none of them.
    */
   void SetQualityToDraft();
   void SetQualityToInteractive();
@@ -356,10 +359,9 @@ public:
   ///@{
   /**
    * Target relative RMS error of the in-scatter against the float64 reference, in [0, 1] (0:
-   * off): each frame renders with the error model's cheapest setting predicted to meet it for
-   * this scene, overriding the method, its sampling, ShadowMapSize and the post-processing for
-   * that frame; at least 90% of held-out random scenes meet it (docs/quality-and-cost.md).
-   * Default is 0 (off).
+   * off): each frame renders with the error model's cheapest setting predicted to meet it,
+   * overriding the method, its sampling, ShadowMapSize and the post-processing; 90% of held-out
+   * random scenes meet it (docs/quality-and-cost.md). Default is 0 (off).
    */
   void SetTargetError(double error);
   vtkGetMacro(TargetError, double);
@@ -405,30 +407,33 @@ public:
   vtkBooleanMacro(UseAllocatedRenderTime, bool);
   ///@}
 
-  /// The name of a setting of the error model's ladder ("none" out of range), for
-  /// vtkLightShaftFrameReport::GetErrorModelSetting.
+  /// The name of a setting of the error model's ladder (GetErrorModelSetting; "none": none)
   static const char* GetErrorModelSettingName(int setting);
 
   /**
-   * The last frame's in-scattered radiance L_in before Exposure: float RGB (array
-   * "InScatteredRadiance"), one pixel per viewport pixel, row 0 at the bottom; zeros when it
-   * added no shafts. False (`out` empty) when nothing was rendered yet or the window is gone.
+   * The last frame's L_in before Exposure: float RGB ("InScatteredRadiance"), one pixel per
+   * viewport pixel, row 0 at the bottom, zeros without shafts. False (`out` empty) when nothing
+   * was rendered yet or the window is gone.
    */
   bool GetInScatteredRadiance(vtkImageData* out);
 
   /**
-   * The last frame's shadow map of its i-th used light, for a reference with the same
-   * visibility (vtkLightShaftReference::SetVisibilityModeToShadowMap): depths (float, N x N,
-   * 1 = nothing) and the light camera's world-to-clip matrix. False when that light had no
-   * map, and for a point light (a cube of six).
+   * The last frame's shadow map of its i-th light, for vtkLightShaftReference's ShadowMap
+   * visibility: depths (float, N x N, 1 = nothing) and the light camera's world-to-clip matrix.
+   * False when that light had no map, and for a point light (a cube of six).
    */
   bool GetLastShadowMap(vtkImageData* depths, vtkMatrix4x4* worldToLightClip, int index = 0);
 
+  ///@{
   /**
-   * The shadow map's depth texture (32-bit float depth, N x N, 1 = nothing) while
-   * ShadowMapRenderedEvent is being handled; nullptr at any other time.
+   * While an event is handled (nullptr at any other time): ShadowMapRenderedEvent's shadow map
+   * (32-bit float depth, N x N, 1 = nothing), SceneDepthReadyEvent's scene depth (the
+   * viewport's), InScatterPieceEvent's in-scatter (RGBA, DownsampleFactor times smaller).
    */
   vtkTextureObject* GetShadowMapTexture();
+  vtkTextureObject* GetSceneDepthTexture();
+  vtkTextureObject* GetInScatterPieceTexture();
+  ///@}
 
 protected:
   vtkLightShaftPass();
@@ -475,6 +480,8 @@ protected:
 
   bool PaintBackground = false;
   double PaintedBackground[3] = { 0.0, 0.0, 0.0 };
+  int ImagePiece = 0;
+  int NumberOfImagePieces = 1;
   bool UseShadowCasterBounds = false;
   double ShadowCasterBounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 };
 

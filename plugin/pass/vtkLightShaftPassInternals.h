@@ -125,6 +125,10 @@ public:
   /// What the last frame that computed the shafts did per light (a converged frame's too).
   std::vector<vtkLightShaftLightStatistics> ComputedLights;
   vtkSmartPointer<vtkOpenGLFramebufferObject> ReadFramebuffer;
+  /// Image pieces: the textures an observer of SceneDepthReadyEvent or InScatterPieceEvent
+  /// reads and rewrites while the event is handled (nullptr otherwise).
+  vtkTextureObject* SceneDepthForEvent = nullptr;
+  vtkTextureObject* InScatterForEvent = nullptr;
 
   void Track(vtkOpenGLRenderWindow* window);
   void Untrack();
@@ -169,6 +173,9 @@ public:
   void PublishRefinement(vtkLightShaftFrame& frame);
   /// A measured frame: `shafts` seconds of in-scatter of `total` (the cost model learns).
   void ObserveFrameTime(vtkLightShaftFrame& frame, double shafts, double total);
+  /// Image pieces: this process's rows (frame.PieceRows), and the scene depth handed to the
+  /// observers of SceneDepthReadyEvent (which give every process the composited one).
+  void BeginImagePiece(vtkLightShaftFrame& frame);
   /// Every light's in-scatter added up, post-processed, refined (each light's surface light
   /// too); false when nothing was computed (the target holds zeros).
   vtkTextureObject* ComputeInScatter(vtkLightShaftFrame& frame,

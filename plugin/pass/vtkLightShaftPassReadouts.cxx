@@ -1,10 +1,11 @@
-// What the pass reads out: its parameters (PrintSelf), and what the last frame left to read
-// back: the in-scatter and shadow maps, and the shader variants its report names (its
-// parameters' setters and the frame's recipe are in vtkLightShaftPass.cxx; the report itself is
-// vtkLightShaftFrameReport).
+// What the pass reads out: its parameters (PrintSelf), what the last frame left to read back
+// (the in-scatter and shadow maps, the shader variants its report names), and the textures an
+// image piece's observers exchange (its parameters' setters and the frame's recipe are in
+// vtkLightShaftPass.cxx; the report itself is vtkLightShaftFrameReport).
 #include "vtkLightShaftPass.h"
 #include "vtkLightShaftPassInternals.h"
 
+#include "vtkLightShaftEnums.h"
 #include "vtkLightShaftMethod.h"
 #include "vtkLightShaftResources.h"
 #include "vtkLightShaftShadowMap.h"
@@ -190,9 +191,42 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PaintBackground: " << this->PaintBackground << "\n";
   os << indent << "PaintedBackground: " << this->PaintedBackground[0] << ", "
      << this->PaintedBackground[1] << ", " << this->PaintedBackground[2] << "\n";
+  os << indent << "ImagePiece: " << this->ImagePiece << " of " << this->NumberOfImagePieces << "\n";
   os << indent << "BlurRadius: " << this->BlurRadius << "\n";
   os << indent << "DownsampleFactor: " << this->DownsampleFactor << "\n";
   os << indent << "AccumulationPrecision: " << this->AccumulationPrecision << "\n";
   os << indent << "LastFrame:\n";
   this->Impl->LastFrame->PrintSelf(os, indent.GetNextIndent());
+}
+
+//------------------------------------------------------------------------------
+// Image pieces: this process's rows, and the scene depth shared before they are computed.
+void vtkLightShaftPass::Internals::BeginImagePiece(vtkLightShaftFrame& frame)
+{
+  const vtkLightShaftParameters& p = frame.Parameters;
+  frame.PieceRows.clear();
+  if (p.ImagePieces < 2)
+  {
+    return;
+  }
+  frame.PieceRows =
+    vtkLightShaftGeometry::ImagePieceRows(p.ImagePiece, p.ImagePieces, frame.Reduced[1]);
+  for (const vtkLightShaftGeometry::RowBlock& block : frame.PieceRows)
+  {
+    frame.Statistics.ImagePieceRows += block.End - block.First;
+  }
+  frame.Statistics.InScatterFragments = 0;
+  this->SceneDepthForEvent = frame.Scene.ShaftDepth;
+  frame.Owner->InvokeEvent(vtkLightShaftEnums::SceneDepthReadyEvent);
+  this->SceneDepthForEvent = nullptr;
+}
+
+vtkTextureObject* vtkLightShaftPass::GetSceneDepthTexture()
+{
+  return this->Impl->SceneDepthForEvent;
+}
+
+vtkTextureObject* vtkLightShaftPass::GetInScatterPieceTexture()
+{
+  return this->Impl->InScatterForEvent;
 }

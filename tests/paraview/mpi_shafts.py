@@ -1,8 +1,8 @@
 """pvbatch script (serial or under mpirun): the test scene with the sphere turned so that the
 pieces ParaView splits it into are its left and right halves, rendered with the shafts on and
 off; writes the in-scatter images (shafts minus no shafts) with DistributedShadowMap off and on,
-the largest difference an empty medium makes to the picture, and how the sphere was split, to
-OUTPUT.npz. Usage: pvbatch mpi_shafts.py OUTPUT.npz"""
+the rows of the in-scatter process 0 computed (the shafts' work divided), the largest difference
+an empty medium makes to the picture, and how the sphere was split, to OUTPUT.npz. Usage: pvbatch mpi_shafts.py OUTPUT.npz"""
 
 import os
 import sys
@@ -37,6 +37,12 @@ def main():
         view.DistributedShadowMap = distributed
         view.LightShafts = 1
         shafts = scene.screenshot(view, output + f".d{distributed}.png")
+        # The shafts' work divided (DivideShaftWork, on): this process's rows of the in-scatter
+        # (0: not divided) and the fragments it marched there (-1: not divided).
+        view.UpdatePropertyInformation()
+        images[f"piece_rows_{distributed}"] = view.GetProperty("LastImagePieceRows").GetElement(0)
+        images[f"piece_fragments_{distributed}"] = view.GetProperty(
+            "LastInScatterFragments").GetElement(0)
         view.LightShafts = 0
         plain = scene.screenshot(view, output + ".plain.png")
         images[f"in_scatter_{distributed}"] = (shafts - plain).mean(axis=-1)

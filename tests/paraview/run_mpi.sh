@@ -2,7 +2,8 @@
 # Distributed test: the test scene under `mpirun -np 2 pvbatch` (the sphere split into its left
 # and right halves, one per process) against a serial pvbatch run. With DistributedShadowMap off,
 # each process's shadow map holds its own half only and light leaks below the other half; with it
-# on (the default) the processes' maps are combined and the shafts match the serial run.
+# on (the default) the processes' maps are combined and the shafts match the serial run; and the
+# processes divide the shafts' work (each marches its rows of the in-scatter).
 # Usage: run_mpi.sh OUTPUT_DIR   (PYTHONPATH and the plugin from the environment, as for pvbatch)
 set -u
 out="$1"
@@ -66,6 +67,16 @@ for distributed in (0, 1):
         failures.append("without combining, no leak was seen (is the data split?)")
     if distributed == 1 and (max(below) > 1.0 or off.mean() > 0.0005 or rest > 0.01):
         failures.append("with the combined shadow map the shafts differ from the serial run")
+# The shafts' work divided (DivideShaftWork): on two processes, process 0 marched its piece of
+# the rows only (the picture above is still the serial one); serial, the whole image.
+rows = [int(np2[f"piece_rows_{d}"]) for d in (0, 1)]
+fragments = [int(np2[f"piece_fragments_{d}"]) for d in (0, 1)]
+print(f"np 2: process 0 computed {rows} of the in-scatter's 300 rows, {fragments} fragments; "
+      f"serial: {[int(serial[f'piece_rows_{d}']) for d in (0, 1)]} (0: not divided)")
+if not all(100 <= r <= 200 for r in rows) or min(fragments) <= 0:
+    failures.append("on two processes, process 0 did not compute about half the rows")
+if any(int(serial[f"piece_rows_{d}"]) != 0 for d in (0, 1)):
+    failures.append("a single process divided its work")
 # An empty medium leaves ParaView's picture as it is, bit for bit (on several processes too:
 # there the view once turned off the renderer's FXAA, which IceT's compositing does not replace).
 for name, run in (("serial", serial), ("np 2", np2)):

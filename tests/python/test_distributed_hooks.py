@@ -121,3 +121,91 @@ def test_a_painted_background_is_dimmed_as_the_renderer_s_own():
                                                                   difference.mean())
     # Unpainted, the sky lacks the background: the test sees the difference.
     assert np.abs(shots["unpainted"] - shots["cleared"]).mean() > 3.0
+
+
+def render_pieces(method, pieces, downsample=1, **params):
+    """The in-scatter of the whole image and of each image piece (SetImagePiece), the frame
+    reports' rows and fragments, and what the pieces' events saw."""
+    renderer, window = rh.make_window(160, 120)
+    scenes.sphere_and_floor(renderer, sphere_resolution=32)
+    shafts = rh.plain_slab_pass(slices=64, shadow_map=512, Method=method,
+                                DownsampleFactor=downsample, **params)
+    renderer.SetPass(shafts)
+    window.Render()
+    whole = rh.in_scatter(shafts)
+    assert shafts.GetLastFrame().GetImagePieceRows() == 0
+    assert shafts.GetLastFrame().GetInScatterFragments() == -1
+    events = []
+
+    def depth_ready(pass_, _event):
+        texture = pass_.GetSceneDepthTexture()
+        events.append(("depth", texture.GetWidth(), texture.GetHeight()))
+
+    def piece_ready(pass_, _event):
+        texture = pass_.GetInScatterPieceTexture()
+        events.append(("in-scatter", texture.GetWidth(), texture.GetHeight()))
+
+    shafts.AddObserver(vtkLightShaftPass.SceneDepthReadyEvent, depth_ready)
+    shafts.AddObserver(vtkLightShaftPass.InScatterPieceEvent, piece_ready)
+    images, rows, fragments = [], [], []
+    for piece in range(pieces):
+        shafts.SetImagePiece(piece, pieces)
+        window.Render()
+        report = shafts.GetLastFrame()
+        assert report.GetGLErrorCount() == 0
+        images.append(rh.in_scatter(shafts))
+        rows.append(report.GetImagePieceRows())
+        fragments.append(report.GetInScatterFragments())
+    assert shafts.GetSceneDepthTexture() is None and shafts.GetInScatterPieceTexture() is None
+    reduced = (-(-160 // downsample), -(-120 // downsample))
+    assert events == [("depth", 160, 120), ("in-scatter", *reduced)] * pieces
+    return whole, images, rows, fragments
+
+
+def test_image_pieces_each_compute_their_rows_and_add_up_to_the_whole_image(vtk_messages):
+    vtk_messages.expect("Method ANALYTIC ignores shadows")
+    for method in (vtkLightShaftPass.SLICES, vtkLightShaftPass.RAY_MARCH,
+                   vtkLightShaftPass.ANALYTIC):
+        for pieces in (2, 3, 4):
+            whole, images, rows, fragments = render_pieces(method, pieces, InterleaveSize=1)
+            # Every row is one piece's: the others leave it at zero, so the pieces add up to the
+            # whole image exactly.
+            lit = [np.any(image != 0.0, axis=(1, 2)) for image in images]
+            assert np.all(np.sum(lit, axis=0) <= 1)
+            assert np.array_equal(np.sum(images, axis=0), whole), (method, pieces)
+            assert sum(rows) == 120 and max(rows) - min(rows) <= 16
+            # Each piece shades about its share of the fragments (rows all over the picture).
+            assert min(fragments) > 0
+            assert max(fragments) < 1.6 * sum(fragments) / pieces, (method, pieces, fragments)
+
+
+def test_a_gathering_ray_march_computes_the_rows_its_gather_reads():
+    # Interleaved sampling (InterleaveSize 2) averages neighbouring rows: each piece marches a
+    # margin around its rows, so that every row of the whole image is exactly some piece's.
+    whole, images, rows, _ = render_pieces(vtkLightShaftPass.RAY_MARCH, 3, InterleaveSize=2,
+                                           BlurRadius=0)
+    assert np.any(whole != 0.0)
+    exact = np.array([[np.array_equal(image[y], whole[y]) for y in range(120)]
+                      for image in images])
+    assert np.all(exact.any(axis=0))
+    assert sum(rows) == 120
+
+
+def test_image_pieces_at_reduced_resolution_and_for_the_methods_that_do_not_split():
+    # Half resolution: the pieces split the reduced in-scatter's rows (60), before upsampling.
+    whole, images, rows, _ = render_pieces(vtkLightShaftPass.SLICES, 2, downsample=2)
+    assert sum(rows) == 60
+    # EPIPOLAR and RADIAL_BLUR compute the whole image on every piece (their samples are not
+    # per pixel): each piece's picture is the whole one.
+    for method in (vtkLightShaftPass.EPIPOLAR, vtkLightShaftPass.RADIAL_BLUR):
+        whole, images, rows, fragments = render_pieces(method, 2)
+        for image in images:
+            assert np.array_equal(image, whole), method
+
+
+def test_image_piece_arguments_are_clamped():
+    shafts = vtkLightShaftPass()
+    shafts.SetImagePiece(5, 2)
+    assert (shafts.GetImagePiece(), shafts.GetNumberOfImagePieces()) == (1, 2)
+    shafts.SetImagePiece(-1, 0)
+    assert (shafts.GetImagePiece(), shafts.GetNumberOfImagePieces()) == (0, 1)

@@ -12,7 +12,7 @@ import sys
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 
 # The files that may include vtkLightShaftPass.h: the pass's own, the reference's public filter
-# (its input is a pass), and ParaView's view (it holds one).
+# (its input is a pass), and ParaView's view (it holds one) with its distributed exchanges.
 PASS_USERS = {
     "plugin/pass/vtkLightShaftPass.cxx",
     "plugin/pass/vtkLightShaftPassInternals.h",
@@ -20,6 +20,7 @@ PASS_USERS = {
     "plugin/pass/vtkLightShaftPassSampling.cxx",
     "plugin/pass/vtkLightShaftReference.cxx",
     "paraview/plugin/module/vtkPVLightShaftsView.cxx",
+    "paraview/plugin/module/vtkPVLightShaftsExchange.cxx",
 }
 
 

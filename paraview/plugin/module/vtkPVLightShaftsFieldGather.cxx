@@ -18,11 +18,15 @@
 
 #include <algorithm>
 #include <limits>
+#include <vector>
 
 vtkStandardNewMacro(vtkPVLightShaftsFieldGather);
 
 namespace
 {
+// The samples reduced at a time (whole planes; 16 MiB of float32).
+constexpr vtkIdType SlabSamples = vtkIdType(1) << 22;
+
 // Samples along each axis of an extent: points, or cells (at least one along a flat axis).
 void Counts(const int extent[6], bool cells, vtkIdType counts[3])
 {
@@ -33,13 +37,15 @@ void Counts(const int extent[6], bool cells, vtkIdType counts[3])
   }
 }
 
-// Copy `piece`'s samples' first component (of extent `pieceExtent`) into `whole` (of extent
-// `wholeExtent`), as float32.
+// Copy `piece`'s samples' first component (of extent `pieceExtent`) whose plane index k of the
+// whole lies in [planes[0], planes[1]) into `slab`, those planes of `wholeExtent`'s samples, as
+// float32.
 void Place(vtkDataArray* piece,
   const int pieceExtent[6],
-  vtkFloatArray* whole,
+  float* slab,
   const int wholeExtent[6],
-  bool cells)
+  bool cells,
+  const vtkIdType planes[2])
 {
   vtkIdType pieceCounts[3];
   vtkIdType wholeCounts[3];
@@ -48,7 +54,9 @@ void Place(vtkDataArray* piece,
   const vtkIdType offset[3] = { pieceExtent[0] - wholeExtent[0],
     pieceExtent[2] - wholeExtent[2],
     pieceExtent[4] - wholeExtent[4] };
-  for (vtkIdType k = 0; k < pieceCounts[2]; ++k)
+  const vtkIdType kFirst = std::max<vtkIdType>(planes[0] - offset[2], 0);
+  const vtkIdType kEnd = std::min<vtkIdType>(planes[1] - offset[2], pieceCounts[2]);
+  for (vtkIdType k = kFirst; k < kEnd; ++k)
   {
     for (vtkIdType j = 0; j < pieceCounts[1]; ++j)
     {
@@ -56,8 +64,9 @@ void Place(vtkDataArray* piece,
       {
         const vtkIdType from = i + pieceCounts[0] * (j + pieceCounts[1] * k);
         const vtkIdType to =
-          (i + offset[0]) + wholeCounts[0] * ((j + offset[1]) + wholeCounts[1] * (k + offset[2]));
-        whole->SetValue(to, static_cast<float>(piece->GetComponent(from, 0)));
+          (i + offset[0]) +
+          wholeCounts[0] * ((j + offset[1]) + wholeCounts[1] * (k + offset[2] - planes[0]));
+        slab[to] = static_cast<float>(piece->GetComponent(from, 0));
       }
     }
   }
@@ -151,23 +160,32 @@ int vtkPVLightShaftsFieldGather::RequestData(vtkInformation*,
   Counts(whole, cells, counts);
   const vtkIdType samples = counts[0] * counts[1] * counts[2];
   // rho (the first component) as float32, as the pass keeps its samples: every sample from a
-  // process that computed it (the lowest float elsewhere; the largest wins).
-  vtkNew<vtkFloatArray> mine;
-  mine->SetNumberOfTuples(samples);
-  mine->Fill(-std::numeric_limits<float>::max());
-  if (local)
-  {
-    Place(local, input->GetExtent(), mine, whole, cells);
-  }
+  // process that computed it (the lowest float elsewhere; the largest wins). Reduced a slab of
+  // planes at a time, so that a process holds its piece, the whole grid the pass reads, and
+  // one slab of at most SlabSamples besides (not a second whole grid).
   vtkNew<vtkFloatArray> gathered;
   gathered->SetNumberOfTuples(samples);
-  if (controller)
+  const vtkIdType plane = counts[0] * counts[1];
+  const vtkIdType slabPlanes = std::max<vtkIdType>(SlabSamples / std::max<vtkIdType>(plane, 1), 1);
+  std::vector<float> slab;
+  for (vtkIdType first = 0; first < counts[2]; first += slabPlanes)
   {
-    controller->AllReduce(mine, gathered, vtkCommunicator::MAX_OP);
-  }
-  else
-  {
-    gathered->DeepCopy(mine);
+    const vtkIdType planes[2] = { first, std::min(first + slabPlanes, counts[2]) };
+    const vtkIdType length = plane * (planes[1] - planes[0]);
+    slab.assign(static_cast<size_t>(length), -std::numeric_limits<float>::max());
+    if (local)
+    {
+      Place(local, input->GetExtent(), slab.data(), whole, cells, planes);
+    }
+    float* into = gathered->GetPointer(plane * planes[0]);
+    if (controller)
+    {
+      controller->AllReduce(slab.data(), into, length, vtkCommunicator::MAX_OP);
+    }
+    else
+    {
+      std::copy(slab.begin(), slab.end(), into);
+    }
   }
   gathered->SetName(
     !this->ArrayName.empty() ? this->ArrayName.c_str() : (local ? local->GetName() : "density"));

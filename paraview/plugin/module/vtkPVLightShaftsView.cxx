@@ -13,7 +13,9 @@
 #include "vtkLightShaftPass.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkPVImageProcessingChain.h"
+#include "vtkPVLightShaftsExchange.h"
 #include "vtkPVLightShaftsFieldGather.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkPropCollection.h"
@@ -36,6 +38,8 @@ public:
   vtkNew<vtkPVImageProcessingChain> Chain;
   // Under MPI: the MediumDensity source's pieces gathered into its whole image.
   vtkNew<vtkPVLightShaftsFieldGather> FieldGather;
+  // Under MPI: the shadow maps, the composited depth and the in-scatter's pieces.
+  vtkPVLightShaftsExchange Exchange;
   // The render view's own tone-mapping pass (private to vtkPVRenderView; see the constructor).
   vtkSmartPointer<vtkImageProcessingPass> ToneMapping;
   bool UseToneMapping = false;
@@ -140,12 +144,19 @@ vtkPVLightShaftsView::vtkPVLightShaftsView()
   sync->SetUseDepthBuffer(true);
   this->UpdateImageProcessing();
 
-  // Distributed: every process's shadow map gets every process's occluders.
-  vtkNew<vtkCallbackCommand> combine;
-  combine->SetClientData(this);
-  combine->SetCallback([](vtkObject*, unsigned long, void* self, void*)
-    { static_cast<vtkPVLightShaftsView*>(self)->CombineShadowMaps(); });
-  impl.Shafts->AddObserver(vtkLightShaftPass::ShadowMapRenderedEvent, combine);
+  // Distributed: every process's shadow map gets every process's occluders, and the processes
+  // divide the in-scatter's rows (on process 0's composited depth, gathered there).
+  vtkNew<vtkCallbackCommand> exchange;
+  exchange->SetClientData(this);
+  exchange->SetCallback([](vtkObject*, unsigned long event, void* self, void* data)
+    { static_cast<vtkPVLightShaftsView*>(self)->Exchange(event, data); });
+  for (unsigned long event : { vtkLightShaftPass::ShadowMapReuseEvent,
+         vtkLightShaftPass::ShadowMapRenderedEvent,
+         vtkLightShaftPass::SceneDepthReadyEvent,
+         vtkLightShaftPass::InScatterPieceEvent })
+  {
+    impl.Shafts->AddObserver(event, exchange);
+  }
 
   vtkNew<vtkCallbackCommand> restoreFXAA;
   restoreFXAA->SetClientData(this);
@@ -207,6 +218,12 @@ void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
     this->Impl->GiveMedium(true);
     this->Impl->FitAsked = true;
   }
+  // The processes divide the in-scatter's rows (SLICES, RAY_MARCH, ANALYTIC): each computes
+  // its piece on process 0's composited depth, gathered there (Exchange).
+  vtkMultiProcessController* controller = DistributedController();
+  shafts->SetImagePiece(controller && this->DivideShaftWork ? controller->GetLocalProcessId() : 0,
+    controller && this->DivideShaftWork ? controller->GetNumberOfProcesses() : 1);
+  this->Impl->Exchange.BeginFrame();
   if (this->DistributedShadowMap && DistributedController() && this->GeometryBounds.IsValid())
   {
     // GeometryBounds holds the union over the processes (vtkPVRenderView reduces it).
@@ -221,29 +238,46 @@ void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
 }
 
 //------------------------------------------------------------------------------
-void vtkPVLightShaftsView::CombineShadowMaps()
+void vtkPVLightShaftsView::Exchange(unsigned long event, void* data)
 {
   vtkMultiProcessController* controller = DistributedController();
-  vtkTextureObject* map = this->Impl->Shafts->GetShadowMapTexture();
-  if (!this->DistributedShadowMap || !controller || !map)
+  vtkPVLightShaftsExchange& exchange = this->Impl->Exchange;
+  vtkLightShaftPass* shafts = this->Impl->Shafts;
+  if (event == vtkLightShaftPass::ShadowMapReuseEvent)
   {
-    return;
+    // Kept only where every process's map is unchanged (then the combined map still holds);
+    // alone, or not combining, a map is as reusable as the pass finds it.
+    exchange.AgreeOnReuse(
+      static_cast<int*>(data), this->DistributedShadowMap ? controller : nullptr);
   }
-  // Every process renders a map with the same light camera (SetShadowCasterBounds), so the
-  // minimum depth per texel is the nearest occluder of any process.
-  const int width = static_cast<int>(map->GetWidth());
-  const int height = static_cast<int>(map->GetHeight());
-  std::vector<float> local(static_cast<size_t>(width) * height);
-  std::vector<float> combined(local.size());
-  map->Bind();
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, local.data());
-  controller->AllReduce(
-    local.data(), combined.data(), static_cast<vtkIdType>(local.size()), vtkCommunicator::MIN_OP);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexSubImage2D(
-    GL_TEXTURE_2D, 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, combined.data());
-  map->Deactivate();
+  else if (event == vtkLightShaftPass::ShadowMapRenderedEvent && this->DistributedShadowMap)
+  {
+    exchange.CombineShadowMaps(shafts, controller);
+  }
+  else if (event == vtkLightShaftPass::SceneDepthReadyEvent)
+  {
+    exchange.ShareSceneDepth(shafts, controller);
+  }
+  else if (event == vtkLightShaftPass::InScatterPieceEvent)
+  {
+    exchange.GatherInScatter(
+      shafts, controller, vtkOpenGLRenderWindow::SafeDownCast(this->GetRenderWindow()));
+  }
+}
+
+double vtkPVLightShaftsView::GetLastBytesExchanged()
+{
+  return this->Impl->Exchange.GetBytes();
+}
+
+int vtkPVLightShaftsView::GetLastImagePieceRows()
+{
+  return this->Impl->Shafts->GetLastFrame()->GetImagePieceRows();
+}
+
+double vtkPVLightShaftsView::GetLastInScatterFragments()
+{
+  return static_cast<double>(this->Impl->Shafts->GetLastFrame()->GetInScatterFragments());
 }
 
 //------------------------------------------------------------------------------

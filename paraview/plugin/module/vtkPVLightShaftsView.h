@@ -309,17 +309,45 @@ public:
   vtkGetMacro(DistributedShadowMap, bool);
   ///@}
 
+  ///@{
+  /**
+   * Under MPI, divide the shafts' work: each process computes the in-scatter of its piece of
+   * the picture's rows (SLICES, RAY_MARCH and ANALYTIC; the other methods compute all of it on
+   * every process) on the composited depth, and process 0 gathers the pieces
+   * (vtkLightShaftPass::SetImagePiece; docs/paraview-mpi.md). Off: every process computes the
+   * whole in-scatter. No effect in a single process. Default is on.
+   */
+  vtkSetMacro(DivideShaftWork, bool);
+  vtkGetMacro(DivideShaftWork, bool);
+  ///@}
+
+  ///@{
+  /**
+   * This process's share of the last render under MPI, for scripts (information properties of
+   * the same names): the bytes it sent and received in the exchanges (shadow maps, depth,
+   * in-scatter pieces; 0 in a single process), the in-scatter's rows it computed and the
+   * fragments it shaded there (vtkLightShaftFrameReport::GetImagePieceRows,
+   * GetInScatterFragments: 0 and -1 when the work was not divided).
+   */
+  double GetLastBytesExchanged();
+  int GetLastImagePieceRows();
+  double GetLastInScatterFragments();
+  ///@}
+
 protected:
   vtkPVLightShaftsView();
   ~vtkPVLightShaftsView() override;
 
   // Hands the global geometry bounds to the pass before each local render (distributed).
   void AboutToRenderOnLocalProcess(bool interactive) override;
-  // ShadowMapRenderedEvent: the minimum of the processes' depth maps (distributed).
-  void CombineShadowMaps();
+  // The pass's distributed-rendering events: ShadowMapReuseEvent (whether every process's map
+  // is unchanged), ShadowMapRenderedEvent (the processes' maps combined), SceneDepthReadyEvent
+  // (process 0's depth given to all), InScatterPieceEvent (the pieces gathered on process 0).
+  void Exchange(unsigned long event, void* data);
   void UpdateMediumVolume();
 
   bool DistributedShadowMap = true;
+  bool DivideShaftWork = true;
 
   bool LightShafts = true;
   int ShaftQuality = CUSTOM;

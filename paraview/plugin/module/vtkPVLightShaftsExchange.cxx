@@ -1,0 +1,174 @@
+#include "vtkPVLightShaftsExchange.h"
+
+#include "vtkLightShaftGeometry.h"
+
+#include "vtkCommunicator.h"
+#include "vtkLightShaftOpenGL.h"
+#include "vtkLightShaftPass.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkTextureObject.h"
+
+#include <vector>
+
+namespace
+{
+// The rows of an image piece, counted.
+int RowCount(const std::vector<vtkLightShaftGeometry::RowBlock>& rows)
+{
+  int count = 0;
+  for (const vtkLightShaftGeometry::RowBlock& block : rows)
+  {
+    count += block.End - block.First;
+  }
+  return count;
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsExchange::AgreeOnReuse(int* reuse, vtkMultiProcessController* controller)
+{
+  if (!reuse || !controller)
+  {
+    return;
+  }
+  int mine = *reuse;
+  controller->AllReduce(&mine, reuse, 1, vtkCommunicator::MIN_OP);
+  this->Bytes += 2.0 * sizeof(int);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsExchange::CombineShadowMaps(vtkLightShaftPass* pass,
+  vtkMultiProcessController* controller)
+{
+  vtkTextureObject* map = pass->GetShadowMapTexture();
+  if (!controller || !map)
+  {
+    return;
+  }
+  // Every process renders a map with the same light camera (SetShadowCasterBounds), so the
+  // minimum depth per texel is the nearest occluder of any process.
+  const int width = static_cast<int>(map->GetWidth());
+  const int height = static_cast<int>(map->GetHeight());
+  std::vector<float> local(static_cast<size_t>(width) * height);
+  std::vector<float> combined(local.size());
+  map->Bind();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, local.data());
+  controller->AllReduce(
+    local.data(), combined.data(), static_cast<vtkIdType>(local.size()), vtkCommunicator::MIN_OP);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(
+    GL_TEXTURE_2D, 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, combined.data());
+  map->Deactivate();
+  this->Bytes += 2.0 * sizeof(float) * local.size(); // (an all-reduce: sent and received)
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsExchange::ShareSceneDepth(vtkLightShaftPass* pass,
+  vtkMultiProcessController* controller)
+{
+  vtkTextureObject* depth = pass->GetSceneDepthTexture();
+  if (!controller || !depth)
+  {
+    return;
+  }
+  const int width = static_cast<int>(depth->GetWidth());
+  const int height = static_cast<int>(depth->GetHeight());
+  std::vector<float> values(static_cast<size_t>(width) * height);
+  const bool root = controller->GetLocalProcessId() == 0;
+  depth->Bind();
+  if (root)
+  {
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, values.data());
+  }
+  controller->Broadcast(values.data(), static_cast<vtkIdType>(values.size()), 0);
+  if (!root)
+  {
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(
+      GL_TEXTURE_2D, 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, values.data());
+  }
+  depth->Deactivate();
+  this->Bytes +=
+    sizeof(float) * values.size() * (root ? controller->GetNumberOfProcesses() - 1 : 1);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsExchange::GatherInScatter(vtkLightShaftPass* pass,
+  vtkMultiProcessController* controller,
+  vtkOpenGLRenderWindow* window)
+{
+  vtkTextureObject* inScatter = pass->GetInScatterPieceTexture();
+  if (!controller || !inScatter || !window)
+  {
+    return;
+  }
+  const int width = static_cast<int>(inScatter->GetWidth());
+  const int height = static_cast<int>(inScatter->GetHeight());
+  const int pieces = controller->GetNumberOfProcesses();
+  const int rank = controller->GetLocalProcessId();
+  const vtkIdType rowValues = 4 * static_cast<vtkIdType>(width);
+  // Each process's rows, by the pass's rule, and where they go in process 0's buffer.
+  std::vector<std::vector<vtkLightShaftGeometry::RowBlock>> rows(pieces);
+  std::vector<vtkIdType> lengths(pieces);
+  std::vector<vtkIdType> offsets(pieces);
+  vtkIdType total = 0;
+  for (int p = 0; p < pieces; ++p)
+  {
+    rows[p] = vtkLightShaftGeometry::ImagePieceRows(p, pieces, height);
+    lengths[p] = RowCount(rows[p]) * rowValues;
+    offsets[p] = total;
+    total += lengths[p];
+  }
+
+  // This process's rows, read through a framebuffer (a block at a time).
+  vtkOpenGLState* ostate = window->GetState();
+  std::vector<float> mine(static_cast<size_t>(lengths[rank]));
+  {
+    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+    ostate->PushFramebufferBindings();
+    vtkNew<vtkOpenGLFramebufferObject> framebuffer;
+    framebuffer->SetContext(window);
+    framebuffer->Bind();
+    framebuffer->AddColorAttachment(0, inScatter);
+    framebuffer->ActivateReadBuffer(0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    float* out = mine.data();
+    for (const vtkLightShaftGeometry::RowBlock& block : rows[rank])
+    {
+      const int count = block.End - block.First;
+      glReadPixels(0, block.First, width, count, GL_RGBA, GL_FLOAT, out);
+      out += count * rowValues;
+    }
+    framebuffer->RemoveColorAttachment(0);
+    ostate->PopFramebufferBindings();
+    framebuffer->ReleaseGraphicsResources(window);
+  }
+  std::vector<float> gathered(rank == 0 ? static_cast<size_t>(total) : 0);
+  controller->GatherV(
+    mine.data(), gathered.data(), lengths[rank], lengths.data(), offsets.data(), 0);
+  this->Bytes += sizeof(float) * (rank == 0 ? total - lengths[0] : lengths[rank]);
+  if (rank != 0)
+  {
+    return;
+  }
+  // The other processes' rows into process 0's in-scatter.
+  inScatter->Bind();
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  for (int p = 1; p < pieces; ++p)
+  {
+    const float* in = gathered.data() + offsets[p];
+    for (const vtkLightShaftGeometry::RowBlock& block : rows[p])
+    {
+      const int count = block.End - block.First;
+      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, block.First, width, count, GL_RGBA, GL_FLOAT, in);
+      in += count * rowValues;
+    }
+  }
+  inScatter->Deactivate();
+}

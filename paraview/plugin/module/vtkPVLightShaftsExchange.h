@@ -1,0 +1,51 @@
+/**
+ * @file   vtkPVLightShaftsExchange.h
+ * @brief  What the processes of a distributed light-shafts view exchange each frame (private to
+ *         the ParaView plugin's module).
+ */
+
+#ifndef vtkPVLightShaftsExchange_h
+#define vtkPVLightShaftsExchange_h
+
+class vtkLightShaftPass;
+class vtkMultiProcessController;
+class vtkOpenGLRenderWindow;
+
+/**
+ * @class   vtkPVLightShaftsExchange
+ * @brief   The view's side of vtkLightShaftPass's distributed-rendering events, over the
+ *          processes of a vtkMultiProcessController, with the bytes each frame moved.
+ *
+ * Every process renders the same frame in lock step, so each exchange is one collective call
+ * that every process makes:
+ * - AgreeOnReuse (ShadowMapReuseEvent): a map is kept only where every process's is unchanged;
+ * - CombineShadowMaps (ShadowMapRenderedEvent): the minimum of the processes' depth maps, so
+ *   that every process's map holds every process's occluders;
+ * - ShareSceneDepth (SceneDepthReadyEvent): process 0, which holds IceT's composited image, gives
+ *   its depth to the others, so that they compute their rows of the in-scatter on the
+ *   composited scene;
+ * - GatherInScatter (InScatterPieceEvent): each process's rows (vtkLightShaftGeometry's
+ *   ImagePieceRows) gathered into process 0's in-scatter, which it filters and composites.
+ */
+class vtkPVLightShaftsExchange
+{
+public:
+  /// ShadowMapReuseEvent: `reuse` (1: this process's map is unchanged) becomes 1 only where
+  /// every process's is (no controller: left as it is).
+  void AgreeOnReuse(int* reuse, vtkMultiProcessController* controller);
+  void CombineShadowMaps(vtkLightShaftPass* pass, vtkMultiProcessController* controller);
+  void ShareSceneDepth(vtkLightShaftPass* pass, vtkMultiProcessController* controller);
+  void GatherInScatter(vtkLightShaftPass* pass,
+    vtkMultiProcessController* controller,
+    vtkOpenGLRenderWindow* window);
+
+  /// Start counting a frame's bytes.
+  void BeginFrame() { this->Bytes = 0.0; }
+  /// The bytes this process sent and received in the frame's exchanges so far.
+  double GetBytes() const { return this->Bytes; }
+
+private:
+  double Bytes = 0.0;
+};
+
+#endif
