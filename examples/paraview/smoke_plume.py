@@ -30,7 +30,9 @@ parser.add_argument("--size", type=int, nargs=2, default=[800, 600], metavar=("W
 parser.add_argument("--absorb-only", action="store_true",
                     help="scattering 0: the plume only dims what lies behind it")
 parser.add_argument("--points", type=int, default=37,
-                    help="the plume's samples across (37; 256 gives a 256 x 333 x 256 field)")
+                    help="the plume's samples across (37; 256 gives a 257 x 335 x 257 field)")
+parser.add_argument("--field-resolution", type=int, default=2048,
+                    help="the most samples per axis the shafts read (MediumFieldResolution)")
 args = parser.parse_args()
 
 LoadPlugin(next(p for p in candidates if p and os.path.exists(p)), remote=False, ns=globals())
@@ -69,6 +71,7 @@ light.ConeAngle = 24.0
 view.MediumDensity = plume
 view.MediumDensityArray = "smoke"
 view.MediumDensityScale = 5.0
+view.MediumFieldResolution = args.field_resolution  # (more are resampled: a bounded grid)
 view.MediumBackgroundDensity = 0.08                 # the haze around the plume
 scattering = 0.0 if args.absorb_only else 1.0
 view.ScatteringCoefficient = [scattering * 0.3 / S, scattering * 0.28 / S, scattering * 0.26 / S]

@@ -20,6 +20,62 @@ bool Finite3(const double v[3])
 }
 }
 
+namespace
+{
+// The trilinear neighbours of point index p (relative to the image's first point) in an image of
+// `points` points and `samples` samples per axis (cell centres: half a cell further on): the
+// lower sample and the fraction towards the next, per axis; false outside the bounds.
+bool Neighbours(const double p[3],
+  const int points[3],
+  const int samples[3],
+  bool cellCentred,
+  int base[3],
+  double fraction[3])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    if (!(p[k] >= 0.0 && p[k] <= points[k] - 1))
+    {
+      return false;
+    }
+    const double c =
+      std::min(std::max(cellCentred ? p[k] - 0.5 : p[k], 0.0), static_cast<double>(samples[k] - 1));
+    base[k] = std::min(static_cast<int>(c), std::max(samples[k] - 2, 0));
+    fraction[k] = c - base[k];
+  }
+  return true;
+}
+
+// The weighted sum of the eight neighbours (a single sample along an axis: no second corner);
+// value(i, j, k) is the sample at those sample indices.
+template<typename Value>
+double Trilinear(const int base[3], const double fraction[3], const int samples[3], Value value)
+{
+  double sum = 0.0;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    double weight = 1.0;
+    int at[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const int step = (corner >> k) & 1;
+      if (step && samples[k] == 1)
+      {
+        weight = 0.0;
+        break;
+      }
+      weight *= step ? fraction[k] : 1.0 - fraction[k];
+      at[k] = base[k] + step;
+    }
+    if (weight != 0.0)
+    {
+      sum += weight * value(at[0], at[1], at[2]);
+    }
+  }
+  return sum;
+}
+}
+
 //------------------------------------------------------------------------------
 vtkDataArray* vtkLightShaftDensityField::FindArray(vtkImageData* image,
   const char* name,
@@ -182,43 +238,16 @@ double vtkLightShaftDensityField::DensityAtIndex(const double p[3]) const
   }
   int base[3];
   double fraction[3];
-  for (int k = 0; k < 3; ++k)
+  if (!Neighbours(p, this->Points, this->Samples, this->CellCentred, base, fraction))
   {
-    if (!(p[k] >= 0.0 && p[k] <= this->Points[k] - 1))
-    {
-      return 0.0; // outside the bounds (or not a number)
-    }
-    // Sample coordinate: points sit at the samples; cell centres half a cell further on.
-    const double c = std::min(std::max(this->CellCentred ? p[k] - 0.5 : p[k], 0.0),
-      static_cast<double>(this->Samples[k] - 1));
-    base[k] = std::min(static_cast<int>(c), std::max(this->Samples[k] - 2, 0));
-    fraction[k] = c - base[k];
+    return 0.0; // outside the bounds (or not a number)
   }
   const std::size_t nx = this->Samples[0];
   const std::size_t nxy = nx * this->Samples[1];
-  double sum = 0.0;
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    double weight = 1.0;
-    std::size_t index = 0;
-    const std::size_t stride[3] = { 1, nx, nxy };
-    for (int k = 0; k < 3; ++k)
-    {
-      const int step = (corner >> k) & 1;
-      if (step && this->Samples[k] == 1)
-      {
-        weight = 0.0; // (a single sample along an axis: no second corner)
-        break;
-      }
-      weight *= step ? fraction[k] : 1.0 - fraction[k];
-      index += stride[k] * static_cast<std::size_t>(base[k] + step);
-    }
-    if (weight != 0.0)
-    {
-      sum += weight * this->Values[index];
-    }
-  }
-  return sum;
+  return Trilinear(base,
+    fraction,
+    this->Samples,
+    [this, nx, nxy](int i, int j, int k) { return this->Values[i + nx * j + nxy * k]; });
 }
 
 //------------------------------------------------------------------------------
@@ -365,11 +394,10 @@ vtkLightShaftDensityField vtkLightShaftDensityField::Resampled(int maximum) cons
 {
   vtkLightShaftDensityField out;
   double step[3]; // this field's point index per point of the resampled one
+  ResampledGrid(this->Points, this->Samples, maximum, out.Points, step);
   for (int k = 0; k < 3; ++k)
   {
-    const int points = this->Samples[k] > maximum ? maximum : this->Points[k];
-    out.Samples[k] = out.Points[k] = std::max(points, 2);
-    step[k] = (this->Points[k] - 1.0) / (out.Points[k] - 1.0);
+    out.Samples[k] = out.Points[k];
     out.Origin[k] = this->Origin[k];
   }
   for (int r = 0; r < 3; ++r)
@@ -398,6 +426,65 @@ vtkLightShaftDensityField vtkLightShaftDensityField::Resampled(int maximum) cons
     }
   }
   return out;
+}
+
+void vtkLightShaftDensityField::ResampledGrid(const int points[3],
+  const int samples[3],
+  int maximum,
+  int out[3],
+  double step[3])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    out[k] = std::max(samples[k] > maximum ? maximum : points[k], 2);
+    step[k] = (points[k] - 1.0) / (out[k] - 1.0);
+  }
+}
+
+void vtkLightShaftDensityField::ResamplePiece(int maximum,
+  const int offset[3],
+  const int wholePoints[3],
+  const int planes[2],
+  float* slab) const
+{
+  int wholeSamples[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    wholeSamples[k] = this->CellCentred ? std::max(wholePoints[k] - 1, 1) : wholePoints[k];
+  }
+  int grid[3];
+  double step[3];
+  ResampledGrid(wholePoints, wholeSamples, maximum, grid, step);
+  const std::size_t nx = this->Samples[0];
+  const std::size_t nxy = nx * this->Samples[1];
+  auto value = [this, offset, nx, nxy](int i, int j, int k)
+  { return this->Values[(i - offset[0]) + nx * (j - offset[1]) + nxy * (k - offset[2])]; };
+  std::size_t at = 0;
+  for (int z = planes[0]; z < planes[1]; ++z)
+  {
+    for (int y = 0; y < grid[1]; ++y)
+    {
+      for (int x = 0; x < grid[0]; ++x, ++at)
+      {
+        // As Resampled: the point's index in the whole image, its neighbours there.
+        const double p[3] = { std::min(x * step[0], wholePoints[0] - 1.0),
+          std::min(y * step[1], wholePoints[1] - 1.0),
+          std::min(z * step[2], wholePoints[2] - 1.0) };
+        int base[3];
+        double fraction[3];
+        bool held = Neighbours(p, wholePoints, wholeSamples, this->CellCentred, base, fraction);
+        for (int k = 0; k < 3 && held; ++k)
+        {
+          const int last = base[k] + (wholeSamples[k] > 1 ? 1 : 0);
+          held = base[k] >= offset[k] && last < offset[k] + this->Samples[k];
+        }
+        if (held)
+        {
+          slab[at] = static_cast<float>(Trilinear(base, fraction, wholeSamples, value));
+        }
+      }
+    }
+  }
 }
 
 void vtkLightShaftDensityField::Corners(double corners[8][3]) const

@@ -108,6 +108,30 @@ public:
   vtkLightShaftDensityField Resampled(int maximum) const;
 
   /**
+   * The grid Resampled(maximum) gives an image of `points` points and `samples` samples per
+   * axis: `out` points per axis, and `step`, the image's point index per point of the grid.
+   */
+  static void ResampledGrid(const int points[3],
+    const int samples[3],
+    int maximum,
+    int out[3],
+    double step[3]);
+
+  /**
+   * Resampled(maximum) of a larger image this field is a piece of (distributed: each process
+   * holds a piece). This field holds that image's samples from `offset` on (its extent's start
+   * less the whole's); the whole has `wholePoints` points per axis. Writes the grid's samples
+   * of planes [planes[0], planes[1]) (z) whose trilinear neighbours this piece holds into
+   * `slab` (those planes of the grid, x fastest), computed exactly as Resampled computes them
+   * from the whole image; leaves the others as they are.
+   */
+  void ResamplePiece(int maximum,
+    const int offset[3],
+    const int wholePoints[3],
+    const int planes[2],
+    float* slab) const;
+
+  /**
    * World coordinates to the coordinates of a 3D texture of the samples (texel centres at the
    * samples), and the field's bounds there (the box of its points; outside it rho is 0).
    */

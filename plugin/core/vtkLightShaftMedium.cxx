@@ -307,6 +307,7 @@ void vtkLightShaftMedium::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DensityScale: " << this->DensityScale << "\n";
   os << indent << "BackgroundDensity: " << this->BackgroundDensity << "\n";
   os << indent << "FieldShadowResolution: " << this->FieldShadowResolution << "\n";
+  os << indent << "FieldResolution: " << this->FieldResolution << "\n";
 }
 
 //------------------------------------------------------------------------------

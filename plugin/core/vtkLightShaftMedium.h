@@ -199,6 +199,18 @@ public:
   vtkGetMacro(FieldShadowResolution, int);
   ///@}
 
+  ///@{
+  /**
+   * The most samples per axis the shafts read from a field: a field with more along an axis is
+   * resampled (trilinear) to this many points spanning its bounds, so that the pass's grid
+   * stays bounded whatever the data's size (also by the GL's largest 3D texture;
+   * vtkLightShaftReference integrates the field as it is). Under ParaView's MPI each process
+   * resamples its piece (docs/paraview-mpi.md). In [16, 16384]. Default is 2048.
+   */
+  vtkSetClampMacro(FieldResolution, int, 16, 16384);
+  vtkGetMacro(FieldResolution, int);
+  ///@}
+
   /**
    * The density image of this render: SetDensityField's image, the pipeline's output
    * brought up to date (an output that is not an image: one error from `caller`, and the last
@@ -223,6 +235,7 @@ protected:
   double DensityScale = 1.0;
   double BackgroundDensity = 0.0;
   int FieldShadowResolution = 64;
+  int FieldResolution = 2048;
 
 private:
   vtkLightShaftMedium(const vtkLightShaftMedium&) = delete;

@@ -8,6 +8,8 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkTextureObject.h"
 
+#include <algorithm>
+
 vtkLightShaftMediumTexture::vtkLightShaftMediumTexture() = default;
 vtkLightShaftMediumTexture::~vtkLightShaftMediumTexture() = default;
 
@@ -23,7 +25,9 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
     this->Refused = nullptr;
     return nullptr;
   }
-  const bool same = image == this->Image && arrayName == this->ArrayName;
+  const int resolution = medium->GetFieldResolution();
+  const bool same =
+    image == this->Image && arrayName == this->ArrayName && resolution == this->Resolution;
   if (same && this->Texture && image->GetMTime() <= this->UploadTime)
   {
     return this->Texture;
@@ -42,7 +46,9 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
   GLint maximum = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maximum);
   const int* samples = field.GetSamples();
-  if (why.empty() && (samples[0] > maximum || samples[1] > maximum || samples[2] > maximum))
+  auto exceeds = [&samples](int bound)
+  { return samples[0] > bound || samples[1] > bound || samples[2] > bound; };
+  if (why.empty() && exceeds(maximum) && resolution > maximum)
   {
     if (image != this->Resampled) // (said once per image, not at each of its updates)
     {
@@ -55,7 +61,12 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
                                        << "it as it is).");
       this->Resampled = image;
     }
-    field = field.Resampled(maximum);
+  }
+  // The pass's grid: at most FieldResolution samples per axis (and what the GL holds).
+  const int bound = std::min<int>(maximum, resolution);
+  if (why.empty() && exceeds(bound))
+  {
+    field = field.Resampled(bound);
     samples = field.GetSamples();
   }
   if (!why.empty())
@@ -75,6 +86,7 @@ vtkTextureObject* vtkLightShaftMediumTexture::Ready(vtkOpenGLRenderWindow* windo
   this->Field = std::move(field);
   this->Image = image;
   this->ArrayName = arrayName;
+  this->Resolution = resolution;
   this->UploadTime = image->GetMTime();
   ++this->Version;
   return this->Texture;

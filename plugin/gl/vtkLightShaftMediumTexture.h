@@ -72,6 +72,7 @@ private:
   vtkSmartPointer<vtkTextureObject> Texture;
   vtkImageData* Image = nullptr; ///< (only compared: which image the texture came from)
   std::string ArrayName;
+  int Resolution = 0; ///< the FieldResolution the texture was made at
   vtkMTimeType UploadTime = 0;
   vtkMTimeType Version = 0;
   vtkImageData* Resampled = nullptr; ///< the image last said to be resampled (only compared)

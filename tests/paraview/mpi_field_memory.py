@@ -1,8 +1,9 @@
 """pvbatch --symmetric script (serial or under mpirun): examples/paraview/smoke_plume.py at
 --points samples across the plume (37: the example's), then this process's peak resident memory
-(/proc/self/status VmHWM, bytes) into OUTPUT.rank<r>.json; the picture is OUTPUT.png. The
+when the picture is saved (/proc/self/status VmHWM, bytes) into OUTPUT.rank<r>.json; the picture is OUTPUT.png. The
 field's memory is the peak at a large --points less the peak at the example's. Usage:
-pvbatch --symmetric mpi_field_memory.py OUTPUT --points N"""
+pvbatch --symmetric mpi_field_memory.py OUTPUT --points N [--field-resolution R] [the example's
+other options]"""
 
 import argparse
 import json
@@ -20,12 +21,27 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("output")
     parser.add_argument("--points", type=int, default=37)
-    args = parser.parse_args()
+    parser.add_argument("--field-resolution", type=int, default=2048)
+    args, example = parser.parse_known_args()  # (the others: the example's, as --absorb-only)
     sys.argv = [sys.argv[0], "-o", args.output + ".png", "--size", "400", "300",
-                "--points", str(args.points)]
+                "--points", str(args.points), "--field-resolution", str(args.field_resolution)]
+    sys.argv += example
+    # The peak when the picture is saved (before the example's summary asks ParaView for the
+    # plume's data information, which updates it again without the gather's ghost level).
+    from paraview import simple
+    save = simple.SaveScreenshot
+    peaks = []
+
+    def saved(*arguments, **keywords):
+        result = save(*arguments, **keywords)
+        with open("/proc/self/status") as lines:
+            peaks.append(next(int(line.split()[1]) * 1024 for line in lines
+                              if line.startswith("VmHWM:")))
+        return result
+
+    simple.SaveScreenshot = saved
     runpy.run_path(os.path.join(HERE, "..", "..", "examples", "paraview", "smoke_plume.py"))
-    with open("/proc/self/status") as lines:
-        peak = next(int(line.split()[1]) * 1024 for line in lines if line.startswith("VmHWM:"))
+    peak = peaks[0]
     module = servermanager.vtkProcessModule.GetProcessModule()
     rank = module.GetPartitionId()
     with open(f"{args.output}.rank{rank}.json", "w") as out:

@@ -599,6 +599,7 @@ def test_an_image_over_the_gl_3d_texture_size_is_resampled_with_one_warning(mess
     from vtkmodules.vtkRenderingOpenGL2 import vtkTextureObject
     renderer, window, info, shafts = marching()
     limit = vtkTextureObject.GetMaximumTextureSize3D(window)
+    shafts.GetMedium().SetFieldResolution(16384)  # (the pass's own bound above the GL's)
     image = field_image(linear, samples=3)
     image.SetDimensions(2 * limit + 1, 3, 3)
     image.SetSpacing(2.0 * HALF / (2 * limit), 2.0 * HALF, 2.0 * HALF)
@@ -617,6 +618,27 @@ def test_an_image_over_the_gl_3d_texture_size_is_resampled_with_one_warning(mess
     expected, _, _ = cpp_reference(renderer, shafts, VisibilityMode=1)
     error, _ = ref.relative_rms_error(picture, expected)
     assert expected.max() > 0.0 and error < 0.002
+
+
+def test_field_resolution_bounds_the_pass_s_grid_silently(messages):
+    # A field with more samples along an axis than FieldResolution is resampled to that many,
+    # without a message (the bound is the user's): a field that varies along x at 65 samples
+    # gives another picture at FieldResolution 16, the same one at 65 and above.
+    renderer, window, info, shafts = marching()
+    image = field_image(lambda x, y, z: 1.0 + np.sin(3.0 * x), samples=65)
+    log = messages(shafts)
+    shafts.GetMedium().SetDensityField(image)
+    pictures = {}
+    assert shafts.GetMedium().GetFieldResolution() == 2048
+    for resolution in (2048, 65, 16):
+        shafts.GetMedium().SetFieldResolution(resolution)
+        assert shafts.GetMedium().GetFieldResolution() == resolution
+        pictures[resolution] = rendered(window, shafts)
+    assert np.array_equal(pictures[2048], pictures[65])
+    assert ref.relative_rms_error(pictures[16], pictures[2048])[0] > 1e-3
+    assert not log.warnings and not log.errors
+    shafts.GetMedium().SetFieldResolution(1)
+    assert shafts.GetMedium().GetFieldResolution() == 16
 
 
 def test_a_still_view_refines_the_light_leg_table(messages):

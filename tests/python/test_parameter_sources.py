@@ -24,7 +24,8 @@ PARAVIEW_NAMES = {"ShaftExposure": "Exposure", "ShaftMethod": "Method", "ShaftJi
                   "ShaftBlurRadius": "BlurRadius", "ShaftDownsampleFactor": "DownsampleFactor",
                   "ShaftTime": "Time", "MediumDensityScale": "DensityScale",
                   "MediumBackgroundDensity": "BackgroundDensity",
-                  "MediumShadowResolution": "FieldShadowResolution"}
+                  "MediumShadowResolution": "FieldShadowResolution",
+                  "MediumFieldResolution": "FieldResolution"}
 # The public headers whose documented groups hold parameters, and the class of each.
 HEADERS = {"pass/vtkLightShaftPass.h": vtkLightShaftPass,
            "core/vtkLightShaftMedium.h": vtkLightShaftMedium}

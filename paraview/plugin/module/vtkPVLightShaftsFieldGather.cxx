@@ -9,6 +9,7 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMatrix3x3.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -17,6 +18,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -114,7 +116,16 @@ int vtkPVLightShaftsFieldGather::RequestUpdateExtent(vtkInformation*,
   const int pieces = controller ? controller->GetNumberOfProcesses() : 1;
   in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), piece);
   in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), pieces);
-  in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  // Resampled to a coarser grid, a grid point between two pieces needs the samples on both
+  // sides: one ghost level (the pieces then share a layer, equal on both).
+  int whole[6];
+  in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+  bool resampled = false;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    resampled = resampled || whole[2 * axis + 1] - whole[2 * axis] + 1 > this->Resolution;
+  }
+  in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), resampled ? 1 : 0);
   return 1;
 }
 
@@ -158,6 +169,10 @@ int vtkPVLightShaftsFieldGather::RequestData(vtkInformation*,
   cells = agreed[1] == 1;
   vtkIdType counts[3];
   Counts(whole, cells, counts);
+  if (counts[0] > this->Resolution || counts[1] > this->Resolution || counts[2] > this->Resolution)
+  {
+    return this->GatherResampled(input, local ? input : nullptr, output, whole, cells);
+  }
   const vtkIdType samples = counts[0] * counts[1] * counts[2];
   // rho (the first component) as float32, as the pass keeps its samples: every sample from a
   // process that computed it (the lowest float elsewhere; the largest wins). Reduced a slab of
@@ -165,28 +180,15 @@ int vtkPVLightShaftsFieldGather::RequestData(vtkInformation*,
   // one slab of at most SlabSamples besides (not a second whole grid).
   vtkNew<vtkFloatArray> gathered;
   gathered->SetNumberOfTuples(samples);
-  const vtkIdType plane = counts[0] * counts[1];
-  const vtkIdType slabPlanes = std::max<vtkIdType>(SlabSamples / std::max<vtkIdType>(plane, 1), 1);
-  std::vector<float> slab;
-  for (vtkIdType first = 0; first < counts[2]; first += slabPlanes)
-  {
-    const vtkIdType planes[2] = { first, std::min(first + slabPlanes, counts[2]) };
-    const vtkIdType length = plane * (planes[1] - planes[0]);
-    slab.assign(static_cast<size_t>(length), -std::numeric_limits<float>::max());
-    if (local)
+  this->ReduceSlabs(counts,
+    gathered,
+    [&](float* slab, const vtkIdType planes[2])
     {
-      Place(local, input->GetExtent(), slab.data(), whole, cells, planes);
-    }
-    float* into = gathered->GetPointer(plane * planes[0]);
-    if (controller)
-    {
-      controller->AllReduce(slab.data(), into, length, vtkCommunicator::MAX_OP);
-    }
-    else
-    {
-      std::copy(slab.begin(), slab.end(), into);
-    }
-  }
+      if (local)
+      {
+        Place(local, input->GetExtent(), slab, whole, cells, planes);
+      }
+    });
   gathered->SetName(
     !this->ArrayName.empty() ? this->ArrayName.c_str() : (local ? local->GetName() : "density"));
   vtkDataSetAttributes* attributes = cells
@@ -197,9 +199,112 @@ int vtkPVLightShaftsFieldGather::RequestData(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
+void vtkPVLightShaftsFieldGather::ReduceSlabs(const vtkIdType counts[3],
+  vtkFloatArray* gathered,
+  const std::function<void(float*, const vtkIdType[2])>& fill)
+{
+  vtkMultiProcessController* controller = this->GetController();
+  const vtkIdType plane = counts[0] * counts[1];
+  const vtkIdType slabPlanes = std::max<vtkIdType>(SlabSamples / std::max<vtkIdType>(plane, 1), 1);
+  std::vector<float> slab;
+  for (vtkIdType first = 0; first < counts[2]; first += slabPlanes)
+  {
+    const vtkIdType planes[2] = { first, std::min(first + slabPlanes, counts[2]) };
+    const vtkIdType length = plane * (planes[1] - planes[0]);
+    slab.assign(static_cast<size_t>(length), -std::numeric_limits<float>::max());
+    fill(slab.data(), planes);
+    float* into = gathered->GetPointer(plane * planes[0]);
+    if (controller)
+    {
+      controller->AllReduce(slab.data(), into, length, vtkCommunicator::MAX_OP);
+    }
+    else
+    {
+      std::copy(slab.begin(), slab.end(), into);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// More samples along an axis than Resolution: each process resamples its piece onto the grid
+// vtkLightShaftDensityField::Resampled makes of the whole image (the grid points whose
+// neighbours it holds, computed as from the whole), and the grid is gathered; the output is
+// the grid, as point data over the image's bounds.
+int vtkPVLightShaftsFieldGather::GatherResampled(vtkImageData* input,
+  vtkImageData* piece,
+  vtkImageData* output,
+  const int whole[6],
+  bool cells)
+{
+  int points[3];
+  int samples[3];
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    points[axis] = whole[2 * axis + 1] - whole[2 * axis] + 1;
+    samples[axis] = cells ? std::max(points[axis] - 1, 1) : points[axis];
+  }
+  int grid[3];
+  double step[3];
+  vtkLightShaftDensityField::ResampledGrid(points, samples, this->Resolution, grid, step);
+  // The grid's placement: the whole image's first point, its spacing times the step.
+  double origin[3];
+  double spacing[3];
+  vtkMatrix3x3* direction = input->GetDirectionMatrix();
+  for (int r = 0; r < 3; ++r)
+  {
+    origin[r] = input->GetOrigin()[r];
+    spacing[r] = input->GetSpacing()[r] * step[r];
+    for (int c = 0; c < 3; ++c)
+    {
+      origin[r] += direction->GetElement(r, c) * input->GetSpacing()[c] * whole[2 * c];
+    }
+  }
+  output->SetExtent(0, grid[0] - 1, 0, grid[1] - 1, 0, grid[2] - 1);
+  output->SetOrigin(origin);
+  output->SetSpacing(spacing);
+  vtkLightShaftDensityField field;
+  int offset[3] = { 0, 0, 0 };
+  if (piece && field.Read(piece, this->ArrayName.c_str()).empty())
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      offset[axis] = piece->GetExtent()[2 * axis] - whole[2 * axis];
+    }
+  }
+  const vtkIdType counts[3] = { grid[0], grid[1], grid[2] };
+  vtkNew<vtkFloatArray> gathered;
+  gathered->SetNumberOfTuples(counts[0] * counts[1] * counts[2]);
+  this->ReduceSlabs(counts,
+    gathered,
+    [&](float* slab, const vtkIdType planes[2])
+    {
+      if (!field.Empty())
+      {
+        const int range[2] = { static_cast<int>(planes[0]), static_cast<int>(planes[1]) };
+        field.ResamplePiece(this->Resolution, offset, points, range, slab);
+      }
+    });
+  gathered->SetName(!this->ArrayName.empty() ? this->ArrayName.c_str() : "density");
+  output->GetPointData()->SetScalars(gathered);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsFieldGather::SetResolution(int resolution)
+{
+  resolution = std::max(resolution, 2);
+  if (resolution != this->Resolution)
+  {
+    this->Resolution = resolution;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkPVLightShaftsFieldGather::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ArrayName: " << this->ArrayName << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
+  os << indent << "Resolution: " << this->Resolution << "\n";
 }

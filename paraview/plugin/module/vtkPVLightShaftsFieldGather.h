@@ -21,8 +21,10 @@
 #include "vtkImageAlgorithm.h"      // For the base class
 #include "vtkPVLightShaftsModule.h" // For the export macro
 
-#include <string> // For the array's name
+#include <functional> // For the slabs' filling
+#include <string>     // For the array's name
 
+class vtkFloatArray;
 class vtkMultiProcessController;
 
 class VTKLIGHTSHAFTS_EXPORT vtkPVLightShaftsFieldGather : public vtkImageAlgorithm
@@ -39,6 +41,16 @@ public:
    */
   void SetArrayName(const char* name);
   const char* GetArrayName() const { return this->ArrayName.c_str(); }
+  ///@}
+
+  ///@{
+  /**
+   * The most samples per axis of the output (the medium's FieldResolution): a source with more
+   * along an axis is resampled piece by piece onto the grid the pass would resample the whole
+   * image to, so that no process holds the whole image at its resolution. Default is 2048.
+   */
+  void SetResolution(int resolution);
+  int GetResolution() const { return this->Resolution; }
   ///@}
 
   ///@{
@@ -60,8 +72,20 @@ private:
   vtkPVLightShaftsFieldGather(const vtkPVLightShaftsFieldGather&) = delete;
   void operator=(const vtkPVLightShaftsFieldGather&) = delete;
 
+  // The planes of a grid of `counts` samples a slab at a time: `fill` writes this process's
+  // samples of the planes [planes[0], planes[1]) into the slab, a MAX reduction gathers them.
+  void ReduceSlabs(const vtkIdType counts[3],
+    vtkFloatArray* gathered,
+    const std::function<void(float*, const vtkIdType[2])>& fill);
+  int GatherResampled(vtkImageData* input,
+    vtkImageData* piece,
+    vtkImageData* output,
+    const int whole[6],
+    bool cells);
+
   std::string ArrayName;
   vtkMultiProcessController* Controller = nullptr;
+  int Resolution = 2048;
 };
 
 #endif

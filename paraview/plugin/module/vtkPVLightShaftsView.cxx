@@ -950,6 +950,14 @@ void vtkPVLightShaftsView::SetMediumShadowResolution(int resolution)
   this->Impl->Shafts->GetMedium()->SetFieldShadowResolution(resolution);
 }
 
+void vtkPVLightShaftsView::SetMediumFieldResolution(int resolution)
+{
+  vtkLightShaftMedium* medium = this->Impl->Shafts->GetMedium();
+  medium->SetFieldResolution(resolution);
+  // Under MPI the pieces are resampled to the medium's grid as they are gathered.
+  this->Impl->FieldGather->SetResolution(medium->GetFieldResolution());
+}
+
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsView::UpdateTime()
 {

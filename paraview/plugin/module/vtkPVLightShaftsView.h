@@ -252,18 +252,20 @@ public:
   ///@{
   /**
    * A medium from data, forwarded to the pass's vtkLightShaftMedium (SetDensityFieldConnection,
-   * SetDensityArrayName, SetDensityScale, SetBackgroundDensity, SetFieldShadowResolution: same
-   * ranges and defaults; the property names are those of earlier versions): the
-   * MediumDensity property's pipeline output (a vtkImageData, brought up to date at each
-   * render; none: the homogeneous medium), its array (MediumDensityArray: point or cell data,
-   * the first component; empty: the scalars), scale, background density and the light leg's
-   * table resolution.
+   * SetDensityArrayName, SetDensityScale, SetBackgroundDensity, SetFieldShadowResolution,
+   * SetFieldResolution: same ranges and defaults; the property names are those of earlier
+   * versions): the MediumDensity property's pipeline output (a vtkImageData, brought up to
+   * date at each render; none: the homogeneous medium), its array (MediumDensityArray: point
+   * or cell data, the first component; empty: the scalars), scale, background density, the
+   * light leg's table resolution and the most samples per axis the shafts read (under MPI each
+   * process resamples its piece to that grid).
    */
   void SetMediumDensityConnection(vtkAlgorithmOutput* output);
   void SetMediumDensityArray(const char* name);
   void SetMediumDensityScale(double scale);
   void SetMediumBackgroundDensity(double density);
   void SetMediumShadowResolution(int resolution);
+  void SetMediumFieldResolution(int resolution);
   ///@}
 
   ///@{
