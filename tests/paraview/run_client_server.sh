@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# Client-server: `mpirun -np 2 pvserver` on this machine's loopback with a pvpython client that
+# runs examples/paraview/smoke_plume.py through it (the plume made by the server's pipeline,
+# the view's MediumDensity, rendered on the server), against the same script in a serial
+# builtin session (pvbatch): the same picture (a mean difference of at most 0.2 levels, at most
+# 0.3% of the pixels off by more than 4 levels), and the plume split over the server's two
+# processes. Usage: run_client_server.sh OUTPUT_DIR (PYTHONPATH and the plugin from the
+# environment; LIGHTSHAFTS_PVPYTHON: the pvpython to use, default the one beside
+# python3-paraview's package, else pvpython on PATH).
+set -u
+out="$1"
+here="$(cd "$(dirname "$0")" && pwd)"
+mkdir -p "$out"
+rm -f "$out"/*.png
+pvpython="${LIGHTSHAFTS_PVPYTHON:-}"
+if [ -z "$pvpython" ]; then
+  for candidate in "${PYTHONPATH%%:*}/../../../bin/pvpython" "$(command -v pvpython)"; do
+    if [ -x "$candidate" ]; then
+      pvpython="$candidate"
+      break
+    fi
+  done
+fi
+if [ -z "$pvpython" ]; then
+  echo "FAIL: no pvpython (set LIGHTSHAFTS_PVPYTHON)"
+  exit 1
+fi
+# A free port on the loopback.
+port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+mpirun --allow-run-as-root --oversubscribe -np 2 -x PYTHONPATH \
+  -x LIGHTSHAFTS_PARAVIEW_PLUGIN_LIST -x LIGHTSHAFTS_PARAVIEW_PLUGIN -x DISPLAY \
+  pvserver --server-port="$port" > "$out/server.log" 2>&1 &
+server=$!
+for _ in $(seq 1 150); do
+  grep -q "Accepting connection" "$out/server.log" && break
+  sleep 0.2
+done
+timeout 240 "$pvpython" "$here/client_plume.py" localhost "$port" "$out/client.png" \
+  > "$out/client.log" 2>&1
+kill "$server" 2> /dev/null
+wait "$server" 2> /dev/null
+pvbatch "$here/client_plume.py" builtin "$out/serial.png" > "$out/serial.log" 2>&1
+for run in client serial; do
+  if [ ! -f "$out/$run.png" ]; then
+    cat "$out/$run.log" "$out/server.log"
+    echo "FAIL: no picture from the $run run"
+    exit 1
+  fi
+  if grep -E "ERROR: In |Warning: In |Generic Warning|ERR\||WARN\|" "$out/$run.log"; then
+    echo "FAIL: VTK printed errors or warnings in the $run run"
+    exit 1
+  fi
+done
+# (The server's log ends with the client's disconnection, which pvserver reports as errors.)
+if grep -E "ERROR: In |Warning: In |Generic Warning|WARN\|" "$out/server.log" ||
+  grep "ERR|" "$out/server.log" | grep -v -E "vtkSocketCommunicator|vtkTCPNetworkAccessMana"; then
+  echo "FAIL: the server printed errors or warnings"
+  exit 1
+fi
+exec /usr/bin/python3 - "$out" <<'PY'
+import re
+import sys
+import numpy as np
+from matplotlib.image import imread
+out = sys.argv[1]
+serial = imread(f"{out}/serial.png")[..., :3].astype(float) * 255.0
+client = imread(f"{out}/client.png")[..., :3].astype(float) * 255.0
+diff = np.abs(client - serial)
+mean, off = float(diff.mean()), float((diff.max(axis=-1) > 4.5).mean())
+print(f"pvserver -np 2 with a pvpython client against serial: mean |diff| {mean:.3f} levels, "
+      f"{100 * off:.2f}% of pixels off by > 4 levels, at most {diff.max():.0f}")
+failures = []
+if mean > 0.2 or off > 0.003:
+    failures.append("the client's picture is not the serial one")
+with open(f"{out}/client.log") as log:
+    found = re.search(r"the plume: (\d+) points over the processes \(its whole image: (\d+)\)",
+                      log.read())
+if not found:
+    failures.append("the client did not say how the plume is held")
+else:
+    held, whole = int(found.group(1)), int(found.group(2))
+    print(f"the plume on the server: {held} points over its processes (whole image {whole})")
+    if not whole < held <= 1.2 * whole:
+        failures.append("the plume was not made on the server's two processes")
+for failure in failures:
+    print("FAIL:", failure)
+sys.exit(1 if failures else 0)
+PY
