@@ -41,7 +41,8 @@ enum Event
   RefinementNeededEvent = vtkCommand::UserEvent + 4302,
   SceneDepthReadyEvent = vtkCommand::UserEvent + 4303,
   InScatterPieceEvent = vtkCommand::UserEvent + 4304,
-  ShadowMapReuseEvent = vtkCommand::UserEvent + 4305
+  ShadowMapReuseEvent = vtkCommand::UserEvent + 4305,
+  FrameTimedEvent = vtkCommand::UserEvent + 4306
 };
 
 /// A method's name ("slices", "ray-march", ...; "none" for any other value).

@@ -335,7 +335,8 @@ static_assert(
     Same(vtkLightShaftPass::RefinementNeededEvent, vtkLightShaftEnums::RefinementNeededEvent) &&
     Same(vtkLightShaftPass::SceneDepthReadyEvent, vtkLightShaftEnums::SceneDepthReadyEvent) &&
     Same(vtkLightShaftPass::InScatterPieceEvent, vtkLightShaftEnums::InScatterPieceEvent) &&
-    Same(vtkLightShaftPass::ShadowMapReuseEvent, vtkLightShaftEnums::ShadowMapReuseEvent),
+    Same(vtkLightShaftPass::ShadowMapReuseEvent, vtkLightShaftEnums::ShadowMapReuseEvent) &&
+    Same(vtkLightShaftPass::FrameTimedEvent, vtkLightShaftEnums::FrameTimedEvent),
   "the events' ids");
 
 namespace

@@ -71,8 +71,7 @@ public:
   /// Events the pass invokes.
   enum EventIds
   {
-    /// After the shadow map is rendered and before it is used: GetShadowMapTexture() is valid
-    /// (and may be rewritten, e.g. combined over distributed processes), the context current.
+    /// After the shadow map is rendered, before it is used: GetShadowMapTexture() is valid.
     ShadowMapRenderedEvent = vtkCommand::UserEvent + 4301,
     /// After a frame whose still picture is refining: render again, never inside the callback.
     RefinementNeededEvent = vtkCommand::UserEvent + 4302,
@@ -82,7 +81,10 @@ public:
     InScatterPieceEvent = vtkCommand::UserEvent + 4304,
     /// Before an observed shadow map is reused: callData an int, 1 if unchanged here; the map
     /// is kept only if observers leave it 1 (distributed: every process's map is unchanged).
-    ShadowMapReuseEvent = vtkCommand::UserEvent + 4305
+    ShadowMapReuseEvent = vtkCommand::UserEvent + 4305,
+    /// A budget's frame timed: callData double[2], its shafts' and whole seconds (observers may
+    /// rewrite them: distributed, the slowest process's), which the cost model then learns.
+    FrameTimedEvent = vtkCommand::UserEvent + 4306
   };
 
   void Render(const vtkRenderState* s) override; ///< the scene and its shafts (the renderer)
@@ -116,9 +118,8 @@ public:
 
   ///@{
   /**
-   * The medium the shafts scatter in (vtkLightShaftMedium: coefficients, phase function, noise,
-   * density field), shareable between passes; nullptr gives the pass a new one. The pass's
-   * MTime includes its medium's. Default is a vtkLightShaftMedium of its own.
+   * The medium the shafts scatter in (vtkLightShaftMedium), shareable between passes; nullptr
+   * gives the pass a new one; the pass's MTime includes it. Default is a medium of its own.
    */
   void SetMedium(vtkLightShaftMedium* medium);
   vtkLightShaftMedium* GetMedium();
@@ -130,9 +131,8 @@ public:
 
   ///@{
   /**
-   * Exposure: the scale of the in-scattered radiance added to the picture, in [0, 1e6]
-   * (GetInScatteredRadiance returns it before the scale). AttenuateScene: the scene dimmed by
-   * the medium's transmittance exp(-sigma_t t_surface). Defaults are 1 and on.
+   * Exposure: the scale of the in-scattered radiance added to the picture, in [0, 1e6];
+   * AttenuateScene: the scene dimmed by exp(-sigma_t t_surface). Defaults are 1 and on.
    */
   void SetExposure(double exposure);
   vtkGetMacro(Exposure, double);

@@ -6,6 +6,7 @@
 #include "vtkLightShaftPassInternals.h"
 
 #include "vtkLightShaftCostModel.h"
+#include "vtkLightShaftEnums.h"
 #include "vtkLightShaftEpipolarMethod.h"
 #include "vtkLightShaftErrorModel.h"
 #include "vtkLightShaftFrame.h"
@@ -423,15 +424,19 @@ void vtkLightShaftPass::Internals::ObserveFrameTime(vtkLightShaftFrame& frame,
   double shafts,
   double total)
 {
-  frame.Statistics.FrameTime = total;
+  // Observers may rewrite the times (distributed processes take the slowest one's, so that
+  // every process's cost model learns the same and chooses the same next frame).
+  double seconds[2] = { shafts, total };
+  frame.Owner->InvokeEvent(vtkLightShaftEnums::FrameTimedEvent, seconds);
+  frame.Statistics.FrameTime = seconds[1];
   if (frame.Statistics.TimeBudget > 0.0 && frame.Statistics.ErrorModelSetting >= 0)
   {
     this->Costs.Observe(frame.Statistics.ErrorModelSetting,
       frame.Parameters.DownsampleFactor,
       double(frame.Size[0]) * frame.Size[1],
       frame.Statistics.BudgetLights,
-      shafts,
-      total);
+      seconds[0],
+      seconds[1]);
   }
 }
 

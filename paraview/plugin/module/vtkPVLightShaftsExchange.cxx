@@ -41,6 +41,18 @@ void vtkPVLightShaftsExchange::AgreeOnReuse(int* reuse, vtkMultiProcessControlle
 }
 
 //------------------------------------------------------------------------------
+void vtkPVLightShaftsExchange::AgreeOnTimes(double* seconds, vtkMultiProcessController* controller)
+{
+  if (!seconds || !controller)
+  {
+    return;
+  }
+  const double mine[2] = { seconds[0], seconds[1] };
+  controller->AllReduce(mine, seconds, 2, vtkCommunicator::MAX_OP);
+  this->Bytes += 4.0 * sizeof(double);
+}
+
+//------------------------------------------------------------------------------
 void vtkPVLightShaftsExchange::CombineShadowMaps(vtkLightShaftPass* pass,
   vtkMultiProcessController* controller)
 {

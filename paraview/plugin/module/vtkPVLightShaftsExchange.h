@@ -19,6 +19,8 @@ class vtkOpenGLRenderWindow;
  * Every process renders the same frame in lock step, so each exchange is one collective call
  * that every process makes:
  * - AgreeOnReuse (ShadowMapReuseEvent): a map is kept only where every process's is unchanged;
+ * - AgreeOnTimes (FrameTimedEvent): a budget's cost model learns the slowest process's times,
+ *   so that every process chooses the same setting for the next frame;
  * - CombineShadowMaps (ShadowMapRenderedEvent): the minimum of the processes' depth maps, so
  *   that every process's map holds every process's occluders;
  * - ShareSceneDepth (SceneDepthReadyEvent): process 0, which holds IceT's composited image, gives
@@ -33,6 +35,8 @@ public:
   /// ShadowMapReuseEvent: `reuse` (1: this process's map is unchanged) becomes 1 only where
   /// every process's is (no controller: left as it is).
   void AgreeOnReuse(int* reuse, vtkMultiProcessController* controller);
+  /// FrameTimedEvent: `seconds` (the shafts' and the frame's) become the slowest process's.
+  void AgreeOnTimes(double* seconds, vtkMultiProcessController* controller);
   void CombineShadowMaps(vtkLightShaftPass* pass, vtkMultiProcessController* controller);
   void ShareSceneDepth(vtkLightShaftPass* pass, vtkMultiProcessController* controller);
   void GatherInScatter(vtkLightShaftPass* pass,

@@ -71,6 +71,9 @@ public:
 
   // The renderer's own FXAA was turned off for this render (AboutToRenderOnLocalProcess).
   bool RestoreRendererFXAA = false;
+  // ExactFinish as set, and whether the view said it is off under MPI.
+  bool ExactFinish = false;
+  bool WarnedExactFinish = false;
 
   // FitMediumToScene: whether it is on and was handed to the pass, and the coefficients and
   // exposure as given, with the pass's defaults (a value other than its default is the user's).
@@ -150,7 +153,8 @@ vtkPVLightShaftsView::vtkPVLightShaftsView()
   exchange->SetClientData(this);
   exchange->SetCallback([](vtkObject*, unsigned long event, void* self, void* data)
     { static_cast<vtkPVLightShaftsView*>(self)->Exchange(event, data); });
-  for (unsigned long event : { vtkLightShaftPass::ShadowMapReuseEvent,
+  for (unsigned long event : { vtkLightShaftPass::FrameTimedEvent,
+         vtkLightShaftPass::ShadowMapReuseEvent,
          vtkLightShaftPass::ShadowMapRenderedEvent,
          vtkLightShaftPass::SceneDepthReadyEvent,
          vtkLightShaftPass::InScatterPieceEvent })
@@ -224,6 +228,15 @@ void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
   shafts->SetImagePiece(controller && this->DivideShaftWork ? controller->GetLocalProcessId() : 0,
     controller && this->DivideShaftWork ? controller->GetNumberOfProcesses() : 1);
   this->Impl->Exchange.BeginFrame();
+  // The exact finish integrates on each process's idle threads and completes when they are
+  // done: the processes would not take the same path in the same render.
+  if (controller && this->Impl->ExactFinish && !this->Impl->WarnedExactFinish)
+  {
+    vtkWarningMacro("Exact Finish is not distributed: it is off while the view renders on "
+                    << controller->GetNumberOfProcesses() << " processes.");
+    this->Impl->WarnedExactFinish = true;
+  }
+  shafts->SetExactFinish(this->Impl->ExactFinish && !controller);
   if (this->DistributedShadowMap && DistributedController() && this->GeometryBounds.IsValid())
   {
     // GeometryBounds holds the union over the processes (vtkPVRenderView reduces it).
@@ -243,7 +256,11 @@ void vtkPVLightShaftsView::Exchange(unsigned long event, void* data)
   vtkMultiProcessController* controller = DistributedController();
   vtkPVLightShaftsExchange& exchange = this->Impl->Exchange;
   vtkLightShaftPass* shafts = this->Impl->Shafts;
-  if (event == vtkLightShaftPass::ShadowMapReuseEvent)
+  if (event == vtkLightShaftPass::FrameTimedEvent)
+  {
+    exchange.AgreeOnTimes(static_cast<double*>(data), controller);
+  }
+  else if (event == vtkLightShaftPass::ShadowMapReuseEvent)
   {
     // Kept only where every process's map is unchanged (then the combined map still holds);
     // alone, or not combining, a map is as reusable as the pass finds it.
@@ -676,7 +693,7 @@ void vtkPVLightShaftsView::SetRefinementFrames(int frames)
 
 void vtkPVLightShaftsView::SetExactFinish(bool finish)
 {
-  this->Impl->Shafts->SetExactFinish(finish);
+  this->Impl->ExactFinish = finish; // (given to the pass before each render: not under MPI)
 }
 
 void vtkPVLightShaftsView::SetSplitLongFrames(bool split)
