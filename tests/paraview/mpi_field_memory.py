@@ -1,7 +1,8 @@
 """pvbatch --symmetric script (serial or under mpirun): examples/paraview/smoke_plume.py at
 --points samples across the plume (37: the example's), then this process's peak resident memory
 when the picture is saved (/proc/self/status VmHWM, bytes) into OUTPUT.rank<r>.json; the picture is OUTPUT.png. The
-field's memory is the peak at a large --points less the peak at the example's. Usage:
+field's memory is the peak at a large --points less the peak at the example's. --methods: the
+scene again with SLICES and EPIPOLAR, and without the shafts. Usage:
 pvbatch --symmetric mpi_field_memory.py OUTPUT --points N [--field-resolution R] [the example's
 other options]"""
 
@@ -22,6 +23,8 @@ def main():
     parser.add_argument("output")
     parser.add_argument("--points", type=int, default=37)
     parser.add_argument("--field-resolution", type=int, default=2048)
+    parser.add_argument("--methods", action="store_true",
+                        help="also OUTPUT-slices.png, OUTPUT-epipolar.png and OUTPUT-plain.png")
     args, example = parser.parse_known_args()  # (the others: the example's, as --absorb-only)
     sys.argv = [sys.argv[0], "-o", args.output + ".png", "--size", "400", "300",
                 "--points", str(args.points), "--field-resolution", str(args.field_resolution)]
@@ -42,6 +45,16 @@ def main():
     simple.SaveScreenshot = saved
     runpy.run_path(os.path.join(HERE, "..", "..", "examples", "paraview", "smoke_plume.py"))
     peak = peaks[0]
+    if args.methods:
+        # The same scene with the other methods that render a medium from data, and without the
+        # shafts: the in-scatter of each method is its picture less that one.
+        view = simple.GetActiveView()
+        size = [400, 300]
+        for method, name in ((0, "slices"), (5, "epipolar")):
+            view.ShaftMethod = method
+            save(f"{args.output}-{name}.png", view, ImageResolution=size)
+        view.LightShafts = 0
+        save(f"{args.output}-plain.png", view, ImageResolution=size)
     module = servermanager.vtkProcessModule.GetProcessModule()
     rank = module.GetPartitionId()
     with open(f"{args.output}.rank{rank}.json", "w") as out:
