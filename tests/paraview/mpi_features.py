@@ -4,9 +4,7 @@ the presets (Draft, Interactive, Final), ShaftTargetError, a still view refined 
 DistributedShadowMap off; and, whose pictures depend on each process's clock so that only their
 completing is checked, a frame budget over moving frames and Exact Finish (off under MPI, with
 one warning); and selections, which must select what a plain RenderView selects in the same run.
-The scene is the test scene, saved as OUTPUT_DIR/features.pvsm, or another run's state loaded
-(--state: a .pvsm under MPI). Writes OUTPUT_DIR/results.json.
-Usage: pvbatch mpi_features.py OUTPUT_DIR [--state STATE.pvsm]"""
+Writes OUTPUT_DIR/results.json. Usage: pvbatch mpi_features.py OUTPUT_DIR"""
 
 import json
 import os
@@ -16,6 +14,13 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import lightshafts_pvscene as scene  # noqa: E402
 from test_selection import selections  # noqa: E402
+
+
+def place_camera(view):
+    view.CameraPosition = [0.0, 3.0, 14.0]
+    view.CameraFocalPoint = [0.0, 3.0, 0.0]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraViewAngle = 40.0
 
 
 def converge(view, frames=40):
@@ -36,16 +41,10 @@ def main():
     scene.load_plugin()
     module = servermanager.vtkProcessModule.GetProcessModule()
     results = {"processes": module.GetNumberOfLocalPartitions()}
-    if len(sys.argv) > 3 and sys.argv[2] == "--state":
-        # The scene from another run's state (a .pvsm loaded under MPI: the pictures below are
-        # that run's if the state brought everything back).
-        simple.LoadState(sys.argv[3])
-        view = [v for v in simple.GetViews() if v.GetXMLName() == "LightShaftsRenderView"][0]
-        simple.SetActiveView(view)
-    else:
-        view, _, _ = scene.make_scene()
-        view.ProgressiveRefinement = 0
-        simple.SaveState(os.path.join(out, "features.pvsm"))
+    view, _, _ = scene.make_scene()
+    view.ProgressiveRefinement = 0
+    simple.Render(view)  # (the first render resets the camera to the data: place it again)
+    place_camera(view)
     simple.Render(view)
     for value, name in ((1, "draft"), (2, "interactive"), (3, "final")):
         view.ShaftQuality = value
@@ -66,7 +65,7 @@ def main():
     view.UpdatePropertyInformation()
     results["budget"] = view.GetPropertyValue("LastTimeBudget")
     view.ShaftTimeBudget = 0.0
-    view.CameraPosition = [0.0, 3.0, 14.0]
+    place_camera(view)
     view.ProgressiveRefinement = 1
     view.RefinementFrames = 8
     results["converged_after"] = converge(view)
@@ -91,11 +90,9 @@ def main():
     plain.ViewSize = [scene.WIDTH, scene.HEIGHT]
     for source in sources.values():
         simple.Show(source, plain)
+    simple.Render(plain)
     for target in (plain, loaded):
-        target.CameraPosition = [0.0, 3.0, 14.0]
-        target.CameraFocalPoint = [0.0, 3.0, 0.0]
-        target.CameraViewUp = [0.0, 1.0, 0.0]
-        target.CameraViewAngle = 40.0
+        place_camera(target)
         simple.Render(target)
     picked = {name: selections(target, sources)
               for name, target in (("plain", plain), ("shafts", loaded))}

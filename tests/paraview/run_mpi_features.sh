@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The light-shaft view's features under MPI: tests/paraview/mpi_features.py serially and under
-# `mpirun -np 2 pvbatch`, the latter on the serial run's .pvsm state. The presets,
-# ShaftTargetError and a converged still view give the serial pictures (a mean difference of at most 0.2 levels, at most 0.3% of
+# `mpirun -np 2 pvbatch`. The presets, ShaftTargetError and a converged still view give the
+# serial pictures (a mean difference of at most 0.2 levels, at most 0.3% of
 # the pixels off by more than 4 levels); a frame budget over moving frames completes (the
 # processes choose the same settings); Exact Finish is off under MPI with one warning per
 # process; selections select what a plain RenderView does; no other error or warning.
@@ -14,8 +14,7 @@ mkdir -p "$out"
 pvbatch "$here/mpi_features.py" "$out/serial" > "$out/serial.log" 2>&1
 mpirun --allow-run-as-root --oversubscribe -np 2 -x PYTHONPATH \
   -x LIGHTSHAFTS_PARAVIEW_PLUGIN_LIST -x LIGHTSHAFTS_PARAVIEW_PLUGIN -x DISPLAY \
-  pvbatch "$here/mpi_features.py" "$out/np2" --state "$out/serial/features.pvsm" \
-  > "$out/np2.log" 2>&1
+  pvbatch "$here/mpi_features.py" "$out/np2" > "$out/np2.log" 2>&1
 status=0
 for run in serial np2; do
   if [ ! -f "$out/$run/results.json" ]; then
@@ -43,6 +42,8 @@ out = sys.argv[1]
 failures = []
 for name in ("draft", "interactive", "final", "target", "refined"):
     serial = imread(f"{out}/serial/{name}.png")[..., :3].astype(float) * 255.0
+    if serial.max() < 40.0:  # (the lit floor: 86 levels)
+        failures.append(f"{name}: the serial picture shows no shafts (at most {serial.max():.0f})")
     image = imread(f"{out}/np2/{name}.png")[..., :3].astype(float) * 255.0
     diff = np.abs(image - serial)
     mean, off = float(diff.mean()), float((diff.max(axis=-1) > 4.5).mean())
