@@ -5,7 +5,8 @@ MediumDensity) or in a builtin session, for the client-server test (run_client_s
     pvbatch client_plume.py builtin OUTPUT.png [the example's options]      (serial, for reference)
 
 Remote rendering is forced (the medium lives where the data does: on the server) and the plugin
-is loaded on both sides. FXAA is off in both runs: on a pvserver whose client shows its picture,
+is loaded on both sides. Through a pvserver, the picture saved, a bad array name and a NaN
+exposure are then set, for the test to find the server's messages in the client's output. FXAA is off in both runs: on a pvserver whose client shows its picture,
 the view's picture gets no FXAA (docs/known-issues.md), so the serial reference goes without it.
 """
 
@@ -40,6 +41,13 @@ def main():
     sys.argv = [sys.argv[0], "-o", arguments[0], "--size", "400", "300"] + arguments[1:]
     runpy.run_path(os.path.join(HERE, "..", "..", "examples", "paraview", "smoke_plume.py"))
     if remote:
+        # Bad input on the server's objects: its messages reach the client's output.
+        view = simple.GetActiveView()
+        print("BAD INPUT FOLLOWS", flush=True)
+        view.MediumDensityArray = "no-such-array"
+        simple.Render(view)
+        view.ShaftExposure = float("nan")
+        simple.Render(view)
         simple.Disconnect()
     return 0
 

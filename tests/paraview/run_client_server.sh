@@ -4,7 +4,8 @@
 # the view's MediumDensity, rendered on the server), against the same script in a serial
 # builtin session (pvbatch): the same picture (a mean difference of at most 0.2 levels, at most
 # 0.3% of the pixels off by more than 4 levels), and the plume split over the server's two
-# processes. Usage: run_client_server.sh OUTPUT_DIR (PYTHONPATH and the plugin from the
+# processes; then a bad array name and a NaN exposure: the server's messages reach the client's
+# output. Usage: run_client_server.sh OUTPUT_DIR (PYTHONPATH and the plugin from the
 # environment; LIGHTSHAFTS_PVPYTHON: the pvpython to use, default the one beside
 # python3-paraview's package, else pvpython on PATH).
 set -u
@@ -40,21 +41,31 @@ timeout 240 "$pvpython" "$here/client_plume.py" localhost "$port" "$out/client.p
 kill "$server" 2> /dev/null
 wait "$server" 2> /dev/null
 pvbatch "$here/client_plume.py" builtin "$out/serial.png" > "$out/serial.log" 2>&1
+# The messages the bad input after the picture must give (on the server's processes, and
+# forwarded to the client), and those of the client's disconnection (on the server).
+expected='DensityField: the image has no numeric point or cell array named "no-such-array"|Exposure: non-finite value refused'
 for run in client serial; do
   if [ ! -f "$out/$run.png" ]; then
     cat "$out/$run.log" "$out/server.log"
     echo "FAIL: no picture from the $run run"
     exit 1
   fi
-  if grep -E "ERROR: In |Warning: In |Generic Warning|ERR\||WARN\|" "$out/$run.log"; then
+  if sed '/BAD INPUT FOLLOWS/q' "$out/$run.log" |
+    grep -E "ERROR: In |Warning: In |Generic Warning|ERR\||WARN\|"; then
     echo "FAIL: VTK printed errors or warnings in the $run run"
     exit 1
   fi
 done
-# (The server's log ends with the client's disconnection, which pvserver reports as errors.)
-if grep -E "ERROR: In |Warning: In |Generic Warning|WARN\|" "$out/server.log" ||
-  grep "ERR|" "$out/server.log" | grep -v -E "vtkSocketCommunicator|vtkTCPNetworkAccessMana"; then
-  echo "FAIL: the server printed errors or warnings"
+for message in 'no numeric point or cell array named "no-such-array"' 'Exposure: non-finite value refused'; do
+  if ! sed -n '/BAD INPUT FOLLOWS/,$p' "$out/client.log" | grep -q "$message"; then
+    cat "$out/client.log"
+    echo "FAIL: the client's output lacks the server's message: $message"
+    exit 1
+  fi
+done
+if grep -E "ERROR: In |Warning: In |Generic Warning|ERR\||WARN\|" "$out/server.log" |
+  grep -v -E "$expected|vtkSocketCommunicator|vtkTCPNetworkAccessMana"; then
+  echo "FAIL: the server printed other errors or warnings"
   exit 1
 fi
 exec /usr/bin/python3 - "$out" <<'PY'
