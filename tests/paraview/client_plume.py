@@ -43,7 +43,6 @@ def main():
     if remote:
         # Bad input on the server's objects: its messages reach the client's output.
         view = simple.GetActiveView()
-        print("BAD INPUT FOLLOWS", flush=True)
         view.MediumDensityArray = "no-such-array"
         simple.Render(view)
         view.ShaftExposure = float("nan")

@@ -41,23 +41,26 @@ timeout 240 "$pvpython" "$here/client_plume.py" localhost "$port" "$out/client.p
 kill "$server" 2> /dev/null
 wait "$server" 2> /dev/null
 pvbatch "$here/client_plume.py" builtin "$out/serial.png" > "$out/serial.log" 2>&1
-# The messages the bad input after the picture must give (on the server's processes, and
-# forwarded to the client), and those of the client's disconnection (on the server).
-expected='DensityField: the image has no numeric point or cell array named "no-such-array"|Exposure: non-finite value refused'
+# The messages the bad input after the picture must give: on the server's processes, forwarded
+# to the client (each after its "ERROR: In <file>" line), and the exposure's also from the
+# client's own pass; no other error or warning anywhere. (The order of the client's printed
+# lines and its log's is not kept: ParaView 6.1's Python output is buffered.)
+expected='named "no-such-array"|Exposure: non-finite value refused|ERROR: In vtkLightShaftMediumTexture.cxx|ERROR: In vtkLightShaftSetters.h'
 for run in client serial; do
   if [ ! -f "$out/$run.png" ]; then
     cat "$out/$run.log" "$out/server.log"
     echo "FAIL: no picture from the $run run"
     exit 1
   fi
-  if sed '/BAD INPUT FOLLOWS/q' "$out/$run.log" |
-    grep -E "ERROR: In |Warning: In |Generic Warning|ERR\||WARN\|"; then
+  if grep -E "ERROR: In |Warning: In |Generic Warning|ERR\||WARN\|" "$out/$run.log" |
+    grep -v -E "$expected"; then
     echo "FAIL: VTK printed errors or warnings in the $run run"
     exit 1
   fi
 done
+# (The client renders nothing itself: an error about the field can only be the server's.)
 for message in 'no numeric point or cell array named "no-such-array"' 'Exposure: non-finite value refused'; do
-  if ! sed -n '/BAD INPUT FOLLOWS/,$p' "$out/client.log" | grep -q "$message"; then
+  if ! grep -q "$message" "$out/client.log"; then
     cat "$out/client.log"
     echo "FAIL: the client's output lacks the server's message: $message"
     exit 1
