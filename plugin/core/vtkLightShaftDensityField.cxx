@@ -13,15 +13,11 @@
 
 namespace
 {
-
 bool Finite3(const double v[3])
 {
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
 }
-}
 
-namespace
-{
 // The trilinear neighbours of point index p (relative to the image's first point) in an image of
 // `points` points and `samples` samples per axis (cell centres: half a cell further on): the
 // lower sample and the fraction towards the next, per axis; false outside the bounds.

@@ -165,9 +165,10 @@ void vtkLightShaftSlabDrawer::Draw(vtkLightShaftFrame& frame,
   // of the frame's in-scatter this process computes).
   this->Rows = slabs.Rows;
   GLuint fragments = 0;
-  const GLboolean scissorWasOn = glIsEnabled(GL_SCISSOR_TEST);
+  GLboolean scissorWasOn = GL_FALSE;
   if (this->Rows)
   {
+    scissorWasOn = glIsEnabled(GL_SCISSOR_TEST);
     ostate->vtkglEnable(GL_SCISSOR_TEST);
     glGenQueries(1, &fragments);
     glBeginQuery(GL_SAMPLES_PASSED, fragments);

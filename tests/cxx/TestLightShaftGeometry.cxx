@@ -2,7 +2,8 @@
 // without a display): polytope clipping, convex
 // hulls and polygon clipping, the camera frame, the light's bounding pyramid and caster
 // culling, the light camera, the lit volume, the slab footprints and their lattice, the
-// epipole and the epipolar lines; and the budget's cost model.
+// epipole and the epipolar lines; the budget's cost model; and the image pieces' rows and the
+// field resampled piece by piece (distributed rendering).
 //
 // Usage: TestLightShaftGeometry
 
@@ -22,6 +23,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCellData.h"
 #include "vtkCubeSource.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
@@ -42,6 +44,7 @@
 #include <cstdlib>
 #include <initializer_list>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -818,6 +821,106 @@ void TestFieldError()
   Check(!probe.Lit && probe.DensityDepth == 0.0, "no field: nothing measured");
 }
 
+//------------------------------------------------------------------------------
+// Image pieces (distributed rendering): every row of the in-scatter is exactly one piece's, and
+// the blocks grown for a gather stay within the image, merged where they meet.
+void TestImagePieceRows()
+{
+  namespace G = vtkLightShaftGeometry;
+  for (int pieces : { 1, 2, 3, 4, 64 })
+  {
+    for (int height : { 1, 7, 120, 300, 2160 })
+    {
+      std::vector<int> owner(height, -1);
+      bool once = true;
+      for (int piece = 0; piece < pieces; ++piece)
+      {
+        for (const G::RowBlock& block : G::ImagePieceRows(piece, pieces, height))
+        {
+          for (int row = block.First; row < block.End; ++row)
+          {
+            once = once && owner[row] < 0;
+            owner[row] = piece;
+          }
+        }
+      }
+      Check(once && std::count(owner.begin(), owner.end(), -1) == 0,
+        "image pieces: every row is one piece's (" + std::to_string(pieces) + " pieces, " +
+          std::to_string(height) + " rows)");
+    }
+  }
+  const int block = G::ImagePieceBlockRows(2, 600);
+  Check(block >= 4 && block <= 16, "image pieces: blocks of 4 to 16 rows");
+  Check(G::ImagePieceRows(2, 2, 100).empty() && G::ImagePieceRows(0, 0, 100).empty(),
+    "image pieces: no rows for a piece out of range");
+  const std::vector<G::RowBlock> grown = G::GrowRows({ { 0, 4 }, { 6, 10 }, { 30, 40 } }, 2, 41);
+  Check(grown.size() == 2 && grown[0].First == 0 && grown[0].End == 12 && grown[1].First == 28 &&
+          grown[1].End == 41,
+    "grown rows: merged where they meet, within the image");
+}
+
+//------------------------------------------------------------------------------
+// A field resampled piece by piece (each piece with one ghost plane, as ParaView splits an
+// image) is Resampled of the whole image, to the bit, for point and for cell data.
+void TestResamplePiece()
+{
+  const int dims[3] = { 23, 17, 13 };
+  for (bool cells : { false, true })
+  {
+    auto image = [&](int zFirst, int zLast)
+    {
+      vtkNew<vtkImageData> piece;
+      piece->SetExtent(0, dims[0] - 1, 0, dims[1] - 1, zFirst, zLast);
+      piece->SetOrigin(-1.0, 0.5, 2.0);
+      piece->SetSpacing(0.3, 0.2, 0.7);
+      const int n[3] = { cells ? dims[0] - 1 : dims[0],
+        cells ? dims[1] - 1 : dims[1],
+        cells ? zLast - zFirst : zLast - zFirst + 1 };
+      vtkNew<vtkDoubleArray> values;
+      values->SetNumberOfTuples(vtkIdType(n[0]) * n[1] * n[2]);
+      vtkIdType at = 0;
+      for (int k = 0; k < n[2]; ++k)
+      {
+        for (int j = 0; j < n[1]; ++j)
+        {
+          for (int i = 0; i < n[0]; ++i)
+          {
+            const int z = zFirst + k;
+            values->SetValue(at++, 1.0 + std::sin(0.7 * i) * std::cos(0.4 * j + 0.9 * z));
+          }
+        }
+      }
+      (cells ? static_cast<vtkDataSetAttributes*>(piece->GetCellData())
+             : static_cast<vtkDataSetAttributes*>(piece->GetPointData()))
+        ->SetScalars(values);
+      vtkLightShaftDensityField field;
+      const std::string why = field.Read(piece, nullptr);
+      Check(why.empty(), "resampled pieces: the piece is a field (" + why + ")");
+      return field;
+    };
+    const int maximum = 8;
+    const vtkLightShaftDensityField whole = image(0, dims[2] - 1).Resampled(maximum);
+    const int* grid = whole.GetSamples();
+    std::vector<float> gathered(
+      std::size_t(grid[0]) * grid[1] * grid[2], -std::numeric_limits<float>::max());
+    const int planes[2] = { 0, grid[2] };
+    for (const std::array<int, 2>& z : { std::array<int, 2>{ 0, 5 }, { 4, 9 }, { 8, 12 } })
+    {
+      const vtkLightShaftDensityField piece = image(z[0], z[1]);
+      std::vector<float> slab(gathered.size(), -std::numeric_limits<float>::max());
+      const int offset[3] = { 0, 0, z[0] };
+      piece.ResamplePiece(maximum, offset, dims, planes, slab.data());
+      for (std::size_t i = 0; i < slab.size(); ++i)
+      {
+        gathered[i] = std::max(gathered[i], slab[i]); // (as the gather's MAX reduction)
+      }
+    }
+    Check(gathered == whole.GetValues(),
+      std::string("resampled pieces: the whole image's Resampled, to the bit (") +
+        (cells ? "cells" : "points") + ")");
+  }
+}
+
 int main()
 {
   TestPolygons();
@@ -833,6 +936,8 @@ int main()
   TestEpipole();
   TestEpipolarLayout();
   TestFieldError();
+  TestImagePieceRows();
+  TestResamplePiece();
   if (Failures > 0)
   {
     std::cerr << Failures << " geometry check(s) failed" << std::endl;

@@ -26,6 +26,32 @@ int RowCount(const std::vector<vtkLightShaftGeometry::RowBlock>& rows)
   }
   return count;
 }
+
+// A 2D depth texture's values as float into `values` (resized), and back.
+void ReadDepth(vtkTextureObject* texture, std::vector<float>& values)
+{
+  values.resize(static_cast<size_t>(texture->GetWidth()) * texture->GetHeight());
+  texture->Bind();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, values.data());
+  texture->Deactivate();
+}
+
+void WriteDepth(vtkTextureObject* texture, const std::vector<float>& values)
+{
+  texture->Bind();
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(GL_TEXTURE_2D,
+    0,
+    0,
+    0,
+    static_cast<GLsizei>(texture->GetWidth()),
+    static_cast<GLsizei>(texture->GetHeight()),
+    GL_DEPTH_COMPONENT,
+    GL_FLOAT,
+    values.data());
+  texture->Deactivate();
+}
 }
 
 //------------------------------------------------------------------------------
@@ -63,20 +89,14 @@ void vtkPVLightShaftsExchange::CombineShadowMaps(vtkLightShaftPass* pass,
   }
   // Every process renders a map with the same light camera (SetShadowCasterBounds), so the
   // minimum depth per texel is the nearest occluder of any process.
-  const int width = static_cast<int>(map->GetWidth());
-  const int height = static_cast<int>(map->GetHeight());
-  std::vector<float> local(static_cast<size_t>(width) * height);
-  std::vector<float> combined(local.size());
-  map->Bind();
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, local.data());
-  controller->AllReduce(
-    local.data(), combined.data(), static_cast<vtkIdType>(local.size()), vtkCommunicator::MIN_OP);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexSubImage2D(
-    GL_TEXTURE_2D, 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, combined.data());
-  map->Deactivate();
-  this->Bytes += 2.0 * sizeof(float) * local.size(); // (an all-reduce: sent and received)
+  ReadDepth(map, this->Local);
+  this->Combined.resize(this->Local.size());
+  controller->AllReduce(this->Local.data(),
+    this->Combined.data(),
+    static_cast<vtkIdType>(this->Local.size()),
+    vtkCommunicator::MIN_OP);
+  WriteDepth(map, this->Combined);
+  this->Bytes += 2.0 * sizeof(float) * this->Local.size(); // (an all-reduce: sent and received)
 }
 
 //------------------------------------------------------------------------------
@@ -88,24 +108,21 @@ void vtkPVLightShaftsExchange::ShareSceneDepth(vtkLightShaftPass* pass,
   {
     return;
   }
-  const int width = static_cast<int>(depth->GetWidth());
-  const int height = static_cast<int>(depth->GetHeight());
-  std::vector<float> values(static_cast<size_t>(width) * height);
   const bool root = controller->GetLocalProcessId() == 0;
-  depth->Bind();
+  std::vector<float>& values = this->Local;
   if (root)
   {
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, values.data());
+    ReadDepth(depth, values);
+  }
+  else
+  {
+    values.resize(static_cast<size_t>(depth->GetWidth()) * depth->GetHeight());
   }
   controller->Broadcast(values.data(), static_cast<vtkIdType>(values.size()), 0);
   if (!root)
   {
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexSubImage2D(
-      GL_TEXTURE_2D, 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, values.data());
+    WriteDepth(depth, values);
   }
-  depth->Deactivate();
   this->Bytes +=
     sizeof(float) * values.size() * (root ? controller->GetNumberOfProcesses() - 1 : 1);
 }
@@ -140,7 +157,8 @@ void vtkPVLightShaftsExchange::GatherInScatter(vtkLightShaftPass* pass,
 
   // This process's rows, read through a framebuffer (a block at a time).
   vtkOpenGLState* ostate = window->GetState();
-  std::vector<float> mine(static_cast<size_t>(lengths[rank]));
+  std::vector<float>& mine = this->Local;
+  mine.resize(static_cast<size_t>(lengths[rank]));
   {
     vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
     ostate->PushFramebufferBindings();
@@ -161,7 +179,8 @@ void vtkPVLightShaftsExchange::GatherInScatter(vtkLightShaftPass* pass,
     ostate->PopFramebufferBindings();
     framebuffer->ReleaseGraphicsResources(window);
   }
-  std::vector<float> gathered(rank == 0 ? static_cast<size_t>(total) : 0);
+  std::vector<float>& gathered = this->Combined;
+  gathered.resize(rank == 0 ? static_cast<size_t>(total) : 0);
   controller->GatherV(
     mine.data(), gathered.data(), lengths[rank], lengths.data(), offsets.data(), 0);
   this->Bytes += sizeof(float) * (rank == 0 ? total - lengths[0] : lengths[rank]);

@@ -7,6 +7,8 @@
 #ifndef vtkPVLightShaftsExchange_h
 #define vtkPVLightShaftsExchange_h
 
+#include <vector> // For the exchanges' buffers
+
 class vtkLightShaftPass;
 class vtkMultiProcessController;
 class vtkOpenGLRenderWindow;
@@ -50,6 +52,9 @@ public:
 
 private:
   double Bytes = 0.0;
+  // The exchanges' host buffers, kept from frame to frame (their capacity reused).
+  std::vector<float> Local;
+  std::vector<float> Combined;
 };
 
 #endif

@@ -190,6 +190,7 @@ vtkMultiProcessController* DistributedController()
 void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
 {
   this->Superclass::AboutToRenderOnLocalProcess(interactive);
+  vtkMultiProcessController* controller = DistributedController();
   // With its image-processing slot filled, ParaView 5.11 antialiases twice: its FXAA pass runs
   // around the slot, and the renderer's own FXAA inside the scene's default pass. Keep the
   // outer one (it sees the final picture, shafts included) and turn the renderer's off for
@@ -198,8 +199,7 @@ void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
   // pictures lose their antialiasing): the renderer's stays.
   vtkRenderer* renderer = this->GetRenderer();
   if (this->SynchronizedRenderers->GetImageProcessingPass() &&
-      this->SynchronizedRenderers->GetUseFXAA() && renderer->GetUseFXAA() &&
-      !DistributedController())
+      this->SynchronizedRenderers->GetUseFXAA() && renderer->GetUseFXAA() && !controller)
   {
     renderer->SetUseFXAA(false);
     this->Impl->RestoreRendererFXAA = true;
@@ -210,8 +210,8 @@ void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
   // renderer's flat background in after the pass (the renderer's is black while it renders):
   // the pass paints it where the medium must dim it. A gradient or textured background is left
   // to IceT.
-  shafts->SetPaintBackground(DistributedController() && !renderer->GetGradientBackground() &&
-                             !renderer->GetTexturedBackground());
+  shafts->SetPaintBackground(
+    controller && !renderer->GetGradientBackground() && !renderer->GetTexturedBackground());
   shafts->SetPaintedBackground(
     renderer->GetBackground()[0], renderer->GetBackground()[1], renderer->GetBackground()[2]);
   if (this->Impl->FitMedium && !this->Impl->FitAsked)
@@ -224,9 +224,9 @@ void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
   }
   // The processes divide the in-scatter's rows (SLICES, RAY_MARCH, ANALYTIC): each computes
   // its piece on process 0's composited depth, gathered there (Exchange).
-  vtkMultiProcessController* controller = DistributedController();
-  shafts->SetImagePiece(controller && this->DivideShaftWork ? controller->GetLocalProcessId() : 0,
-    controller && this->DivideShaftWork ? controller->GetNumberOfProcesses() : 1);
+  const bool divide = controller && this->DivideShaftWork;
+  shafts->SetImagePiece(
+    divide ? controller->GetLocalProcessId() : 0, divide ? controller->GetNumberOfProcesses() : 1);
   this->Impl->Exchange.BeginFrame();
   // The exact finish integrates on each process's idle threads and completes when they are
   // done: the processes would not take the same path in the same render.
@@ -237,7 +237,7 @@ void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
     this->Impl->WarnedExactFinish = true;
   }
   shafts->SetExactFinish(this->Impl->ExactFinish && !controller);
-  if (this->DistributedShadowMap && DistributedController() && this->GeometryBounds.IsValid())
+  if (this->DistributedShadowMap && controller && this->GeometryBounds.IsValid())
   {
     // GeometryBounds holds the union over the processes (vtkPVRenderView reduces it).
     double bounds[6];
