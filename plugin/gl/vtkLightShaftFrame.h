@@ -31,6 +31,7 @@ class vtkObject;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
+class vtkProp;
 class vtkRenderState;
 class vtkTextureObject;
 class vtkVolume;
@@ -213,6 +214,9 @@ struct vtkLightShaftFrame
 {
   vtkRenderer* Renderer = nullptr;
   const vtkRenderState* State = nullptr;
+  /// The render state's visible props as the shafts model them (a prop's
+  /// vtkLightShaftPass::MODELLED_PROP key names the prop modelled in its place).
+  std::vector<vtkProp*> Props;
   vtkOpenGLRenderWindow* Window = nullptr;
   vtkObject* Owner = nullptr; ///< the pass: the source of messages and events
 

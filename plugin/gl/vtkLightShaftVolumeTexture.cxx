@@ -10,7 +10,6 @@
 #include "vtkObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkProp.h"
-#include "vtkRenderState.h"
 #include "vtkTextureObject.h"
 #include "vtkVolume.h"
 
@@ -24,10 +23,9 @@ vtkTextureObject* vtkLightShaftVolumeTexture::Ready(vtkLightShaftFrame& frame, v
 {
   vtkVolume* volume = nullptr;
   int volumes = 0;
-  const vtkRenderState* s = frame.State;
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  for (vtkProp* prop : frame.Props)
   {
-    auto* candidate = vtkVolume::SafeDownCast(s->GetPropArray()[i]);
+    auto* candidate = vtkVolume::SafeDownCast(prop);
     if (candidate && candidate != medium && candidate->GetVisibility())
     {
       volume = volume ? volume : candidate;

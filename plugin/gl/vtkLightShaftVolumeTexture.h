@@ -37,8 +37,8 @@ public:
   ~vtkLightShaftVolumeTexture();
 
   /**
-   * The texture of the frame's volume (nullptr: none in view), leaving out `medium`'s volume
-   * (it scatters: it is the medium's field).
+   * The texture of the frame's volume (the first of frame.Props; nullptr: none in view), leaving
+   * out `medium`'s volume (it scatters: it is the medium's field).
    */
   vtkTextureObject* Ready(vtkLightShaftFrame& frame, vtkVolume* medium);
 

@@ -111,11 +111,9 @@ int vtkLightShaftInScatter::ChooseMethod(vtkLightShaftFrame& frame)
 std::vector<vtkProp*> vtkLightShaftInScatter::TranslucentProps(const vtkLightShaftFrame& frame)
 {
   std::vector<vtkProp*> translucent;
-  const vtkRenderState* s = frame.State;
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  for (vtkProp* prop : frame.Props)
   {
-    vtkProp* prop = s->GetPropArray()[i];
-    if (prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry())
+    if (prop->HasTranslucentPolygonalGeometry())
     {
       translucent.push_back(prop);
     }

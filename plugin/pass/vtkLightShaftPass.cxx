@@ -22,6 +22,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkInformationObjectBaseKey.h"
 #include "vtkLight.h"
 #include "vtkLightShaftGeometryLights.h"
 #include "vtkLightShaftOpenGL.h"
@@ -60,6 +61,7 @@ using vtkLightShaftSetters::SetClamped;
 }
 
 vtkStandardNewMacro(vtkLightShaftPass);
+vtkInformationKeyMacro(vtkLightShaftPass, MODELLED_PROP, ObjectBase);
 
 //------------------------------------------------------------------------------
 vtkLightShaftPass::vtkLightShaftPass()
@@ -749,12 +751,13 @@ void vtkLightShaftPass::Internals::RenderShafts(vtkLightShaftFrame& frame,
   // Each light's geometry first: with a target error it decides the frame's sampling.
   std::vector<vtkLightShaftGeometry::LightFrame> lightFrames;
   frame.RadiatingLights = 0;
+  vtkPropCollection* modelled = this->ResolveModelledProps(frame);
   for (vtkLight* light : lights)
   {
     lightFrames.push_back(
       vtkLightShaftGeometry::ComputeLightFrame(vtkLightShaftModel::DescribeLight(light),
         frame.Camera,
-        frame.Renderer->GetViewProps(),
+        modelled,
         frame.Parameters.ShadowCasterBounds));
     frame.RadiatingLights += lightFrames.back().Model.Radiates() ? 1 : 0;
   }

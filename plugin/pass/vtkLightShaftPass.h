@@ -36,6 +36,7 @@
 #include <memory> // For std::unique_ptr (GL objects and state live in Internals)
 
 class vtkImageData;
+class vtkInformationObjectBaseKey;
 class vtkLight;
 class vtkMatrix4x4;
 class vtkTexture;
@@ -75,7 +76,7 @@ public:
     ShadowMapRenderedEvent = vtkCommand::UserEvent + 4301,
     /// After a frame whose still picture is refining: render again, never inside the callback.
     RefinementNeededEvent = vtkCommand::UserEvent + 4302,
-    /// With image pieces, before the in-scatter: GetSceneDepthTexture() is valid.
+    /// Before the in-scatter: GetSceneDepthTexture() is valid (a distributed view composites it).
     SceneDepthReadyEvent = vtkCommand::UserEvent + 4303,
     /// With image pieces, before post-processing: GetInScatterPieceTexture() is valid.
     InScatterPieceEvent = vtkCommand::UserEvent + 4304,
@@ -301,10 +302,10 @@ public:
   /**
    * RADIAL_BLUR (GPU Gems 3 ch. 13): samples towards the light's screen position, in [1, 1024];
    * Decay, each farther sample's weight factor, Density, the fraction of the way covered, and
-   * Weight, how strongly the blurred occlusion darkens the shafts (0: ANALYTIC's picture), each
-   * in [0, 1]; RadialJitter, per-pixel sample offsets; and the guard band, the occlusion
-   * buffer's extent relative to the screen, in [1, 4] (occluders off the picture still cut its
-   * shafts). Defaults are 64, 1, 1, 1, on and 1.
+   * Weight, how strongly the blurred occlusion darkens the shafts (0: ANALYTIC's), in [0, 1];
+   * RadialJitter, per-pixel sample offsets; the guard band, the occlusion buffer's extent over
+   * the screen's, in [1, 4] (occluders off the picture cut shafts). Defaults are 64, 1, 1, 1,
+   * on and 1.
    */
   vtkSetClampMacro(RadialSamples, int, 1, 1024);
   vtkGetMacro(RadialSamples, int);
@@ -323,14 +324,15 @@ public:
 
   ///@{
   /**
-   * Distributed rendering (ParaView under MPI): the world bounds of every process's shadow
-   * casters; set, all processes render their maps with one light camera, for an observer of
-   * ShadowMapRenderedEvent to combine (docs/paraview.md). PaintBackground: the delegate renders
-   * the scene over a transparent background and a compositor blends the background in after
-   * the pass (IceT), so the pass paints PaintedBackground (RGB, each in [0, 1]) behind the
-   * scene's uncovered part before the medium dims it. SetImagePiece: SLICES, RAY_MARCH and
-   * ANALYTIC compute this piece's rows of the in-scatter only, for the events' observers to
-   * exchange (docs/paraview-mpi.md). Defaults are unset, off, (0, 0, 0) and piece 0 of 1.
+   * Distributed rendering (ParaView under MPI, docs/paraview-mpi.md): the world bounds of every
+   * process's shadow casters; set, all processes render their maps with one light camera, for a
+   * ShadowMapRenderedEvent observer to combine. PaintBackground: a compositor (IceT) blends the
+   * background in after the pass, so the pass paints PaintedBackground (RGB in [0, 1]) behind
+   * the scene's uncovered part before the medium dims it. SetImagePiece: SLICES, RAY_MARCH and
+   * ANALYTIC compute only this piece's rows of the in-scatter, for the events' observers to
+   * exchange; MODELLED_PROP, a prop's key (PropertyKeys), names the prop whose shadow,
+   * translucency or volume is modelled in its place (for a piece: the whole data, not a
+   * parameter). Defaults are unset, off, (0, 0, 0) and piece 0 of 1.
    */
   void SetShadowCasterBounds(const double bounds[6]);
   void UnsetShadowCasterBounds();
@@ -338,6 +340,7 @@ public:
   vtkSetMacro(PaintBackground, bool);
   vtkGetMacro(PaintBackground, bool);
   vtkBooleanMacro(PaintBackground, bool);
+  static vtkInformationObjectBaseKey* MODELLED_PROP();
   void SetPaintedBackground(double r, double g, double b);
   vtkGetVector3Macro(PaintedBackground, double);
   void SetImagePiece(int piece, int numberOfPieces);
@@ -410,18 +413,14 @@ public:
   /// The name of a setting of the error model's ladder (GetErrorModelSetting; "none": none)
   static const char* GetErrorModelSettingName(int setting);
 
-  /**
-   * The last frame's L_in before Exposure: float RGB ("InScatteredRadiance"), one pixel per
-   * viewport pixel, row 0 at the bottom, zeros without shafts. False (`out` empty) when nothing
-   * was rendered yet or the window is gone.
-   */
+  /// The last frame's L_in before Exposure: float RGB ("InScatteredRadiance"), one pixel per
+  /// viewport pixel, row 0 at the bottom, zeros without shafts. False (`out` empty) when nothing
+  /// was rendered yet or the window is gone.
   bool GetInScatteredRadiance(vtkImageData* out);
 
-  /**
-   * The last frame's shadow map of its i-th light, for vtkLightShaftReference's ShadowMap
-   * visibility: depths (float, N x N, 1 = nothing) and the light camera's world-to-clip matrix.
-   * False when that light had no map, and for a point light (a cube of six).
-   */
+  /// The last frame's shadow map of its i-th light, for vtkLightShaftReference's ShadowMap
+  /// visibility: depths (float, N x N, 1 = nothing) and the light camera's world-to-clip matrix.
+  /// False when that light had no map, and for a point light (a cube of six).
   bool GetLastShadowMap(vtkImageData* depths, vtkMatrix4x4* worldToLightClip, int index = 0);
 
   ///@{

@@ -32,6 +32,7 @@
 #include "vtkNew.h"                     // For vtkNew
 #include "vtkOpenGLFramebufferObject.h" // For the read-back framebuffer
 #include "vtkOpenGLRenderWindow.h"      // For the window
+#include "vtkPropCollection.h"          // For the props as modelled
 #include "vtkSmartPointer.h"            // For vtkSmartPointer
 #include "vtkTimeStamp.h"               // For the fit's times
 #include "vtkWeakPointer.h"             // For vtkWeakPointer
@@ -99,6 +100,7 @@ public:
     const std::vector<vtkLightShaftGeometry::LightFrame>& lights);
   vtkSmartPointer<vtkLightShaftMedium> Medium; ///< never nullptr (SetMedium)
   vtkNew<vtkLightShaftFrameReport> LastFrame;
+  vtkNew<vtkPropCollection> ModelledProps; ///< the frame's view props as modelled (per frame)
 
   // The components, in the order a frame uses them.
   vtkLightShaftSceneCheck Check;
@@ -176,6 +178,7 @@ public:
   /// Image pieces: this process's rows (frame.PieceRows), and the scene depth handed to the
   /// observers of SceneDepthReadyEvent (which give every process the composited one).
   void BeginImagePiece(vtkLightShaftFrame& frame);
+  vtkPropCollection* ResolveModelledProps(vtkLightShaftFrame& frame);
   /// Every light's in-scatter added up, post-processed, refined (each light's surface light
   /// too); false when nothing was computed (the target holds zeros).
   vtkTextureObject* ComputeInScatter(vtkLightShaftFrame& frame,

@@ -12,11 +12,17 @@
 
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationObjectBaseKey.h"
 #include "vtkLight.h"
 #include "vtkLightShaftOpenGL.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLState.h"
 #include "vtkPointData.h"
+#include "vtkProp.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
 #include "vtkTextureObject.h"
 
 #include <algorithm>
@@ -200,22 +206,58 @@ void vtkLightShaftPass::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-// Image pieces: this process's rows, and the scene depth shared before they are computed.
+// The frame's props as the shafts model them: each visible prop of the render state, or the one
+// its MODELLED_PROP key names (a distributed view's whole data); the view's props likewise, as
+// a collection for the lights' casters.
+vtkPropCollection* vtkLightShaftPass::Internals::ResolveModelledProps(vtkLightShaftFrame& frame)
+{
+  auto modelled = [](vtkProp* prop)
+  {
+    vtkInformation* keys = prop->GetPropertyKeys();
+    return (keys && keys->Has(vtkLightShaftPass::MODELLED_PROP()))
+             ? vtkProp::SafeDownCast(keys->Get(vtkLightShaftPass::MODELLED_PROP()))
+             : prop;
+  };
+  frame.Props.clear();
+  for (int i = 0; i < frame.State->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = modelled(frame.State->GetPropArray()[i]);
+    if (prop && prop->GetVisibility())
+    {
+      frame.Props.push_back(prop);
+    }
+  }
+  this->ModelledProps->RemoveAllItems();
+  vtkCollectionSimpleIterator it;
+  vtkPropCollection* props = frame.Renderer->GetViewProps();
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (vtkProp* resolved = modelled(prop))
+    {
+      this->ModelledProps->AddItem(resolved);
+    }
+  }
+  return this->ModelledProps;
+}
+
+//------------------------------------------------------------------------------
+// The scene depth, which a distributed view composites, before the in-scatter; with image
+// pieces, this process's rows.
 void vtkLightShaftPass::Internals::BeginImagePiece(vtkLightShaftFrame& frame)
 {
   const vtkLightShaftParameters& p = frame.Parameters;
   frame.PieceRows.clear();
-  if (p.ImagePieces < 2)
+  if (p.ImagePieces > 1)
   {
-    return;
+    frame.PieceRows =
+      vtkLightShaftGeometry::ImagePieceRows(p.ImagePiece, p.ImagePieces, frame.Reduced[1]);
+    for (const vtkLightShaftGeometry::RowBlock& block : frame.PieceRows)
+    {
+      frame.Statistics.ImagePieceRows += block.End - block.First;
+    }
+    frame.Statistics.InScatterFragments = 0;
   }
-  frame.PieceRows =
-    vtkLightShaftGeometry::ImagePieceRows(p.ImagePiece, p.ImagePieces, frame.Reduced[1]);
-  for (const vtkLightShaftGeometry::RowBlock& block : frame.PieceRows)
-  {
-    frame.Statistics.ImagePieceRows += block.End - block.First;
-  }
-  frame.Statistics.InScatterFragments = 0;
   this->SceneDepthForEvent = frame.Scene.ShaftDepth;
   frame.Owner->InvokeEvent(vtkLightShaftEnums::SceneDepthReadyEvent);
   this->SceneDepthForEvent = nullptr;

@@ -209,3 +209,95 @@ def test_image_piece_arguments_are_clamped():
     assert (shafts.GetImagePiece(), shafts.GetNumberOfImagePieces()) == (1, 2)
     shafts.SetImagePiece(-1, 0)
     assert (shafts.GetImagePiece(), shafts.GetNumberOfImagePieces()) == (0, 1)
+
+
+def keyed_scene(build):
+    """The sphere-and-floor scene without its sphere under the vertical sun of test_volumes,
+    with `build(renderer)` added: (renderer, window, pass) after one frame (Final)."""
+    import test_volumes as tv
+    renderer, window, shafts = tv.render("vertical", build)
+    return renderer, window, shafts
+
+
+def model_as(prop, modelled):
+    """Set `prop`'s MODELLED_PROP key to `modelled` (what a distributed view does)."""
+    from vtkmodules.vtkCommonCore import vtkInformation
+    keys = prop.GetPropertyKeys() or vtkInformation()
+    keys.Set(vtkLightShaftPass.MODELLED_PROP(), modelled)
+    prop.SetPropertyKeys(keys)
+
+
+def test_a_volume_keyed_to_another_is_modelled_as_that_one():
+    import test_volumes as tv
+    slab = {}
+
+    def whole(renderer):
+        slab["volume"] = tv.add_slab(renderer)
+
+    _, _, direct = keyed_scene(whole)
+    expected = rh.in_scatter(direct)
+
+    def piece(renderer):
+        # A volume drawn over the slab's box (the same bounds: the same clipping range, so the
+        # same backdrop), transparent everywhere, that stands for the slab (in no renderer).
+        drawn = tv.add_volume(renderer, tv.box_image((-30.0, 4.0, -30.0), (30.0, 4.4, 30.0)),
+                              [(0.0, 0.0), (2.0, 0.0)])
+        standing = tv.add_slab(renderer)
+        renderer.RemoveVolume(standing)
+        slab["standing"] = standing
+        model_as(drawn, standing)
+
+    _, _, keyed = keyed_scene(piece)
+    assert keyed.GetLastFrame().GetVolume() is slab["standing"]
+    got = rh.in_scatter(keyed)
+    assert got.max() > 0.0
+    np.testing.assert_allclose(got, expected, rtol=0, atol=1e-6 * expected.max())
+    # Without the key the drawn volume, transparent, dims nothing: the slab's 0.5^0.4 is missing.
+    _, _, unkeyed = keyed_scene(lambda renderer: tv.add_volume(
+        renderer, tv.box_image((-30.0, 4.0, -30.0), (30.0, 4.4, 30.0)), [(0.0, 0.0), (2.0, 0.0)]))
+    assert unkeyed.GetLastFrame().GetVolume() is None
+    assert rh.in_scatter(unkeyed).sum() > 1.2 * expected.sum()
+
+
+def test_a_translucent_actor_keyed_to_another_is_peeled_as_that_one():
+    from vtkmodules.vtkFiltersSources import vtkPlaneSource
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
+
+    def pane(origin, point1, point2, color):
+        source = vtkPlaneSource()
+        source.SetOrigin(*origin)
+        source.SetPoint1(*point1)
+        source.SetPoint2(*point2)
+        mapper = vtkPolyDataMapper()
+        mapper.SetInputConnection(source.GetOutputPort())
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        actor.GetProperty().SetColor(*color)
+        actor.GetProperty().SetOpacity(0.5)
+        return actor
+
+    across = ((-30.0, 4.0, -30.0), (30.0, 4.0, -30.0), (-30.0, 4.0, 30.0))
+
+    def whole(renderer):
+        renderer.AddActor(pane(*across, (1.0, 0.1, 0.1)))
+
+    _, _, direct = keyed_scene(whole)
+    expected = rh.in_scatter(direct)
+    assert direct.GetLastFrame().GetLightTranslucentLayers(0) > 0
+
+    def piece(renderer):
+        # A green pane drawn in the red one's place (the same bounds), standing for it.
+        drawn = pane(*across, (0.2, 0.9, 0.2))
+        renderer.AddActor(drawn)
+        model_as(drawn, pane(*across, (1.0, 0.1, 0.1)))
+
+    _, _, keyed = keyed_scene(piece)
+    got = rh.in_scatter(keyed)
+    assert keyed.GetLastFrame().GetLightTranslucentLayers(0) > 0
+    # Red passes, green and blue are dimmed, as by the pane itself.
+    np.testing.assert_allclose(got, expected, rtol=0, atol=1e-5 * expected.max())
+    # Without the key the green pane tints the shafts green: red dimmed, green passed.
+    _, _, unkeyed = keyed_scene(lambda renderer: renderer.AddActor(pane(*across, (0.2, 0.9, 0.2))))
+    green = rh.in_scatter(unkeyed).sum(axis=(0, 1))
+    red = expected.sum(axis=(0, 1))
+    assert green[0] < 0.8 * red[0] and green[1] > 1.2 * red[1]

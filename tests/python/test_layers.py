@@ -21,6 +21,9 @@ PASS_USERS = {
     "plugin/pass/vtkLightShaftReference.cxx",
     "paraview/plugin/module/vtkPVLightShaftsView.cxx",
     "paraview/plugin/module/vtkPVLightShaftsExchange.cxx",
+    "paraview/plugin/module/vtkPVLightShaftsTranslucentGather.cxx",
+    "paraview/plugin/module/vtkPVLightShaftsViewInternals.h",
+    "paraview/plugin/module/vtkPVLightShaftsVolumeGather.cxx",
 }
 
 

@@ -1,15 +1,23 @@
 #include "vtkPVLightShaftsExchange.h"
 
 #include "vtkLightShaftGeometry.h"
+#include "vtkLightShaftResources.h"
 
+#include "vtkCameraPass.h"
+#include "vtkCollection.h"
 #include "vtkCommunicator.h"
 #include "vtkLightShaftOpenGL.h"
 #include "vtkLightShaftPass.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
+#include "vtkOpaquePass.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkProp.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
 #include "vtkTextureObject.h"
 
 #include <vector>
@@ -53,6 +61,10 @@ void WriteDepth(vtkTextureObject* texture, const std::vector<float>& values)
   texture->Deactivate();
 }
 }
+
+//------------------------------------------------------------------------------
+vtkPVLightShaftsExchange::vtkPVLightShaftsExchange() = default;
+vtkPVLightShaftsExchange::~vtkPVLightShaftsExchange() = default;
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsExchange::AgreeOnReuse(int* reuse, vtkMultiProcessController* controller)
@@ -101,30 +113,77 @@ void vtkPVLightShaftsExchange::CombineShadowMaps(vtkLightShaftPass* pass,
 
 //------------------------------------------------------------------------------
 void vtkPVLightShaftsExchange::ShareSceneDepth(vtkLightShaftPass* pass,
-  vtkMultiProcessController* controller)
+  vtkMultiProcessController* controller,
+  vtkRenderer* opaque,
+  vtkOpenGLRenderWindow* window)
 {
   vtkTextureObject* depth = pass->GetSceneDepthTexture();
   if (!controller || !depth)
   {
     return;
   }
-  const bool root = controller->GetLocalProcessId() == 0;
-  std::vector<float>& values = this->Local;
-  if (root)
+  // The nearest surface of any process. Where IceT composites depth, process 0 holds its
+  // composited depth (the minimum) and the others their own; where it composites in order
+  // (volumes, translucent surfaces) it gives back colour only and leaves process 0 no depth of
+  // its own: each process then renders its opaque props' depth again.
+  if (opaque && window)
   {
-    ReadDepth(depth, values);
+    this->RenderOpaqueDepth(opaque, window, depth->GetWidth(), depth->GetHeight());
   }
   else
   {
-    values.resize(static_cast<size_t>(depth->GetWidth()) * depth->GetHeight());
+    ReadDepth(depth, this->Local);
   }
-  controller->Broadcast(values.data(), static_cast<vtkIdType>(values.size()), 0);
-  if (!root)
+  this->Combined.resize(this->Local.size());
+  controller->AllReduce(this->Local.data(),
+    this->Combined.data(),
+    static_cast<vtkIdType>(this->Local.size()),
+    vtkCommunicator::MIN_OP);
+  WriteDepth(depth, this->Combined);
+  this->Bytes += 2.0 * sizeof(float) * this->Local.size();
+}
+
+//------------------------------------------------------------------------------
+// The depth of `renderer`'s visible opaque props from its camera, `width` x `height`, into Local.
+void vtkPVLightShaftsExchange::RenderOpaqueDepth(vtkRenderer* renderer,
+  vtkOpenGLRenderWindow* window,
+  int width,
+  int height)
+{
+  std::vector<vtkProp*> props;
+  vtkCollectionSimpleIterator it;
+  vtkPropCollection* all = renderer->GetViewProps();
+  all->InitTraversal(it);
+  while (vtkProp* prop = all->GetNextProp(it))
   {
-    WriteDepth(depth, values);
+    if (prop->GetVisibility())
+    {
+      props.push_back(prop);
+    }
   }
-  this->Bytes +=
-    sizeof(float) * values.size() * (root ? controller->GetNumberOfProcesses() - 1 : 1);
+  vtkOpenGLState* ostate = window->GetState();
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  ostate->PushFramebufferBindings();
+  vtkNew<vtkTextureObject> depth;
+  depth->SetContext(window);
+  depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+  vtkNew<vtkOpenGLFramebufferObject> framebuffer;
+  framebuffer->SetContext(window);
+  vtkLightShaftResources::BindTargets(framebuffer, {}, depth, width, height);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglClearDepth(1.0);
+  ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  vtkRenderState state(renderer);
+  state.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
+  state.SetFrameBuffer(framebuffer);
+  this->CameraPass->SetDelegatePass(this->OpaquePass);
+  this->CameraPass->Render(&state);
+  ostate->PopFramebufferBindings();
+  ReadDepth(depth, this->Local);
+  framebuffer->ReleaseGraphicsResources(window);
+  depth->ReleaseGraphicsResources(window);
 }
 
 //------------------------------------------------------------------------------

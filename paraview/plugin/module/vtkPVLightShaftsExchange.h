@@ -7,11 +7,16 @@
 #ifndef vtkPVLightShaftsExchange_h
 #define vtkPVLightShaftsExchange_h
 
+#include "vtkNew.h" // For the passes held
+
 #include <vector> // For the exchanges' buffers
 
+class vtkCameraPass;
 class vtkLightShaftPass;
 class vtkMultiProcessController;
+class vtkOpaquePass;
 class vtkOpenGLRenderWindow;
+class vtkRenderer;
 
 /**
  * @class   vtkPVLightShaftsExchange
@@ -25,22 +30,30 @@ class vtkOpenGLRenderWindow;
  *   so that every process chooses the same setting for the next frame;
  * - CombineShadowMaps (ShadowMapRenderedEvent): the minimum of the processes' depth maps, so
  *   that every process's map holds every process's occluders;
- * - ShareSceneDepth (SceneDepthReadyEvent): process 0, which holds IceT's composited image, gives
- *   its depth to the others, so that they compute their rows of the in-scatter on the
- *   composited scene;
+ * - ShareSceneDepth (SceneDepthReadyEvent): the minimum of the processes' scene depths, so that
+ *   every process computes its rows of the in-scatter on the composited scene (process 0 holds
+ *   IceT's composited depth only where IceT composites depth, not in order);
  * - GatherInScatter (InScatterPieceEvent): each process's rows (vtkLightShaftGeometry's
  *   ImagePieceRows) gathered into process 0's in-scatter, which it filters and composites.
  */
 class vtkPVLightShaftsExchange
 {
 public:
+  vtkPVLightShaftsExchange();
+  ~vtkPVLightShaftsExchange();
+
   /// ShadowMapReuseEvent: `reuse` (1: this process's map is unchanged) becomes 1 only where
   /// every process's is (no controller: left as it is).
   void AgreeOnReuse(int* reuse, vtkMultiProcessController* controller);
   /// FrameTimedEvent: `seconds` (the shafts' and the frame's) become the slowest process's.
   void AgreeOnTimes(double* seconds, vtkMultiProcessController* controller);
   void CombineShadowMaps(vtkLightShaftPass* pass, vtkMultiProcessController* controller);
-  void ShareSceneDepth(vtkLightShaftPass* pass, vtkMultiProcessController* controller);
+  /// SceneDepthReadyEvent; `opaque` (IceT's ordered compositing): each process's depth is its
+  /// renderer's opaque props' rendered again, in `window` (nullptr: the pass's scene depth).
+  void ShareSceneDepth(vtkLightShaftPass* pass,
+    vtkMultiProcessController* controller,
+    vtkRenderer* opaque,
+    vtkOpenGLRenderWindow* window);
   void GatherInScatter(vtkLightShaftPass* pass,
     vtkMultiProcessController* controller,
     vtkOpenGLRenderWindow* window);
@@ -51,7 +64,17 @@ public:
   double GetBytes() const { return this->Bytes; }
 
 private:
+  vtkPVLightShaftsExchange(const vtkPVLightShaftsExchange&) = delete;
+  void operator=(const vtkPVLightShaftsExchange&) = delete;
+
+  void RenderOpaqueDepth(vtkRenderer* renderer,
+    vtkOpenGLRenderWindow* window,
+    int width,
+    int height);
+
   double Bytes = 0.0;
+  vtkNew<vtkCameraPass> CameraPass;
+  vtkNew<vtkOpaquePass> OpaquePass;
   // The exchanges' host buffers, kept from frame to frame (their capacity reused).
   std::vector<float> Local;
   std::vector<float> Combined;

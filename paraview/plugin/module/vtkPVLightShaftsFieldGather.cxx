@@ -139,7 +139,17 @@ int vtkPVLightShaftsFieldGather::RequestData(vtkInformation*,
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   int whole[6];
   outInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
-  output->SetExtent(whole);
+  this->GatherImage(input, whole, output);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkPVLightShaftsFieldGather::GatherImage(vtkImageData* input,
+  const int whole[6],
+  vtkImageData* output)
+{
+  output->Initialize();
+  output->SetExtent(const_cast<int*>(whole));
   if (input)
   {
     output->SetOrigin(input->GetOrigin());
@@ -164,14 +174,15 @@ int vtkPVLightShaftsFieldGather::RequestData(vtkInformation*,
   }
   if (agreed[0] < 0)
   {
-    return 1; // no process found it: the medium says which array is missing
+    return; // no process found it: the medium says which array is missing
   }
   cells = agreed[1] == 1;
   vtkIdType counts[3];
   Counts(whole, cells, counts);
   if (counts[0] > this->Resolution || counts[1] > this->Resolution || counts[2] > this->Resolution)
   {
-    return this->GatherResampled(input, local ? input : nullptr, output, whole, cells);
+    this->GatherResampled(input, local ? input : nullptr, output, whole, cells);
+    return;
   }
   const vtkIdType samples = counts[0] * counts[1] * counts[2];
   // rho (the first component) as float32, as the pass keeps its samples: every sample from a
@@ -195,7 +206,6 @@ int vtkPVLightShaftsFieldGather::RequestData(vtkInformation*,
                                        ? static_cast<vtkDataSetAttributes*>(output->GetCellData())
                                        : static_cast<vtkDataSetAttributes*>(output->GetPointData());
   attributes->SetScalars(gathered);
-  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -230,7 +240,7 @@ void vtkPVLightShaftsFieldGather::ReduceSlabs(const vtkIdType counts[3],
 // vtkLightShaftDensityField::Resampled makes of the whole image (the grid points whose
 // neighbours it holds, computed as from the whole), and the grid is gathered; the output is
 // the grid, as point data over the image's bounds.
-int vtkPVLightShaftsFieldGather::GatherResampled(vtkImageData* input,
+void vtkPVLightShaftsFieldGather::GatherResampled(vtkImageData* input,
   vtkImageData* piece,
   vtkImageData* output,
   const int whole[6],
@@ -286,7 +296,6 @@ int vtkPVLightShaftsFieldGather::GatherResampled(vtkImageData* input,
     });
   gathered->SetName(!this->ArrayName.empty() ? this->ArrayName.c_str() : "density");
   output->GetPointData()->SetScalars(gathered);
-  return 1;
 }
 
 //------------------------------------------------------------------------------

@@ -61,6 +61,14 @@ public:
   vtkMultiProcessController* GetController();
   ///@}
 
+  /**
+   * The gather itself, collective (every process calls it in the same order): this process's
+   * `piece` (nullptr or empty: none) of an image of extent `whole`, whose array (ArrayName, else
+   * the scalars) is gathered into `output`, the whole image (or its grid, past Resolution). The
+   * output's placement is the piece's (the caller places it where this process has none).
+   */
+  void GatherImage(vtkImageData* piece, const int whole[6], vtkImageData* output);
+
 protected:
   vtkPVLightShaftsFieldGather();
   ~vtkPVLightShaftsFieldGather() override;
@@ -77,7 +85,7 @@ private:
   void ReduceSlabs(const vtkIdType counts[3],
     vtkFloatArray* gathered,
     const std::function<void(float*, const vtkIdType[2])>& fill);
-  int GatherResampled(vtkImageData* input,
+  void GatherResampled(vtkImageData* input,
     vtkImageData* piece,
     vtkImageData* output,
     const int whole[6],

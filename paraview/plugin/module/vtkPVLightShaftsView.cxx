@@ -1,4 +1,5 @@
 #include "vtkPVLightShaftsView.h"
+#include "vtkPVLightShaftsViewInternals.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCallbackCommand.h"
@@ -30,88 +31,6 @@
 #include <algorithm>
 #include <string>
 #include <vector>
-
-class vtkPVLightShaftsView::Internals
-{
-public:
-  vtkNew<vtkLightShaftPass> Shafts;
-  vtkNew<vtkPVImageProcessingChain> Chain;
-  // Under MPI: the MediumDensity source's pieces gathered into its whole image.
-  vtkNew<vtkPVLightShaftsFieldGather> FieldGather;
-  // Under MPI: the shadow maps, the composited depth and the in-scatter's pieces.
-  vtkPVLightShaftsExchange Exchange;
-  // The render view's own tone-mapping pass (private to vtkPVRenderView; see the constructor).
-  vtkSmartPointer<vtkImageProcessingPass> ToneMapping;
-  bool UseToneMapping = false;
-
-  // The additional lights, in the order the Light Inspector added them.
-  std::vector<vtkWeakPointer<vtkLight>> Lights;
-  // ShaftLights: 1-based indices into Lights.
-  std::vector<int> ShaftLights;
-
-  // Sampling as set (the preset, when one is chosen, overrides these in the pass); they start
-  // at the pass's own defaults.
-  int NumberOfSlices = this->Shafts->GetNumberOfSlices();
-  int ShadowMapSize = this->Shafts->GetShadowMapSize();
-  bool AutomaticSliceCount = this->Shafts->GetAutomaticSliceCount();
-  int MaximumNumberOfSlices = this->Shafts->GetMaximumNumberOfSlices();
-  bool Jitter = this->Shafts->GetJitter();
-  int BlurRadius = this->Shafts->GetBlurRadius();
-  int DownsampleFactor = this->Shafts->GetDownsampleFactor();
-  int AccumulationPrecision = this->Shafts->GetAccumulationPrecision();
-  // The MediumDensity property's pipeline output, set aside while a volume is the medium.
-  vtkSmartPointer<vtkAlgorithmOutput> DensityConnection;
-  // A preset may choose the method (the ray march's steps and interleaving) too.
-  int Method = this->Shafts->GetMethod();
-  int NumberOfSteps = this->Shafts->GetNumberOfSteps();
-  int InterleaveSize = this->Shafts->GetInterleaveSize();
-
-  std::string CookieFileName;
-  double ViewTime = 0.0;
-
-  // The renderer's own FXAA was turned off for this render (AboutToRenderOnLocalProcess).
-  bool RestoreRendererFXAA = false;
-  // ExactFinish as set, and whether the view said it is off under MPI.
-  bool ExactFinish = false;
-  bool WarnedExactFinish = false;
-
-  // FitMediumToScene: whether it is on and was handed to the pass, and the coefficients and
-  // exposure as given, with the pass's defaults (a value other than its default is the user's).
-  bool FitMedium = true;
-  bool FitAsked = false;
-  double Scattering[3] = { 0.0, 0.0, 0.0 };
-  double Absorption[3] = { 0.0, 0.0, 0.0 };
-  double Exposure = this->Shafts->GetExposure();
-  double DefaultScattering[3] = { 0.0, 0.0, 0.0 };
-  double DefaultAbsorption[3] = { 0.0, 0.0, 0.0 };
-  double DefaultExposure = this->Shafts->GetExposure();
-
-  Internals()
-  {
-    this->Shafts->GetMedium()->GetScatteringCoefficient(this->DefaultScattering);
-    this->Shafts->GetMedium()->GetAbsorptionCoefficient(this->DefaultAbsorption);
-    std::copy(this->DefaultScattering, this->DefaultScattering + 3, this->Scattering);
-    std::copy(this->DefaultAbsorption, this->DefaultAbsorption + 3, this->Absorption);
-  }
-
-  // The coefficients or the exposure as given (all of them, or the user's only).
-  void GiveMedium(bool usersOnly)
-  {
-    vtkLightShaftMedium* medium = this->Shafts->GetMedium();
-    const bool coefficients =
-      !std::equal(this->Scattering, this->Scattering + 3, this->DefaultScattering) ||
-      !std::equal(this->Absorption, this->Absorption + 3, this->DefaultAbsorption);
-    if (!usersOnly || coefficients)
-    {
-      medium->SetScatteringCoefficient(this->Scattering);
-      medium->SetAbsorptionCoefficient(this->Absorption);
-    }
-    if (!usersOnly || this->Exposure != this->DefaultExposure)
-    {
-      this->Shafts->SetExposure(this->Exposure);
-    }
-  }
-};
 
 vtkStandardNewMacro(vtkPVLightShaftsView);
 
@@ -175,126 +94,6 @@ vtkPVLightShaftsView::vtkPVLightShaftsView()
       }
     });
   this->GetRenderer()->AddObserver(vtkCommand::EndEvent, restoreFXAA);
-}
-
-namespace
-{
-vtkMultiProcessController* DistributedController()
-{
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  return (controller && controller->GetNumberOfProcesses() > 1) ? controller : nullptr;
-}
-}
-
-//------------------------------------------------------------------------------
-void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
-{
-  this->Superclass::AboutToRenderOnLocalProcess(interactive);
-  vtkMultiProcessController* controller = DistributedController();
-  // With its image-processing slot filled, ParaView 5.11 antialiases twice: its FXAA pass runs
-  // around the slot, and the renderer's own FXAA inside the scene's default pass. Keep the
-  // outer one (it sees the final picture, shafts included) and turn the renderer's off for
-  // this render (restored at its end), so the medium off gives a RenderView's picture. On
-  // several processes (IceT composites the image) the outer one does not run (measured: the
-  // pictures lose their antialiasing): the renderer's stays.
-  vtkRenderer* renderer = this->GetRenderer();
-  if (this->SynchronizedRenderers->GetImageProcessingPass() &&
-      this->SynchronizedRenderers->GetUseFXAA() && renderer->GetUseFXAA() && !controller)
-  {
-    renderer->SetUseFXAA(false);
-    this->Impl->RestoreRendererFXAA = true;
-  }
-  this->UpdateMediumVolume();
-  vtkLightShaftPass* shafts = this->Impl->Shafts;
-  // IceT composites the processes' images over a transparent background and blends the
-  // renderer's flat background in after the pass (the renderer's is black while it renders):
-  // the pass paints it where the medium must dim it. A gradient or textured background is left
-  // to IceT.
-  shafts->SetPaintBackground(
-    controller && !renderer->GetGradientBackground() && !renderer->GetTexturedBackground());
-  shafts->SetPaintedBackground(
-    renderer->GetBackground()[0], renderer->GetBackground()[1], renderer->GetBackground()[2]);
-  if (this->Impl->FitMedium && !this->Impl->FitAsked)
-  {
-    // Asked now, after ParaView pushed the properties' defaults; the user's values given
-    // again after the request, so that they win.
-    shafts->FitMediumToSceneOn();
-    this->Impl->GiveMedium(true);
-    this->Impl->FitAsked = true;
-  }
-  // The processes divide the in-scatter's rows (SLICES, RAY_MARCH, ANALYTIC): each computes
-  // its piece on process 0's composited depth, gathered there (Exchange).
-  const bool divide = controller && this->DivideShaftWork;
-  shafts->SetImagePiece(
-    divide ? controller->GetLocalProcessId() : 0, divide ? controller->GetNumberOfProcesses() : 1);
-  this->Impl->Exchange.BeginFrame();
-  // The exact finish integrates on each process's idle threads and completes when they are
-  // done: the processes would not take the same path in the same render.
-  if (controller && this->Impl->ExactFinish && !this->Impl->WarnedExactFinish)
-  {
-    vtkWarningMacro("Exact Finish is not distributed: it is off while the view renders on "
-                    << controller->GetNumberOfProcesses() << " processes.");
-    this->Impl->WarnedExactFinish = true;
-  }
-  shafts->SetExactFinish(this->Impl->ExactFinish && !controller);
-  if (this->DistributedShadowMap && controller && this->GeometryBounds.IsValid())
-  {
-    // GeometryBounds holds the union over the processes (vtkPVRenderView reduces it).
-    double bounds[6];
-    this->GeometryBounds.GetBounds(bounds);
-    shafts->SetShadowCasterBounds(bounds);
-  }
-  else
-  {
-    shafts->UnsetShadowCasterBounds();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkPVLightShaftsView::Exchange(unsigned long event, void* data)
-{
-  vtkMultiProcessController* controller = DistributedController();
-  vtkPVLightShaftsExchange& exchange = this->Impl->Exchange;
-  vtkLightShaftPass* shafts = this->Impl->Shafts;
-  if (event == vtkLightShaftPass::FrameTimedEvent)
-  {
-    exchange.AgreeOnTimes(static_cast<double*>(data), controller);
-  }
-  else if (event == vtkLightShaftPass::ShadowMapReuseEvent)
-  {
-    // Kept only where every process's map is unchanged (then the combined map still holds);
-    // alone, or not combining, a map is as reusable as the pass finds it.
-    exchange.AgreeOnReuse(
-      static_cast<int*>(data), this->DistributedShadowMap ? controller : nullptr);
-  }
-  else if (event == vtkLightShaftPass::ShadowMapRenderedEvent && this->DistributedShadowMap)
-  {
-    exchange.CombineShadowMaps(shafts, controller);
-  }
-  else if (event == vtkLightShaftPass::SceneDepthReadyEvent)
-  {
-    exchange.ShareSceneDepth(shafts, controller);
-  }
-  else if (event == vtkLightShaftPass::InScatterPieceEvent)
-  {
-    exchange.GatherInScatter(
-      shafts, controller, vtkOpenGLRenderWindow::SafeDownCast(this->GetRenderWindow()));
-  }
-}
-
-double vtkPVLightShaftsView::GetLastBytesExchanged()
-{
-  return this->Impl->Exchange.GetBytes();
-}
-
-int vtkPVLightShaftsView::GetLastImagePieceRows()
-{
-  return this->Impl->Shafts->GetLastFrame()->GetImagePieceRows();
-}
-
-double vtkPVLightShaftsView::GetLastInScatterFragments()
-{
-  return static_cast<double>(this->Impl->Shafts->GetLastFrame()->GetInScatterFragments());
 }
 
 //------------------------------------------------------------------------------
@@ -878,23 +677,6 @@ void vtkPVLightShaftsView::SetNoiseVelocity2(double u, double v)
 }
 
 //------------------------------------------------------------------------------
-void vtkPVLightShaftsView::SetMediumDensityConnection(vtkAlgorithmOutput* output)
-{
-  if (DistributedController())
-  {
-    // Each process computes its piece of the source; the pass sees the whole image. (No
-    // source: the gather lets go of the last one.)
-    this->Impl->FieldGather->SetInputConnection(output);
-    output = output ? this->Impl->FieldGather->GetOutputPort() : nullptr;
-  }
-  this->Impl->DensityConnection = output;
-  if (!this->MediumFromVolume)
-  {
-    this->Impl->Shafts->GetMedium()->SetDensityFieldConnection(output);
-  }
-}
-
-//------------------------------------------------------------------------------
 void vtkPVLightShaftsView::SetMediumFromVolume(bool on)
 {
   if (on == this->MediumFromVolume)
@@ -907,39 +689,6 @@ void vtkPVLightShaftsView::SetMediumFromVolume(bool on)
     this->Impl->Shafts->GetMedium()->SetDensityFieldConnection(this->Impl->DensityConnection);
   }
   this->Modified();
-}
-
-//------------------------------------------------------------------------------
-// With MediumFromVolume, the first visible volume of the renderer is the medium (the volume
-// representations' props change as their data and visibility do: chosen at each render).
-void vtkPVLightShaftsView::UpdateMediumVolume()
-{
-  if (!this->MediumFromVolume)
-  {
-    return;
-  }
-  vtkVolume* chosen = nullptr;
-  vtkCollectionSimpleIterator it;
-  vtkPropCollection* props = this->GetRenderer()->GetViewProps();
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    auto* volume = vtkVolume::SafeDownCast(prop);
-    if (volume && volume->GetVisibility())
-    {
-      chosen = volume;
-      break;
-    }
-  }
-  vtkLightShaftMedium* medium = this->Impl->Shafts->GetMedium();
-  if (chosen)
-  {
-    medium->SetDensityVolume(chosen);
-  }
-  else if (medium->GetDensityVolume())
-  {
-    medium->SetDensityFieldConnection(nullptr); // (no volume: the homogeneous medium)
-  }
 }
 
 //------------------------------------------------------------------------------

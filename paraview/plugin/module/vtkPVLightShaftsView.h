@@ -31,6 +31,7 @@
 class vtkAlgorithmOutput;
 class vtkLight;
 class vtkLightShaftPass;
+class vtkMultiProcessController;
 
 class VTKLIGHTSHAFTS_EXPORT vtkPVLightShaftsView : public vtkPVRenderView
 {
@@ -346,7 +347,7 @@ protected:
   // is unchanged), ShadowMapRenderedEvent (the processes' maps combined), SceneDepthReadyEvent
   // (process 0's depth given to all), InScatterPieceEvent (the pieces gathered on process 0).
   void Exchange(unsigned long event, void* data);
-  void UpdateMediumVolume();
+  void UpdateVolumes(vtkMultiProcessController* controller);
 
   bool DistributedShadowMap = true;
   bool DivideShaftWork = true;
