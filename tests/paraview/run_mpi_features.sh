@@ -4,20 +4,39 @@
 # serial pictures (a mean difference of at most 0.2 levels, at most 0.3% of
 # the pixels off by more than 4 levels); a frame budget over moving frames completes (the
 # processes choose the same settings); Exact Finish is off under MPI with one warning per
-# process; selections select what a plain RenderView does; no other error or warning.
+# process; selections select what a plain RenderView does; a state saved serially loads under
+# MPI as saved, with the serial picture; no other error or warning.
 # Usage: run_mpi_features.sh OUTPUT_DIR   (PYTHONPATH and the plugin from the environment)
 set -u
 out="$1"
 here="$(cd "$(dirname "$0")" && pwd)"
-rm -rf "$out/serial" "$out/np2"
+rm -rf "$out/serial" "$out/np2" "$out"/np2-warnings.log.*
 mkdir -p "$out"
 pvbatch "$here/mpi_features.py" "$out/serial" > "$out/serial.log" 2>&1
 mpirun --allow-run-as-root --oversubscribe -np 2 -x PYTHONPATH \
   -x LIGHTSHAFTS_PARAVIEW_PLUGIN_LIST -x LIGHTSHAFTS_PARAVIEW_PLUGIN -x DISPLAY \
-  pvbatch "$here/mpi_features.py" "$out/np2" > "$out/np2.log" 2>&1
+  pvbatch -l "$out/np2-warnings.log,WARNING" "$here/mpi_features.py" "$out/np2" \
+  > "$out/np2.log" 2>&1
+# A state saved by a serial pvbatch and loaded by `mpirun -np 2 pvbatch --symmetric`
+# (tests/paraview/test_state.py): on each process every property as saved and the serial
+# picture.
+rm -rf "$out/state" "$out/state-np2"
+pvbatch "$here/test_state.py" save "$out/state" > "$out/state-save.log" 2>&1
+timeout 240 mpirun --allow-run-as-root --oversubscribe -np 2 -x PYTHONPATH \
+  -x LIGHTSHAFTS_PARAVIEW_PLUGIN_LIST -x LIGHTSHAFTS_PARAVIEW_PLUGIN -x DISPLAY \
+  pvbatch --symmetric "$here/test_state.py" load "$out/state/state.pvsm" "$out/state/state.png" \
+  "$out/state-np2" > "$out/state-np2.log" 2>&1
 status=0
-for run in serial np2; do
-  if [ ! -f "$out/$run/results.json" ]; then
+loaded=$(grep -c "properties as saved; picture against" "$out/state-np2.log")
+if [ "$loaded" != 2 ] || grep -q "^FAIL" "$out/state-np2.log"; then
+  cat "$out/state-save.log" "$out/state-np2.log"
+  echo "FAIL: the state did not load as saved on both processes ($loaded of 2)"
+  status=1
+else
+  grep "properties as saved" "$out/state-np2.log" | head -1
+fi
+for run in serial np2 state-save state-np2; do
+  if [ "${run#state}" = "$run" ] && [ ! -f "$out/$run/results.json" ]; then
     cat "$out/$run.log"
     echo "FAIL: no results from the $run run"
     exit 1
@@ -28,8 +47,10 @@ for run in serial np2; do
     status=1
   fi
 done
-warnings=$(grep -c "Exact Finish is not distributed" "$out/np2.log")
-if [ "$warnings" != 2 ]; then
+# (Counted in each process's own log, ParaView's -l: mpirun interleaves the processes' output,
+# a line of one within a line of the other.)
+warnings=$(cat "$out"/np2-warnings.log.* | grep -c "Exact Finish is not distributed")
+if [ "$warnings" != 2 ] || [ "$(ls "$out"/np2-warnings.log.* | wc -l)" != 2 ]; then
   echo "FAIL: Exact Finish under MPI warned $warnings times (once per process expected)"
   status=1
 fi

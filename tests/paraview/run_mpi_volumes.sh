@@ -7,10 +7,12 @@
 #   split across the processes (checked: two processes or more hold part of it, none all);
 # - for SLICES, RAY_MARCH and EPIPOLAR at np 2 and 4: the picture with shafts within 0.5% of the
 #   serial in-scatter (relative RMS: |shafts(np) - shafts(serial)| over |in-scatter(serial)|,
-#   the in-scatter being the picture less the one in an empty medium). The in-scatter measured
-#   on each run alone (its own empty-medium picture subtracted) is printed too: ParaView's own
-#   picture of a volume split over 4 processes differs from serial's without the shafts (up to
-#   15 levels on the volume's edges), and that difference is not the shafts'.
+#   the in-scatter being the picture less the one in an empty medium), over the pixels where
+#   ParaView's own picture (the empty medium's) is serial's within 2 levels: it is not, on at
+#   most 2% of them, where ParaView draws a split volume's edges (up to 15 levels at np 4) or,
+#   on ParaView 5.13, a seam between the floor's pieces under the panes' ordered compositing
+#   (up to 122 levels), differences that are not the shafts'. The in-scatter measured on each
+#   run alone (its own empty-medium picture subtracted), over all pixels, is printed too.
 # - no VTK error or warning in any run.
 # Usage: run_mpi_volumes.sh OUTPUT_DIR   (PYTHONPATH and the plugin from the environment)
 set -u
@@ -64,18 +66,26 @@ for scene in ("volume", "medium", "panes"):
                                 f"{whole})")
     for method in ("slices", "raymarch", "epipolar"):
         in_scatter = picture(scene, 1, method) - picture(scene, 1, "plain")
-        norm = np.sqrt(np.mean(in_scatter ** 2))
         for np_ in (2, 4):
+            # Where ParaView's own picture (the empty medium's) differs from serial's, the
+            # difference is not the shafts': those pixels are left out, and counted.
+            plain = np.abs(picture(scene, np_, "plain") - picture(scene, 1, "plain")).max(axis=-1)
+            kept = plain <= 2.5
+            norm = np.sqrt(np.mean(in_scatter[kept] ** 2))
             error = np.sqrt(np.mean((picture(scene, np_, method) - picture(scene, 1, method))
-                                    ** 2)) / norm
+                                    [kept] ** 2)) / norm
             own = picture(scene, np_, method) - picture(scene, np_, "plain")
-            alone = np.sqrt(np.mean((own - in_scatter) ** 2)) / norm
-            plain = np.abs(picture(scene, np_, "plain") - picture(scene, 1, "plain")).max()
-            print(f"{scene}, {method}, np {np_}: {100 * error:.3f}% of the serial in-scatter "
-                  f"(each run's own in-scatter: {100 * alone:.3f}%; the empty-medium picture "
-                  f"at most {plain:.0f} levels off serial's)")
+            alone = np.sqrt(np.mean((own - in_scatter) ** 2)) / np.sqrt(np.mean(in_scatter ** 2))
+            left = 1.0 - kept.mean()
+            print(f"{scene}, {method}, np {np_}: {100 * error:.3f}% of the serial in-scatter, "
+                  f"{100 * left:.2f}% of the pixels left out (ParaView's empty-medium picture "
+                  f"there up to {plain.max():.0f} levels off serial's; each run's own in-scatter, "
+                  f"all pixels: {100 * alone:.3f}%)")
             if not error <= 0.005:
                 failures.append(f"{scene}, {method} at np {np_}: {100 * error:.2f}% off serial")
+            if left > 0.02:
+                failures.append(f"{scene} at np {np_}: ParaView's own picture differs from "
+                                f"serial's on {100 * left:.1f}% of the pixels")
 for failure in failures:
     print("FAIL:", failure)
 sys.exit(1 if failures else 0)
