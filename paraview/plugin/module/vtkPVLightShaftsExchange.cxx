@@ -122,25 +122,39 @@ void vtkPVLightShaftsExchange::ShareSceneDepth(vtkLightShaftPass* pass,
   {
     return;
   }
-  // The nearest surface of any process. Where IceT composites depth, process 0 holds its
-  // composited depth (the minimum) and the others their own; where it composites in order
-  // (volumes, translucent surfaces) it gives back colour only and leaves process 0 no depth of
-  // its own: each process then renders its opaque props' depth again.
-  if (opaque && window)
+  std::vector<float>& values = this->Local;
+  if (!opaque || !window)
   {
-    this->RenderOpaqueDepth(opaque, window, depth->GetWidth(), depth->GetHeight());
+    // IceT composites depth on process 0 only: process 0 gives it to the others.
+    const bool root = controller->GetLocalProcessId() == 0;
+    if (root)
+    {
+      ReadDepth(depth, values);
+    }
+    else
+    {
+      values.resize(static_cast<size_t>(depth->GetWidth()) * depth->GetHeight());
+    }
+    controller->Broadcast(values.data(), static_cast<vtkIdType>(values.size()), 0);
+    if (!root)
+    {
+      WriteDepth(depth, values);
+    }
+    this->Bytes +=
+      sizeof(float) * values.size() * (root ? controller->GetNumberOfProcesses() - 1 : 1);
+    return;
   }
-  else
-  {
-    ReadDepth(depth, this->Local);
-  }
-  this->Combined.resize(this->Local.size());
-  controller->AllReduce(this->Local.data(),
+  // IceT composites in order (volumes, translucent surfaces): colour only, and process 0 is
+  // left no depth of its own. Each process renders its opaque props' depth again; the nearest
+  // surface of any process is the minimum.
+  this->RenderOpaqueDepth(opaque, window, depth->GetWidth(), depth->GetHeight());
+  this->Combined.resize(values.size());
+  controller->AllReduce(values.data(),
     this->Combined.data(),
-    static_cast<vtkIdType>(this->Local.size()),
+    static_cast<vtkIdType>(values.size()),
     vtkCommunicator::MIN_OP);
   WriteDepth(depth, this->Combined);
-  this->Bytes += 2.0 * sizeof(float) * this->Local.size();
+  this->Bytes += 2.0 * sizeof(float) * values.size();
 }
 
 //------------------------------------------------------------------------------

@@ -30,9 +30,10 @@ class vtkRenderer;
  *   so that every process chooses the same setting for the next frame;
  * - CombineShadowMaps (ShadowMapRenderedEvent): the minimum of the processes' depth maps, so
  *   that every process's map holds every process's occluders;
- * - ShareSceneDepth (SceneDepthReadyEvent): the minimum of the processes' scene depths, so that
- *   every process computes its rows of the in-scatter on the composited scene (process 0 holds
- *   IceT's composited depth only where IceT composites depth, not in order);
+ * - ShareSceneDepth (SceneDepthReadyEvent): process 0, which holds IceT's composited image and
+ *   depth, gives its depth to the others, so that they compute their rows of the in-scatter on
+ *   the composited scene; where IceT composites in order (colour only) every process renders its
+ *   opaque props' depth again, and the minimum over the processes is every process's;
  * - GatherInScatter (InScatterPieceEvent): each process's rows (vtkLightShaftGeometry's
  *   ImagePieceRows) gathered into process 0's in-scatter, which it filters and composites.
  */
