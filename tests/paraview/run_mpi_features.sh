@@ -5,7 +5,8 @@
 # the pixels off by more than 4 levels); a frame budget over moving frames completes (the
 # processes choose the same settings); Exact Finish is off under MPI with one warning per
 # process; selections select what a plain RenderView does; a state saved serially loads under
-# MPI as saved, with the serial picture; no other error or warning.
+# MPI as saved, with the serial picture (ParaView 5.11 and 5.13; 6.1 loads no state under MPI,
+# its own views' either); no other error or warning.
 # Usage: run_mpi_features.sh OUTPUT_DIR   (PYTHONPATH and the plugin from the environment)
 set -u
 out="$1"
@@ -20,22 +21,32 @@ mpirun --allow-run-as-root --oversubscribe -np 2 -x PYTHONPATH \
 # A state saved by a serial pvbatch and loaded by `mpirun -np 2 pvbatch --symmetric`
 # (tests/paraview/test_state.py): on each process every property as saved and the serial
 # picture.
-rm -rf "$out/state" "$out/state-np2"
-pvbatch "$here/test_state.py" save "$out/state" > "$out/state-save.log" 2>&1
-timeout 240 mpirun --allow-run-as-root --oversubscribe -np 2 -x PYTHONPATH \
-  -x LIGHTSHAFTS_PARAVIEW_PLUGIN_LIST -x LIGHTSHAFTS_PARAVIEW_PLUGIN -x DISPLAY \
-  pvbatch --symmetric "$here/test_state.py" load "$out/state/state.pvsm" "$out/state/state.png" \
-  "$out/state-np2" > "$out/state-np2.log" 2>&1
+# ParaView 6.1 loads no state under MPI, its own views' either (measured with a RenderView and
+# a sphere, no plugin: with --symmetric the second process fails to read the file, without it
+# the run hangs), so there the step is skipped.
+rm -rf "$out/state" "$out/state-np2" "$out/state-save.log" "$out/state-np2.log"
 status=0
-loaded=$(grep -c "properties as saved; picture against" "$out/state-np2.log")
-if [ "$loaded" != 2 ] || grep -q "^FAIL" "$out/state-np2.log"; then
-  cat "$out/state-save.log" "$out/state-np2.log"
-  echo "FAIL: the state did not load as saved on both processes ($loaded of 2)"
-  status=1
+runs="serial np2"
+paraview=$(pvbatch --version 2>&1 | grep -o -E "[0-9]+\.[0-9]+\.[0-9]+" | head -1)
+if [ "${paraview%%.*}" -ge 6 ]; then
+  echo "SKIPPED: a .pvsm state under MPI (ParaView $paraview loads none under mpirun)"
 else
-  grep "properties as saved" "$out/state-np2.log" | head -1
+  runs="$runs state-save state-np2"
+  pvbatch "$here/test_state.py" save "$out/state" > "$out/state-save.log" 2>&1
+  timeout 240 mpirun --allow-run-as-root --oversubscribe -np 2 -x PYTHONPATH \
+    -x LIGHTSHAFTS_PARAVIEW_PLUGIN_LIST -x LIGHTSHAFTS_PARAVIEW_PLUGIN -x DISPLAY \
+    pvbatch --symmetric "$here/test_state.py" load "$out/state/state.pvsm" \
+    "$out/state/state.png" "$out/state-np2" > "$out/state-np2.log" 2>&1
+  loaded=$(grep -c "properties as saved; picture against" "$out/state-np2.log")
+  if [ "$loaded" != 2 ] || grep -q "^FAIL" "$out/state-np2.log"; then
+    cat "$out/state-save.log" "$out/state-np2.log"
+    echo "FAIL: the state did not load as saved on both processes ($loaded of 2)"
+    status=1
+  else
+    grep "properties as saved" "$out/state-np2.log" | head -1
+  fi
 fi
-for run in serial np2 state-save state-np2; do
+for run in $runs; do
   if [ "${run#state}" = "$run" ] && [ ! -f "$out/$run/results.json" ]; then
     cat "$out/$run.log"
     echo "FAIL: no results from the $run run"

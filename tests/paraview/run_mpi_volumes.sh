@@ -33,7 +33,11 @@ for scene in volume medium panes; do
       echo "FAIL: no pictures from the $scene run at np $np"
       exit 1
     fi
-    if grep -E "ERROR: In |Warning: In |Generic Warning|ERR\||WARN\|" "$base.log"; then
+    # (Mesa's shader compiler, with a cold shader cache, warns of two variables of VTK's own
+    # shaders that ParaView 6.1 compiles under MPI for a volume or a translucent surface: a plain
+    # RenderView prints the same. Nothing else is let through.)
+    if grep -E "ERROR: In |Warning: In |Generic Warning|ERR\||WARN\|" "$base.log" |
+      grep -v -E "SOURCE_SHADER_COMPILER.*warning: \`(fragOutput0|g_dataPos)' used uninitialized"; then
       echo "FAIL: VTK printed errors or warnings in the $scene run at np $np"
       status=1
     fi
