@@ -64,10 +64,17 @@ light.ConeAngle = 24.0
 
 view.ScatteringCoefficient = [0.08, 0.08, 0.08]
 view.ShaftExposure = 12.0
-if args.as_medium:
+
+
+def volume_as_medium(view):
+    """The view's first volume representation as the medium (--as-medium)."""
     view.MediumFromVolume = 1
     view.ScatteringCoefficient = [1.5, 1.4, 1.3]    # per unit of the volume's opacity
     view.MediumBackgroundDensity = 0.05
+
+
+if args.as_medium:
+    volume_as_medium(view)
 Render(view)  # the first render resets the camera to the data: place it afterwards
 view.CameraPosition = [0.0, 3.0, 14.0]
 view.CameraFocalPoint = [0.0, 2.5, 0.0]

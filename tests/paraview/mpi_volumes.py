@@ -1,18 +1,19 @@
-"""pvbatch --symmetric script (serial or under mpirun): a scene whose volume or translucent
-surfaces ParaView splits across the processes, rendered with the shafts by SLICES, RAY_MARCH and
-EPIPOLAR and without them, into OUTPUT-<method>.png and OUTPUT-plain.png (400x300). Each process
-writes OUTPUT.rank<r>.json: the cells or points of the split data it holds.
+"""pvbatch --symmetric script (serial or under mpirun): scenes whose volume or translucent
+surfaces ParaView splits across the processes, each rendered with the shafts by SLICES,
+RAY_MARCH and EPIPOLAR and in an empty medium, into OUTPUT/<scene>-<label>-<method>.png and
+OUTPUT/<scene>-<label>-plain.png (400x300). Each process writes
+OUTPUT/<scene>-<label>.rank<r>.json: the cells or points of the split data it holds.
 
-    --scene volume   examples/paraview/volume_in_beam.py (its volume dims and shadows the beam,
-                     its translucent sphere dims what is seen through it)
-    --scene medium   the same with --as-medium (the volume is the medium)
-    --scene panes    translucent panes split across the processes: a red one across the beam
-                     (the light leg: it tints the shafts below it) and a grey one between the
-                     camera and the beam (the camera leg: it dims the shafts behind it)
+    volume   examples/paraview/volume_in_beam.py (its volume dims and shadows the beam, its
+             translucent sphere dims what is seen through it)
+    medium   the same view after the example's volume_as_medium (its --as-medium: the volume is
+             the medium)
+    panes    translucent panes split across the processes: a red one across the beam (the light
+             leg: it tints the shafts below it) and a grey one between the camera and the beam
+             (the camera leg: it dims the shafts behind it)
 
-Usage: pvbatch --symmetric mpi_volumes.py OUTPUT --scene volume|medium|panes"""
+Usage: pvbatch --symmetric mpi_volumes.py OUTPUT LABEL"""
 
-import argparse
 import json
 import os
 import runpy
@@ -25,12 +26,10 @@ import lightshafts_pvscene as scene  # noqa: E402
 SIZE = [400, 300]
 METHODS = (("slices", 0), ("raymarch", 1), ("epipolar", 5))
 
-
 def panes():
     """Two translucent panes, each split across the processes (RedistributeDataSet), in a
     spotlight's beam over a floor; returns the view and the panes' sources."""
     from paraview import simple
-    scene.load_plugin()
     view = simple.CreateView("LightShaftsRenderView")
     view.ViewSize = SIZE
     view.OrientationAxesVisibility = 0
@@ -68,43 +67,51 @@ def panes():
     return view, [red, grey]
 
 
-def main():
-    from paraview import servermanager, simple
-    parser = argparse.ArgumentParser()
-    parser.add_argument("output")
-    parser.add_argument("--scene", choices=("volume", "medium", "panes"), required=True)
-    args = parser.parse_args()
-    if args.scene == "panes":
-        view, split = panes()
-    else:
-        sys.argv = [sys.argv[0], "-o", args.output + "-example.png"]
-        sys.argv += ["--as-medium"] if args.scene == "medium" else []
-        # The example's own 800x600 screenshot is left out (the pictures compared follow).
-        save = simple.SaveScreenshot
-        simple.SaveScreenshot = lambda *arguments, **keywords: True
-        runpy.run_path(os.path.join(HERE, "..", "..", "examples", "paraview",
-                                    "volume_in_beam.py"))
-        simple.SaveScreenshot = save
-        view = simple.GetActiveView()
-        split = [simple.FindSource("ResampleToImage1"), simple.FindSource("Sphere1")]
-    # The split data this process holds (its part of each source's cells, or points).
-    held = []
-    for source in split:
+def held(sources):
+    """The cells (or points) of each split source this process holds."""
+    counts = []
+    for source in sources:
         data = source.GetClientSideObject().GetOutputDataObject(0)
-        held.append(int(data.GetNumberOfCells() or data.GetNumberOfPoints()))
+        counts.append(int(data.GetNumberOfCells() or data.GetNumberOfPoints()))
+    return counts
+
+
+def render(view, base, sources):
+    """One scene's pictures: each method's, then the empty medium's (its picture is the view's
+    delegate's, bit for bit; with the shafts off ParaView antialiases a volume's edges otherwise,
+    docs/known-issues.md); and the split data this process holds."""
+    from paraview import servermanager, simple
     for name, method in METHODS:
         view.ShaftMethod = method
-        simple.SaveScreenshot(f"{args.output}-{name}.png", view, ImageResolution=SIZE)
-    # Without shafts: the same view in an empty medium, whose picture is its delegate's, bit for
-    # bit (with the shafts off, ParaView antialiases a volume's edges otherwise: up to 15 levels
-    # apart at np 4, docs/known-issues.md).
+        simple.SaveScreenshot(f"{base}-{name}.png", view, ImageResolution=SIZE)
+    scattering = list(view.ScatteringCoefficient)
     view.ScatteringCoefficient = [0.0, 0.0, 0.0]
     view.AbsorptionCoefficient = [0.0, 0.0, 0.0]
-    simple.SaveScreenshot(f"{args.output}-plain.png", view, ImageResolution=SIZE)
+    simple.SaveScreenshot(f"{base}-plain.png", view, ImageResolution=SIZE)
+    view.ScatteringCoefficient = scattering
+    rank = servermanager.vtkProcessModule.GetProcessModule().GetPartitionId()
+    with open(f"{base}.rank{rank}.json", "w") as out:
+        json.dump({"rank": rank, "held": held(sources)}, out)
+
+
+def main():
+    from paraview import servermanager, simple
+    output, label = sys.argv[1], sys.argv[2]
+    # The example, without its own 800x600 screenshot (the pictures compared follow).
+    sys.argv = [sys.argv[0], "-o", os.path.join(output, "example.png")]
+    save = simple.SaveScreenshot
+    simple.SaveScreenshot = lambda *arguments, **keywords: True
+    example = runpy.run_path(os.path.join(HERE, "..", "..", "examples", "paraview",
+                                          "volume_in_beam.py"))
+    simple.SaveScreenshot = save
+    view = simple.GetActiveView()
+    split = [simple.FindSource("ResampleToImage1"), simple.FindSource("Sphere1")]
+    render(view, os.path.join(output, f"volume-{label}"), split)
+    example["volume_as_medium"](view)
+    render(view, os.path.join(output, f"medium-{label}"), split)
+    view, split = panes()
+    render(view, os.path.join(output, f"panes-{label}"), split)
     module = servermanager.vtkProcessModule.GetProcessModule()
-    rank = module.GetPartitionId()
-    with open(f"{args.output}.rank{rank}.json", "w") as out:
-        json.dump({"rank": rank, "held": held}, out)
     module.GetGlobalController().Barrier()  # every process writes before any leaves (os._exit)
     return 0
 

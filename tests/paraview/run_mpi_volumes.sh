@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Distributed volumes and translucent surfaces (tests/paraview/mpi_volumes.py) under
-# `mpirun -np N pvbatch --symmetric` against a serial pvbatch, at 400x300:
+# Distributed volumes and translucent surfaces (tests/paraview/mpi_volumes.py: the three scenes in
+# one run) under `mpirun -np N pvbatch --symmetric` against a serial pvbatch, at 400x300:
 # - examples/paraview/volume_in_beam.py (its volume dims and shadows the beam, its translucent
-#   sphere dims what is seen through it), the same with --as-medium (the volume is the medium),
+#   sphere dims what is seen through it), the same as with --as-medium (the volume is the medium),
 #   and two translucent panes (one across the beam, one between the camera and the beam), each
 #   split across the processes (checked: two processes or more hold part of it, none all);
 # - for SLICES, RAY_MARCH and EPIPOLAR at np 2 and 4: the picture with shafts within 0.5% of the
@@ -20,28 +20,26 @@ out="$1"
 here="$(cd "$(dirname "$0")" && pwd)"
 mkdir -p "$out"
 status=0
-for scene in volume medium panes; do
-  for np in 1 2 4; do
-    base="$out/$scene-np$np"
-    rm -f "$base"*.png "$base".rank*.json
-    # (pvbatch ends with os._exit, so mpirun's status is not the test's: the files are.)
-    mpirun --allow-run-as-root --oversubscribe -np "$np" -x PYTHONPATH \
-      -x LIGHTSHAFTS_PARAVIEW_PLUGIN_LIST -x LIGHTSHAFTS_PARAVIEW_PLUGIN -x DISPLAY \
-      pvbatch --symmetric "$here/mpi_volumes.py" "$base" --scene "$scene" > "$base.log" 2>&1
-    if [ ! -f "$base-plain.png" ] || [ ! -f "$base.rank$((np - 1)).json" ]; then
-      cat "$base.log"
-      echo "FAIL: no pictures from the $scene run at np $np"
-      exit 1
-    fi
-    # (Mesa's shader compiler, with a cold shader cache, warns of two variables of VTK's own
-    # shaders that ParaView 6.1 compiles under MPI for a volume or a translucent surface: a plain
-    # RenderView prints the same. Nothing else is let through.)
-    if grep -E "ERROR: In |Warning: In |Generic Warning|ERR\||WARN\|" "$base.log" |
-      grep -v -E "SOURCE_SHADER_COMPILER.*warning: \`(fragOutput0|g_dataPos)' used uninitialized"; then
-      echo "FAIL: VTK printed errors or warnings in the $scene run at np $np"
-      status=1
-    fi
-  done
+for np in 1 2 4; do
+  log="$out/np$np.log"
+  rm -f "$out"/*-np"$np"-*.png "$out"/*-np"$np".rank*.json
+  # (pvbatch ends with os._exit, so mpirun's status is not the test's: the files are.)
+  mpirun --allow-run-as-root --oversubscribe -np "$np" -x PYTHONPATH \
+    -x LIGHTSHAFTS_PARAVIEW_PLUGIN_LIST -x LIGHTSHAFTS_PARAVIEW_PLUGIN -x DISPLAY \
+    pvbatch --symmetric "$here/mpi_volumes.py" "$out" "np$np" > "$log" 2>&1
+  if [ ! -f "$out/panes-np$np-plain.png" ] || [ ! -f "$out/panes-np$np.rank$((np - 1)).json" ]; then
+    cat "$log"
+    echo "FAIL: no pictures from the run at np $np"
+    exit 1
+  fi
+  # (Mesa's shader compiler, with a cold shader cache, warns of two variables of VTK's own
+  # shaders that ParaView 6.1 compiles under MPI for a volume or a translucent surface: a plain
+  # RenderView prints the same. Nothing else is let through.)
+  if grep -E "ERROR: In |Warning: In |Generic Warning|ERR\||WARN\|" "$log" |
+    grep -v -E "SOURCE_SHADER_COMPILER.*warning: \`(fragOutput0|g_dataPos)' used uninitialized"; then
+    echo "FAIL: VTK printed errors or warnings in the run at np $np"
+    status=1
+  fi
 done
 /usr/bin/python3 - "$out" <<'PY' || status=1
 import json
