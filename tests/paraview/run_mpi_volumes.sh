@@ -9,9 +9,8 @@
 #   serial in-scatter (relative RMS: |shafts(np) - shafts(serial)| over |in-scatter(serial)|,
 #   the in-scatter being the picture less the one in an empty medium), over the pixels where
 #   ParaView's own picture (the empty medium's) is serial's within 2 levels: it is not, on at
-#   most 2% of them, where ParaView draws a split volume's edges (up to 15 levels at np 4) or,
-#   on ParaView 5.13, a seam between the floor's pieces under the panes' ordered compositing
-#   (up to 122 levels), differences that are not the shafts'. The in-scatter measured on each
+#   most 2% of them, where ParaView draws a split volume's edges (up to 15 levels at np 4, a
+#   plain RenderView too), a difference that is not the shafts'. The in-scatter measured on each
 #   run alone (its own empty-medium picture subtracted), over all pixels, is printed too.
 # - no VTK error or warning in any run.
 # Usage: run_mpi_volumes.sh OUTPUT_DIR   (PYTHONPATH and the plugin from the environment)
