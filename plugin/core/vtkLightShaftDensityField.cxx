@@ -483,6 +483,29 @@ void vtkLightShaftDensityField::ResamplePiece(int maximum,
   }
 }
 
+void vtkLightShaftDensityField::ResampledPlaneSamples(int maximum,
+  const int wholePoints[3],
+  bool cellCentred,
+  int plane,
+  int range[2])
+{
+  int wholeSamples[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    wholeSamples[k] = cellCentred ? std::max(wholePoints[k] - 1, 1) : wholePoints[k];
+  }
+  int grid[3];
+  double step[3];
+  ResampledGrid(wholePoints, wholeSamples, maximum, grid, step);
+  // As ResamplePiece: the plane's neighbours along z (x and y at the grid's first point).
+  const double p[3] = { 0.0, 0.0, std::min(plane * step[2], wholePoints[2] - 1.0) };
+  int base[3] = { 0, 0, 0 };
+  double fraction[3];
+  Neighbours(p, wholePoints, wholeSamples, cellCentred, base, fraction);
+  range[0] = base[2];
+  range[1] = base[2] + (wholeSamples[2] > 1 ? 1 : 0);
+}
+
 void vtkLightShaftDensityField::Corners(double corners[8][3]) const
 {
   for (int c = 0; c < 8; ++c)

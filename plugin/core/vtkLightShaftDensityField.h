@@ -132,6 +132,17 @@ public:
     float* slab) const;
 
   /**
+   * The samples along z of an image of `wholePoints` points (cell data: `cellCentred`) that
+   * Resampled(maximum)'s grid plane `plane` reads: [range[0], range[1]], so that a piece holding
+   * those planes of samples computes the grid plane with ResamplePiece.
+   */
+  static void ResampledPlaneSamples(int maximum,
+    const int wholePoints[3],
+    bool cellCentred,
+    int plane,
+    int range[2]);
+
+  /**
    * World coordinates to the coordinates of a 3D texture of the samples (texel centres at the
    * samples), and the field's bounds there (the box of its points; outside it rho is 0).
    */

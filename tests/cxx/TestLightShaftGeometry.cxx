@@ -918,6 +918,25 @@ void TestResamplePiece()
     Check(gathered == whole.GetValues(),
       std::string("resampled pieces: the whole image's Resampled, to the bit (") +
         (cells ? "cells" : "points") + ")");
+    // Each grid plane from only the samples ResampledPlaneSamples names (the gather reads a
+    // piece a few planes at a time): the same plane, to the bit.
+    const std::size_t planeSize = std::size_t(grid[0]) * grid[1];
+    bool same = true;
+    for (int plane = 0; plane < grid[2]; ++plane)
+    {
+      int range[2];
+      vtkLightShaftDensityField::ResampledPlaneSamples(maximum, dims, cells, plane, range);
+      const vtkLightShaftDensityField part = image(range[0], range[1] + (cells ? 1 : 0));
+      std::vector<float> slab(planeSize, -std::numeric_limits<float>::max());
+      const int offset[3] = { 0, 0, range[0] };
+      const int one[2] = { plane, plane + 1 };
+      part.ResamplePiece(maximum, offset, dims, one, slab.data());
+      same =
+        same && std::equal(slab.begin(), slab.end(), whole.GetValues().begin() + plane * planeSize);
+    }
+    Check(same,
+      std::string("resampled planes: each from the samples it reads, to the bit (") +
+        (cells ? "cells" : "points") + ")");
   }
 }
 

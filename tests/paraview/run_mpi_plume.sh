@@ -12,8 +12,9 @@
 # - the plume split, not copied: its points summed over the processes at most 1.2 times its
 #   whole image's (each process computes its piece);
 # - the large plume's memory split: each process's peak above the small plume's run at most
-#   0.75 of the serial run's (measured 0.51: its piece, a quarter of the plume, and the 128³
-#   grid; 0.77 before the gather resampled the pieces and reduced a slab at a time).
+#   0.5 of the serial run's (measured 0.42: its piece, a quarter of the plume, and the 128³
+#   grid; 0.52 while the gather read its piece whole as float32, 0.77 before it resampled the
+#   pieces and reduced a slab at a time).
 # Usage: run_mpi_plume.sh OUTPUT_DIR   (PYTHONPATH and the plugin from the environment)
 set -u
 out="$1"
@@ -107,7 +108,7 @@ split = [a - b for a, b in zip(peaks("large", 4), peaks("scattering", 4))]
 print(f"the large plume's memory: serial {serial / 2**20:.0f} MiB, each of 4 processes "
       + ", ".join(f"{s / 2**20:.0f}" for s in split)
       + f" MiB (at most {max(split) / serial:.2f} of serial)")
-if max(split) > 0.75 * serial:
+if max(split) > 0.5 * serial:
     failures.append("the large plume's memory is not split among the processes")
 for failure in failures:
     print("FAIL:", failure)

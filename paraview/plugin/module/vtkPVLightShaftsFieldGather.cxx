@@ -26,8 +26,8 @@ vtkStandardNewMacro(vtkPVLightShaftsFieldGather);
 
 namespace
 {
-// The samples reduced at a time (whole planes; 16 MiB of float32).
-constexpr vtkIdType SlabSamples = vtkIdType(1) << 22;
+// The samples reduced at a time (whole planes; 4 MiB of float32).
+constexpr vtkIdType SlabSamples = vtkIdType(1) << 20;
 
 // Samples along each axis of an extent: points, or cells (at least one along a flat axis).
 void Counts(const int extent[6], bool cells, vtkIdType counts[3])
@@ -72,6 +72,60 @@ void Place(vtkDataArray* piece,
       }
     }
   }
+}
+
+// Grid plane `plane` of vtkLightShaftDensityField::Resampled(resolution) of the whole image
+// (extent `whole`, `points` points per axis) from `piece`'s samples of `array` (the planes
+// along z that the grid plane reads, copied), into `slab` where the piece holds them.
+void ResamplePlane(vtkImageData* piece,
+  vtkDataArray* array,
+  bool cells,
+  const int whole[6],
+  const int points[3],
+  int resolution,
+  int plane,
+  float* slab)
+{
+  int needed[2];
+  vtkLightShaftDensityField::ResampledPlaneSamples(resolution, points, cells, plane, needed);
+  const int* extent = piece->GetExtent();
+  vtkIdType pieceCounts[3];
+  Counts(extent, cells, pieceCounts);
+  const int first = extent[4] - whole[4]; // the piece's first sample along z, in the whole's
+  const int from = std::max(needed[0], first);
+  const int to = std::min(needed[1], first + static_cast<int>(pieceCounts[2]) - 1);
+  if (from > to)
+  {
+    return;
+  }
+  // Those planes of the piece as an image of their own (their samples' first component).
+  vtkNew<vtkImageData> part;
+  part->SetExtent(extent[0],
+    extent[1],
+    extent[2],
+    extent[3],
+    whole[4] + from,
+    whole[4] + to + (cells && points[2] > 1 ? 1 : 0));
+  const vtkIdType planeSamples = pieceCounts[0] * pieceCounts[1];
+  vtkNew<vtkFloatArray> values;
+  values->SetName("density");
+  values->SetNumberOfTuples(planeSamples * (to - from + 1));
+  const vtkIdType start = planeSamples * (from - first);
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+  {
+    values->SetValue(i, static_cast<float>(array->GetComponent(start + i, 0)));
+  }
+  (cells ? static_cast<vtkDataSetAttributes*>(part->GetCellData())
+         : static_cast<vtkDataSetAttributes*>(part->GetPointData()))
+    ->SetScalars(values);
+  vtkLightShaftDensityField field;
+  if (!field.Read(part, "density").empty())
+  {
+    return;
+  }
+  const int offset[3] = { extent[0] - whole[0], extent[2] - whole[2], from };
+  const int planes[2] = { plane, plane + 1 };
+  field.ResamplePiece(resolution, offset, points, planes, slab);
 }
 }
 
@@ -272,15 +326,14 @@ void vtkPVLightShaftsFieldGather::GatherResampled(vtkImageData* input,
   output->SetExtent(0, grid[0] - 1, 0, grid[1] - 1, 0, grid[2] - 1);
   output->SetOrigin(origin);
   output->SetSpacing(spacing);
-  vtkLightShaftDensityField field;
-  int offset[3] = { 0, 0, 0 };
-  if (piece && field.Read(piece, this->ArrayName.c_str()).empty())
-  {
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      offset[axis] = piece->GetExtent()[2 * axis] - whole[2 * axis];
-    }
-  }
+  // This process's samples, read the planes each grid plane needs at a time (a copy of the
+  // whole piece as float32 would hold a quarter of the field again, at np 4).
+  bool pieceCells = false;
+  std::string why;
+  vtkDataArray* array =
+    (piece && piece->GetNumberOfPoints() > 0)
+      ? vtkLightShaftDensityField::FindArray(piece, this->ArrayName.c_str(), pieceCells, why)
+      : nullptr;
   const vtkIdType counts[3] = { grid[0], grid[1], grid[2] };
   vtkNew<vtkFloatArray> gathered;
   gathered->SetNumberOfTuples(counts[0] * counts[1] * counts[2]);
@@ -288,10 +341,16 @@ void vtkPVLightShaftsFieldGather::GatherResampled(vtkImageData* input,
     gathered,
     [&](float* slab, const vtkIdType planes[2])
     {
-      if (!field.Empty())
+      for (vtkIdType z = planes[0]; array && z < planes[1]; ++z)
       {
-        const int range[2] = { static_cast<int>(planes[0]), static_cast<int>(planes[1]) };
-        field.ResamplePiece(this->Resolution, offset, points, range, slab);
+        ResamplePlane(piece,
+          array,
+          cells,
+          whole,
+          points,
+          this->Resolution,
+          static_cast<int>(z),
+          slab + (z - planes[0]) * counts[0] * counts[1]);
       }
     });
   gathered->SetName(!this->ArrayName.empty() ? this->ArrayName.c_str() : "density");

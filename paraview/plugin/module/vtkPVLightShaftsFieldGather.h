@@ -5,14 +5,14 @@
  *          gathered into the whole image on every process.
  *
  * The input is the view's MediumDensity source. Each process asks it for piece rank of size (its
- * extent, no ghost levels), so the source computes and holds only that part; the output has the
- * input's whole extent and rho alone (the first component of vtkLightShaftDensityField's array:
- * the named point or cell array, else the scalars) as float32, as the pass keeps it, combined with
- * a MAX reduction over the processes: every sample comes from a process that computed it (the
- * points two pieces share are equal there), a slab of planes at a time: a process holds its
- * piece, the whole grid and one slab of at most 2^22 samples (16 MiB). The pass then sees the
- * serial image. RequestData is collective: every process executes it in
- * the same render (their pipelines are the same).
+ * extent; one ghost level when it is resampled), so the source computes and holds only that part;
+ * the output has the input's whole extent and rho alone (the first component of
+ * vtkLightShaftDensityField's array: the named point or cell array, else the scalars) as float32,
+ * as the pass keeps it, combined with a MAX reduction over the processes: every sample comes from a
+ * process that computed it (the points two pieces share are equal there), a slab of planes at a
+ * time: a process holds its piece, the whole grid and one slab of at most 2^20 samples (4 MiB). The
+ * pass then sees the serial image. RequestData is collective: every process executes it in the same
+ * render (their pipelines are the same).
  */
 
 #ifndef vtkPVLightShaftsFieldGather_h
