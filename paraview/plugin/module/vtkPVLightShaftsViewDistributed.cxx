@@ -41,12 +41,15 @@ void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
   }
   this->UpdateVolumes(controller);
   vtkLightShaftPass* shafts = this->Impl->Shafts;
-  // IceT composites the processes' images over a transparent background and blends the
-  // renderer's flat background in after the pass (the renderer's is black while it renders):
-  // the pass paints it where the medium must dim it. A gradient or textured background is left
-  // to IceT.
+  // Rendering for compositing (IceT's processes, or a pvserver's picture for its client), the
+  // image is made over a transparent background and the renderer's flat background blended in
+  // after the pass (the renderer's is black while it renders): the pass paints it where the
+  // medium must dim it. A gradient or textured background is left to the compositor.
+  const bool composited = controller ||
+    (interactive ? this->GetUseDistributedRenderingForLODRender()
+                 : this->GetUseDistributedRenderingForRender());
   shafts->SetPaintBackground(
-    controller && !renderer->GetGradientBackground() && !renderer->GetTexturedBackground());
+    composited && !renderer->GetGradientBackground() && !renderer->GetTexturedBackground());
   shafts->SetPaintedBackground(
     renderer->GetBackground()[0], renderer->GetBackground()[1], renderer->GetBackground()[2]);
   if (this->Impl->FitMedium && !this->Impl->FitAsked)
