@@ -45,9 +45,9 @@ void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
   // image is made over a transparent background and the renderer's flat background blended in
   // after the pass (the renderer's is black while it renders): the pass paints it where the
   // medium must dim it. A gradient or textured background is left to the compositor.
-  const bool composited = controller ||
-    (interactive ? this->GetUseDistributedRenderingForLODRender()
-                 : this->GetUseDistributedRenderingForRender());
+  const bool composited =
+    controller || (interactive ? this->GetUseDistributedRenderingForLODRender()
+                               : this->GetUseDistributedRenderingForRender());
   shafts->SetPaintBackground(
     composited && !renderer->GetGradientBackground() && !renderer->GetTexturedBackground());
   shafts->SetPaintedBackground(
