@@ -184,7 +184,9 @@ void vtkPVLightShaftsView::UpdateVolumes(vtkMultiProcessController* controller)
     }
   }
   vtkLightShaftMedium* medium = this->Impl->Shafts->GetMedium();
-  if (controller)
+  // (With the shafts off nothing is gathered: the pass does not run. LightShafts is the same on
+  // every process, so they all skip the same collective calls.)
+  if (controller && this->LightShafts)
   {
     this->Impl->TranslucentGather.Update(this->GetRenderer(), controller);
     vtkVolume* whole =
