@@ -74,26 +74,13 @@ bool Place(vtkImageData* input, vtkMatrix4x4* matrix, vtkImageData* out)
 std::string vtkLightShaftVolumeField::Build(vtkVolume* volume, Quantity quantity, vtkImageData* out)
 {
   out->Initialize();
-  auto* mapper = volume ? vtkAbstractVolumeMapper::SafeDownCast(volume->GetMapper()) : nullptr;
-  if (!mapper)
+  vtkImageData* input = nullptr;
+  bool cells = false;
+  std::string why;
+  vtkDataArray* scalars = RenderedScalars(volume, input, cells, why);
+  if (!scalars)
   {
-    return "has no volume mapper";
-  }
-  auto* input = vtkImageData::SafeDownCast(mapper->GetDataSetInput());
-  if (!input)
-  {
-    return "has no image data as its mapper's input";
-  }
-  int cells = 0;
-  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(input,
-    mapper->GetScalarMode(),
-    mapper->GetArrayAccessMode(),
-    mapper->GetArrayId(),
-    mapper->GetArrayName(),
-    cells);
-  if (!scalars || cells > 1 || scalars->GetNumberOfTuples() == 0)
-  {
-    return "has no point or cell scalars to render";
+    return why;
   }
   vtkVolumeProperty* property = volume->GetProperty();
   vtkPiecewiseFunction* opacity = property ? property->GetScalarOpacity(0) : nullptr;
@@ -126,6 +113,42 @@ std::string vtkLightShaftVolumeField::Build(vtkVolume* volume, Quantity quantity
     out->GetPointData()->SetScalars(values);
   }
   return "";
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkLightShaftVolumeField::RenderedScalars(vtkVolume* volume,
+  vtkImageData*& input,
+  bool& cells,
+  std::string& why)
+{
+  input = nullptr;
+  cells = false;
+  auto* mapper = volume ? vtkAbstractVolumeMapper::SafeDownCast(volume->GetMapper()) : nullptr;
+  if (!mapper)
+  {
+    why = "has no volume mapper";
+    return nullptr;
+  }
+  input = vtkImageData::SafeDownCast(mapper->GetDataSetInput());
+  if (!input)
+  {
+    why = "has no image data as its mapper's input";
+    return nullptr;
+  }
+  int association = 0;
+  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(input,
+    mapper->GetScalarMode(),
+    mapper->GetArrayAccessMode(),
+    mapper->GetArrayId(),
+    mapper->GetArrayName(),
+    association);
+  if (!scalars || association > 1 || scalars->GetNumberOfTuples() == 0)
+  {
+    why = "has no point or cell scalars to render";
+    return nullptr;
+  }
+  cells = association == 1;
+  return scalars;
 }
 
 //------------------------------------------------------------------------------

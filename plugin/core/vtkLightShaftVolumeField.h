@@ -12,6 +12,7 @@
 
 #include <string> // For the reason a volume cannot be used
 
+class vtkDataArray;
 class vtkImageData;
 class vtkVolume;
 
@@ -52,6 +53,16 @@ public:
    * no opacity function, a matrix that is not invertible); `out` is then emptied.
    */
   static std::string Build(vtkVolume* volume, Quantity quantity, vtkImageData* out);
+
+  /**
+   * The scalars `volume`'s mapper renders (its scalar mode and array; point or cell data,
+   * `cells`), of its image input `input`: nullptr with the reason in `why` when there is no
+   * volume mapper, no image input or no scalars to render (an empty image has none).
+   */
+  static vtkDataArray* RenderedScalars(vtkVolume* volume,
+    vtkImageData*& input,
+    bool& cells,
+    std::string& why);
 
   /// The latest MTime of what Build reads: the volume (its matrix), its mapper, the mapper's
   /// input and its data, its property and the opacity function.

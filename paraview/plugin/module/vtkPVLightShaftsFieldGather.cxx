@@ -203,7 +203,7 @@ void vtkPVLightShaftsFieldGather::GatherImage(vtkImageData* input,
   vtkImageData* output)
 {
   output->Initialize();
-  output->SetExtent(const_cast<int*>(whole));
+  output->SetExtent(whole[0], whole[1], whole[2], whole[3], whole[4], whole[5]);
   if (input)
   {
     output->SetOrigin(input->GetOrigin());

@@ -2,6 +2,8 @@
 
 #include "vtkPVLightShaftsFieldGather.h"
 
+#include "vtkLightShaftVolumeField.h"
+
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkCellData.h"
 #include "vtkCommunicator.h"
@@ -19,6 +21,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <string>
 
 namespace
 {
@@ -32,25 +35,6 @@ public:
   void Render(vtkRenderer*, vtkVolume*) override {}
 };
 vtkStandardNewMacro(ModelledMapper);
-
-// The scalars `volume`'s mapper renders, of its image input (nullptr: none, or an empty piece).
-vtkDataArray* RenderedScalars(vtkVolume* volume, vtkImageData*& input, int& cells)
-{
-  auto* mapper = volume ? vtkAbstractVolumeMapper::SafeDownCast(volume->GetMapper()) : nullptr;
-  input = mapper ? vtkImageData::SafeDownCast(mapper->GetDataSetInput()) : nullptr;
-  cells = 0;
-  if (!input || input->GetNumberOfPoints() == 0)
-  {
-    return nullptr;
-  }
-  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(input,
-    mapper->GetScalarMode(),
-    mapper->GetArrayAccessMode(),
-    mapper->GetArrayId(),
-    mapper->GetArrayName(),
-    cells);
-  return (scalars && cells <= 1 && scalars->GetNumberOfTuples() > 0) ? scalars : nullptr;
-}
 
 // When what `volume` renders last changed: its mapper (which ParaView may swap) and its input.
 vtkMTimeType DataTime(vtkVolume* volume)
@@ -132,9 +116,11 @@ bool vtkPVLightShaftsVolumeGather::Gather(vtkVolume* local,
   vtkMultiProcessController* controller,
   int resolution)
 {
+  // The scalars this process's piece renders (none: an empty piece, or no local volume).
   vtkImageData* input = nullptr;
-  int cells = 0;
-  vtkDataArray* scalars = RenderedScalars(local, input, cells);
+  bool cells = false;
+  std::string why;
+  vtkDataArray* scalars = vtkLightShaftVolumeField::RenderedScalars(local, input, cells, why);
   // The whole extent: the pieces' union (their lower bounds' minimum, upper bounds' maximum).
   constexpr int none = std::numeric_limits<int>::max();
   int extent[6] = { none, none, none, none, none, none };
