@@ -2,7 +2,9 @@
 --points samples across the plume (37: the example's), then this process's peak resident memory
 when the picture is saved (/proc/self/status VmHWM, bytes) into OUTPUT.rank<r>.json; the picture is OUTPUT.png. The
 field's memory is the peak at a large --points less the peak at the example's. --methods: the
-scene again with SLICES and EPIPOLAR, and without the shafts. Usage:
+scene again with SLICES and EPIPOLAR, without the shafts, and with absorption only (the
+example's --absorb-only: scattering 0, RAY_MARCH), in the same process (one pvbatch start for
+all five pictures). Usage:
 pvbatch --symmetric mpi_field_memory.py OUTPUT --points N [--field-resolution R] [the example's
 other options]"""
 
@@ -24,7 +26,8 @@ def main():
     parser.add_argument("--points", type=int, default=37)
     parser.add_argument("--field-resolution", type=int, default=2048)
     parser.add_argument("--methods", action="store_true",
-                        help="also OUTPUT-slices.png, OUTPUT-epipolar.png and OUTPUT-plain.png")
+                        help="also OUTPUT-slices.png, OUTPUT-epipolar.png, OUTPUT-plain.png and "
+                        "OUTPUT-absorb-only.png")
     args, example = parser.parse_known_args()  # (the others: the example's, as --absorb-only)
     sys.argv = [sys.argv[0], "-o", args.output + ".png", "--size", "400", "300",
                 "--points", str(args.points), "--field-resolution", str(args.field_resolution)]
@@ -55,6 +58,11 @@ def main():
             save(f"{args.output}-{name}.png", view, ImageResolution=size)
         view.LightShafts = 0
         save(f"{args.output}-plain.png", view, ImageResolution=size)
+        # The example's --absorb-only: its settings with scattering 0.
+        view.LightShafts = 1
+        view.ShaftMethod = 1
+        view.ScatteringCoefficient = [0.0, 0.0, 0.0]
+        save(f"{args.output}-absorb-only.png", view, ImageResolution=size)
     module = servermanager.vtkProcessModule.GetProcessModule()
     rank = module.GetPartitionId()
     with open(f"{args.output}.rank{rank}.json", "w") as out:

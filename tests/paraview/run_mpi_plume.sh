@@ -22,9 +22,9 @@ here="$(cd "$(dirname "$0")" && pwd)"
 mkdir -p "$out"
 status=0
 # name processes flags...
+# (scattering --methods: also absorption only, SLICES, EPIPOLAR and no shafts, in the same run.)
 runs=(
   "scattering 1 --methods" "scattering 2 --methods" "scattering 4 --methods"
-  "absorb-only 1 --absorb-only" "absorb-only 2 --absorb-only" "absorb-only 4 --absorb-only"
   "large 1 --points 256 --field-resolution 128" "large 4 --points 256 --field-resolution 128"
 )
 for run in "${runs[@]}"; do
@@ -56,10 +56,12 @@ import numpy as np
 from matplotlib.image import imread
 out = sys.argv[1]
 failures = []
-for name, counts in (("scattering", (2, 4)), ("absorb-only", (2, 4)), ("large", (4,))):
-    serial = imread(f"{out}/{name}-np1.png")[..., :3].astype(float) * 255.0
+for name, counts, suffix in (("scattering", (2, 4), ""), ("absorb-only", (2, 4), "-absorb-only"),
+                             ("large", (4,), "")):
+    stem = "scattering" if name == "absorb-only" else name
+    serial = imread(f"{out}/{stem}-np1{suffix}.png")[..., :3].astype(float) * 255.0
     for np_ in counts:
-        image = imread(f"{out}/{name}-np{np_}.png")[..., :3].astype(float) * 255.0
+        image = imread(f"{out}/{stem}-np{np_}{suffix}.png")[..., :3].astype(float) * 255.0
         diff = np.abs(image - serial)
         mean = float(diff.mean())
         off = float((diff.max(axis=-1) > 4.5).mean())
