@@ -432,7 +432,9 @@ void vtkLightShaftDensityField::ResampledGrid(const int points[3],
 {
   for (int k = 0; k < 3; ++k)
   {
-    out[k] = std::max(samples[k] > maximum ? maximum : points[k], 2);
+    // (Cell data whose cells fit may have one point more than `maximum`: capped too, so that
+    // the grid, read again as an image, is not resampled a second time.)
+    out[k] = std::max(std::min(samples[k] > maximum ? maximum : points[k], maximum), 2);
     step[k] = (points[k] - 1.0) / (out[k] - 1.0);
   }
 }

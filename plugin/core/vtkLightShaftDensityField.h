@@ -103,7 +103,8 @@ public:
   /**
    * This field resampled to at most `maximum` samples along each axis (an axis with more
    * gets `maximum` points spanning its bounds, trilinear samples of this field), as point
-   * data over the same bounds; an axis within it keeps its points.
+   * data over the same bounds; an axis within it keeps its points (cell data: at most
+   * `maximum` of them, so that the grid is within `maximum` too).
    */
   vtkLightShaftDensityField Resampled(int maximum) const;
 

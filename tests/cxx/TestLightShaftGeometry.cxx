@@ -940,6 +940,33 @@ void TestResamplePiece()
   }
 }
 
+//------------------------------------------------------------------------------
+// Cell data resampled along one axis, another axis holding exactly `maximum` cells (one point
+// more): the grid has at most `maximum` points along every axis, so that the grid read again
+// (the distributed gather's output is read by the pass) is not resampled a second time.
+void TestResampledGridWithinMaximum()
+{
+  const int maximum = 8;
+  vtkNew<vtkImageData> image;
+  image->SetExtent(0, maximum, 0, 2 * maximum, 0, 3); // cells: 8, 16 and 3
+  vtkNew<vtkDoubleArray> values;
+  values->SetNumberOfTuples(image->GetNumberOfCells());
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+  {
+    values->SetValue(i, 1.0 + std::sin(0.37 * static_cast<double>(i)));
+  }
+  image->GetCellData()->SetScalars(values);
+  vtkLightShaftDensityField field;
+  const std::string why = field.Read(image, nullptr);
+  Check(why.empty(), "grid within the maximum: the image is a field (" + why + ")");
+  const vtkLightShaftDensityField grid = field.Resampled(maximum);
+  const int* samples = grid.GetSamples();
+  Check(samples[0] == maximum && samples[1] == maximum && samples[2] == 4,
+    "grid within the maximum: cell data resampled to 8 x 8 x 4 points, got " +
+      std::to_string(samples[0]) + " x " + std::to_string(samples[1]) + " x " +
+      std::to_string(samples[2]));
+}
+
 int main()
 {
   TestPolygons();
@@ -957,6 +984,7 @@ int main()
   TestFieldError();
   TestImagePieceRows();
   TestResamplePiece();
+  TestResampledGridWithinMaximum();
   if (Failures > 0)
   {
     std::cerr << Failures << " geometry check(s) failed" << std::endl;

@@ -170,16 +170,14 @@ int vtkPVLightShaftsFieldGather::RequestUpdateExtent(vtkInformation*,
   const int pieces = controller ? controller->GetNumberOfProcesses() : 1;
   in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), piece);
   in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), pieces);
-  // Resampled to a coarser grid, a grid point between two pieces needs the samples on both
-  // sides: one ghost level (the pieces then share a layer, equal on both).
+  // A grid point between two pieces: for point data both hold the plane they share, so each grid
+  // point lies between samples one of them holds. Cell data resampled to a coarser grid needs
+  // the cells on both sides: one ghost level (learned from the last execution: RequestData
+  // updates the source again the first time it finds cell data).
   int whole[6];
   in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
-  bool resampled = false;
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    resampled = resampled || whole[2 * axis + 1] - whole[2 * axis] + 1 > this->Resolution;
-  }
-  in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), resampled ? 1 : 0);
+  in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(),
+    this->CellSamples && this->Resampled(whole) ? 1 : 0);
   return 1;
 }
 
@@ -193,8 +191,60 @@ int vtkPVLightShaftsFieldGather::RequestData(vtkInformation*,
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   int whole[6];
   outInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+  bool cells = false;
+  const bool found = this->AgreeOnArray(input, cells);
+  if (found && cells && !this->CellSamples && this->Resampled(whole))
+  {
+    // Cell data, asked for without ghost cells: the source's pieces again with one ghost
+    // level (every process, as each agreed on `cells`), and from now on.
+    vtkInformation* request = inputVector[0]->GetInformationObject(0);
+    int port = 0;
+    vtkAlgorithm* source = this->GetInputAlgorithm(0, 0, port);
+    vtkNew<vtkInformationVector> requests;
+    requests->SetNumberOfInformationObjects(source->GetNumberOfOutputPorts());
+    vtkInformation* ghosted = requests->GetInformationObject(port);
+    ghosted->CopyEntry(request, vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
+    ghosted->CopyEntry(request, vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
+    ghosted->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 1);
+    source->Update(port, requests);
+    input = vtkImageData::GetData(inputVector[0]);
+  }
+  this->CellSamples = found && cells;
   this->GatherImage(input, whole, output);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPVLightShaftsFieldGather::Resampled(const int whole[6]) const
+{
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (whole[2 * axis + 1] - whole[2 * axis] + 1 > this->Resolution)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPVLightShaftsFieldGather::AgreeOnArray(vtkImageData* piece, bool& cells)
+{
+  // (A process whose piece is empty has no array.)
+  bool pieceCells = false;
+  std::string why;
+  vtkDataArray* local =
+    (piece && piece->GetNumberOfPoints() > 0)
+      ? vtkLightShaftDensityField::FindArray(piece, this->ArrayName.c_str(), pieceCells, why)
+      : nullptr;
+  int described[2] = { local ? 1 : -1, local ? int(pieceCells) : -1 };
+  int agreed[2] = { described[0], described[1] };
+  if (vtkMultiProcessController* controller = this->GetController())
+  {
+    controller->AllReduce(described, agreed, 2, vtkCommunicator::MAX_OP);
+  }
+  cells = agreed[1] == 1;
+  return agreed[0] > 0;
 }
 
 //------------------------------------------------------------------------------
@@ -211,26 +261,18 @@ void vtkPVLightShaftsFieldGather::GatherImage(vtkImageData* input,
     output->SetDirectionMatrix(input->GetDirectionMatrix());
   }
 
-  // The density array of this process's piece, and whether any process has it and where
-  // (a process whose piece is empty has none).
+  // Whether any process has the density array and where, and this process's.
   bool cells = false;
-  std::string why;
-  vtkDataArray* local =
-    (input && input->GetNumberOfPoints() > 0)
-      ? vtkLightShaftDensityField::FindArray(input, this->ArrayName.c_str(), cells, why)
-      : nullptr;
-  int described[2] = { local ? 1 : -1, local ? int(cells) : -1 };
-  int agreed[2] = { described[0], described[1] };
-  vtkMultiProcessController* controller = this->GetController();
-  if (controller)
-  {
-    controller->AllReduce(described, agreed, 2, vtkCommunicator::MAX_OP);
-  }
-  if (agreed[0] < 0)
+  if (!this->AgreeOnArray(input, cells))
   {
     return; // no process found it: the medium says which array is missing
   }
-  cells = agreed[1] == 1;
+  bool pieceCells = false;
+  std::string why;
+  vtkDataArray* local =
+    (input && input->GetNumberOfPoints() > 0)
+      ? vtkLightShaftDensityField::FindArray(input, this->ArrayName.c_str(), pieceCells, why)
+      : nullptr;
   vtkIdType counts[3];
   Counts(whole, cells, counts);
   if (counts[0] > this->Resolution || counts[1] > this->Resolution || counts[2] > this->Resolution)

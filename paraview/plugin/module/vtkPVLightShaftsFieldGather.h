@@ -5,7 +5,8 @@
  *          gathered into the whole image on every process.
  *
  * The input is the view's MediumDensity source. Each process asks it for piece rank of size (its
- * extent; one ghost level when it is resampled), so the source computes and holds only that part;
+ * extent; one ghost level when cell data is resampled: the pieces of point data share their
+ * boundary planes), so the source computes and holds only that part;
  * the output has the input's whole extent and rho alone (the first component of
  * vtkLightShaftDensityField's array: the named point or cell array, else the scalars) as float32,
  * as the pass keeps it, combined with a MAX reduction over the processes: every sample comes from a
@@ -90,10 +91,16 @@ private:
     vtkImageData* output,
     const int whole[6],
     bool cells);
+  // Whether an image of extent `whole` is resampled (more samples along an axis than Resolution).
+  bool Resampled(const int whole[6]) const;
+  // Collective: whether any process's piece has the density array, and whether it is cell data.
+  bool AgreeOnArray(vtkImageData* piece, bool& cells);
 
   std::string ArrayName;
   vtkMultiProcessController* Controller = nullptr;
   int Resolution = 2048;
+  // The last input's array was cell data: resampled, its pieces are asked for a ghost level.
+  bool CellSamples = false;
 };
 
 #endif
