@@ -1,13 +1,13 @@
 """examples/paraview/smoke_plume.py through a pvserver (its plume made on the server, the view's
 MediumDensity) or in a builtin session, for the client-server test (run_client_server.sh).
 
-    pvpython client_plume.py HOST PORT OUTPUT.png [the example's options]   (a pvserver's client)
-    pvbatch client_plume.py builtin OUTPUT.png [the example's options]      (serial, for reference)
+    pvpython client_plume.py HOST PORT OUTPUT.png [--fxaa] [the example's options]   (a client)
+    pvbatch client_plume.py builtin OUTPUT.png [--fxaa] [the example's options]      (serial)
 
 Remote rendering is forced (the medium lives where the data does: on the server) and the plugin
 is loaded on both sides. Through a pvserver, the picture saved, a bad array name and a NaN
-exposure are then set, for the test to find the server's messages in the client's output. FXAA is off in both runs: on a pvserver whose client shows its picture,
-the view's picture gets no FXAA (docs/known-issues.md), so the serial reference goes without it.
+exposure are then set, for the test to find the server's messages in the client's output.
+ParaView's FXAA is off unless --fxaa is given (the render view settings' UseFXAA).
 """
 
 import os
@@ -37,7 +37,10 @@ def main():
         arguments = arguments[1:]
     settings = simple.GetSettingsProxy("RenderViewSettings")
     settings.RemoteRenderThreshold = 0.0
-    settings.UseFXAA = 0
+    fxaa = "--fxaa" in arguments
+    if fxaa:
+        arguments.remove("--fxaa")
+    settings.UseFXAA = int(fxaa)
     sys.argv = [sys.argv[0], "-o", arguments[0], "--size", "400", "300"] + arguments[1:]
     runpy.run_path(os.path.join(HERE, "..", "..", "examples", "paraview", "smoke_plume.py"))
     if remote:

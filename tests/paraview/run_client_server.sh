@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Client-server: `mpirun -np 2 pvserver`, and a single pvserver, on this machine's loopback with a
 # pvpython client that runs examples/paraview/smoke_plume.py through it (the plume made by the
-# server's pipeline,
-# the view's MediumDensity, rendered on the server), against the same script in a serial
-# builtin session (pvbatch): the same picture (a mean difference of at most 0.2 levels, at most
-# 0.3% of the pixels off by more than 4 levels), and the plume split over the server's two
-# processes; then a bad array name and a NaN exposure: the server's messages reach the client's
-# output. Usage: run_client_server.sh OUTPUT_DIR (PYTHONPATH and the plugin from the
-# environment; LIGHTSHAFTS_PVPYTHON: the pvpython to use, default the one beside
-# python3-paraview's package, else pvpython on PATH).
+# server's pipeline, the view's MediumDensity, rendered on the server), against the same script
+# in a serial builtin session (pvbatch): the same picture (a mean difference of at most 0.2
+# levels, at most 0.3% of the pixels off by more than 4 levels) with ParaView's FXAA off and on
+# (np 2) and on (a single pvserver), and the plume split over the server's two processes; then a
+# bad array name and a NaN exposure: the server's messages reach the client's output.
+# Usage: run_client_server.sh OUTPUT_DIR (PYTHONPATH and the plugin from the environment;
+# LIGHTSHAFTS_PVPYTHON: the pvpython to use, default the one beside python3-paraview's package,
+# else pvpython on PATH).
 set -u
 out="$1"
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -28,9 +28,11 @@ if [ -z "$pvpython" ]; then
   exit 1
 fi
 # A pvserver on `$1` processes (1: without mpirun) on a free port of the loopback, and the
-# client through it, writing $out/$2.png and $out/$2.log ($out/server-$2.log: the server's).
+# client through it (its options: $3...), writing $out/$2.png and $out/$2.log
+# ($out/server-$2.log: the server's).
 serve() {
   local np=$1 name=$2 port server
+  shift 2
   port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
   if [ "$np" = 1 ]; then
     pvserver --server-port="$port" > "$out/server-$name.log" 2>&1 &
@@ -44,23 +46,29 @@ serve() {
     grep -q "Accepting connection" "$out/server-$name.log" && break
     sleep 0.2
   done
-  timeout 240 "$pvpython" "$here/client_plume.py" localhost "$port" "$out/$name.png" \
+  timeout 240 "$pvpython" "$here/client_plume.py" localhost "$port" "$out/$name.png" "$@" \
     > "$out/$name.log" 2>&1
   kill "$server" 2> /dev/null
   wait "$server" 2> /dev/null
 }
 serve 2 client
-# A single pvserver too: its picture is composited over the background for its client as IceT's
-# are (before 2026-12-07 its background was not dimmed by the medium: a mean of 1.36 levels off).
-serve 1 client1
-cat "$out/server-client.log" "$out/server-client1.log" > "$out/server.log"
+# With ParaView's FXAA: the server composites the picture with IceT, without FXAA, and the
+# client antialiases it as it shows it (before 2026-12-07 the view turned the client's FXAA off,
+# and the picture had none: 0.38% of the pixels off by more than 4 levels).
+serve 2 client-fxaa --fxaa
+# A single pvserver too, with FXAA (there the server antialiases): its picture is composited
+# over the background for its client as IceT's are (before 2026-12-07 its background was not
+# dimmed by the medium: a mean of 1.36 levels off).
+serve 1 client1 --fxaa
+cat "$out"/server-client*.log > "$out/server.log"
 pvbatch "$here/client_plume.py" builtin "$out/serial.png" > "$out/serial.log" 2>&1
+pvbatch "$here/client_plume.py" builtin "$out/serial-fxaa.png" --fxaa > "$out/serial-fxaa.log" 2>&1
 # The messages the bad input after the picture must give: on the server's processes, forwarded
 # to the client (each after its "ERROR: In <file>" line), and the exposure's also from the
 # client's own pass; no other error or warning anywhere. (The order of the client's printed
 # lines and its log's is not kept: ParaView 6.1's Python output is buffered.)
 expected='named "no-such-array"|Exposure: non-finite value refused|ERROR: In vtkLightShaftMediumTexture.cxx|ERROR: In vtkLightShaftSetters.h'
-for run in client client1 serial; do
+for run in client client-fxaa client1 serial serial-fxaa; do
   if [ ! -f "$out/$run.png" ]; then
     cat "$out/$run.log" "$out/server.log"
     echo "FAIL: no picture from the $run run"
@@ -73,7 +81,7 @@ for run in client client1 serial; do
   fi
 done
 # (The client renders nothing itself: an error about the field can only be the server's.)
-for client in client client1; do
+for client in client client-fxaa client1; do
   for message in 'no numeric point or cell array named "no-such-array"' 'Exposure: non-finite value refused'; do
     if ! grep -q "$message" "$out/$client.log"; then
       cat "$out/$client.log"
@@ -93,9 +101,11 @@ import sys
 import numpy as np
 from matplotlib.image import imread
 out = sys.argv[1]
-serial = imread(f"{out}/serial.png")[..., :3].astype(float) * 255.0
 failures = []
-for name, server in (("client", "pvserver -np 2"), ("client1", "a single pvserver")):
+for name, server, reference in (("client", "pvserver -np 2", "serial"),
+                                ("client-fxaa", "pvserver -np 2 with FXAA", "serial-fxaa"),
+                                ("client1", "a single pvserver with FXAA", "serial-fxaa")):
+    serial = imread(f"{out}/{reference}.png")[..., :3].astype(float) * 255.0
     client = imread(f"{out}/{name}.png")[..., :3].astype(float) * 255.0
     diff = np.abs(client - serial)
     mean, off = float(diff.mean()), float((diff.max(axis=-1) > 4.5).mean())

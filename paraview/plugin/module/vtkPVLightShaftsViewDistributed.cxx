@@ -7,9 +7,12 @@
 #include "vtkLightShaftFrameReport.h"
 #include "vtkMultiProcessController.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkPVSession.h"
 #include "vtkPVSynchronizedRenderer.h"
+#include "vtkProcessModule.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
+#include "vtkSMSession.h"
 #include "vtkVolume.h"
 
 namespace
@@ -18,6 +21,20 @@ vtkMultiProcessController* DistributedController()
 {
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   return (controller && controller->GetNumberOfProcesses() > 1) ? controller : nullptr;
+}
+
+// A client whose render server runs on several processes: a picture rendered there is
+// composited by IceT, which turns the renderer's FXAA off, and antialiased by this process's
+// synchronizer when it shows the picture (with the renderer's FXAA setting).
+bool ClientOfCompositingServer()
+{
+  vtkProcessModule* module = vtkProcessModule::GetProcessModule();
+  if (!module || module->GetProcessType() != vtkProcessModule::PROCESS_CLIENT)
+  {
+    return false;
+  }
+  vtkSMSession* session = vtkSMSession::SafeDownCast(module->GetActiveSession());
+  return session && session->GetNumberOfProcesses(vtkPVSession::RENDER_SERVER) > 1;
 }
 }
 
@@ -31,10 +48,14 @@ void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
   // outer one (it sees the final picture, shafts included) and turn the renderer's off for
   // this render (restored at its end), so the medium off gives a RenderView's picture. On
   // several processes (IceT composites the image) the outer one does not run (measured: the
-  // pictures lose their antialiasing): the renderer's stays.
+  // pictures lose their antialiasing): the renderer's stays, for the synchronizer that shows the
+  // composited picture, as on a client showing the picture of a server on several processes.
   vtkRenderer* renderer = this->GetRenderer();
+  const bool remote = interactive ? this->GetUseDistributedRenderingForLODRender()
+                                  : this->GetUseDistributedRenderingForRender();
   if (this->SynchronizedRenderers->GetImageProcessingPass() &&
-      this->SynchronizedRenderers->GetUseFXAA() && renderer->GetUseFXAA() && !controller)
+      this->SynchronizedRenderers->GetUseFXAA() && renderer->GetUseFXAA() && !controller &&
+      !(remote && ClientOfCompositingServer()))
   {
     renderer->SetUseFXAA(false);
     this->Impl->RestoreRendererFXAA = true;
@@ -45,9 +66,7 @@ void vtkPVLightShaftsView::AboutToRenderOnLocalProcess(bool interactive)
   // image is made over a transparent background and the renderer's flat background blended in
   // after the pass (the renderer's is black while it renders): the pass paints it where the
   // medium must dim it. A gradient or textured background is left to the compositor.
-  const bool composited =
-    controller || (interactive ? this->GetUseDistributedRenderingForLODRender()
-                               : this->GetUseDistributedRenderingForRender());
+  const bool composited = controller || remote;
   shafts->SetPaintBackground(
     composited && !renderer->GetGradientBackground() && !renderer->GetTexturedBackground());
   shafts->SetPaintedBackground(
