@@ -135,15 +135,17 @@ run_runtime_backend() {
     echo "unknown backend '$backend' (egl, osmesa)" >&2
     return 1
   }
+  # (grep reads all of ldconfig's list, not -q: under pipefail, grep -q leaving at the first
+  # match can end ldconfig by SIGPIPE, and the pipeline then fails though the library is there.)
   case "$backend" in
     egl)
-      if ! ldconfig -p | grep -qE 'libEGL_mesa\.so|libEGL\.so\.1'; then
+      if ! ldconfig -p | grep -E 'libEGL_mesa\.so|libEGL\.so\.1' > /dev/null; then
         echo "not available: no EGL library (apt install libegl1 libegl-mesa0)" >&2
         return 3
       fi
       ;;
     osmesa)
-      if ! ldconfig -p | grep -q 'libOSMesa\.so'; then
+      if ! ldconfig -p | grep 'libOSMesa\.so' > /dev/null; then
         echo "not available: this system's Mesa has no OSMesa (Mesa 25.1 removed it)" >&2
         return 3
       fi
