@@ -15,7 +15,7 @@
 #   and 4 (the gather asks for a ghost level for cell data; without it the pass refuses a grid
 #   with a plane missing, and says so);
 # - the large plume's memory split: each process's peak above the small plume's run at most
-#   0.45 of the serial run's (measured 0.37-0.40, 107-115 MiB: its piece, a quarter of the
+#   0.45 of the serial run's (measured 0.37-0.41, 107-119 MiB: its piece, a quarter of the
 #   plume, the pass's grid as the serial run holds it, and the gathered 128³ image; 0.42 while
 #   point data asked for a ghost level, 0.52 while the gather read its piece whole as float32,
 #   0.77 before it resampled the pieces and reduced a slab at a time; docs/paraview-mpi.md).

@@ -177,7 +177,7 @@ int vtkPVLightShaftsFieldGather::RequestUpdateExtent(vtkInformation*,
   int whole[6];
   in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
   in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(),
-    this->CellSamples && this->Resampled(whole) ? 1 : 0);
+    this->CellSamples && this->Resampled(whole, true) ? 1 : 0);
   return 1;
 }
 
@@ -191,9 +191,10 @@ int vtkPVLightShaftsFieldGather::RequestData(vtkInformation*,
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   int whole[6];
   outInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+  vtkDataArray* local = nullptr;
   bool cells = false;
-  const bool found = this->AgreeOnArray(input, cells);
-  if (found && cells && !this->CellSamples && this->Resampled(whole))
+  const bool found = this->AgreeOnArray(input, local, cells);
+  if (found && cells && !this->CellSamples && this->Resampled(whole, cells))
   {
     // Cell data, asked for without ghost cells: the source's pieces again with one ghost
     // level (every process, as each agreed on `cells`), and from now on.
@@ -215,28 +216,25 @@ int vtkPVLightShaftsFieldGather::RequestData(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
-bool vtkPVLightShaftsFieldGather::Resampled(const int whole[6]) const
+bool vtkPVLightShaftsFieldGather::Resampled(const int whole[6], bool cells) const
 {
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    if (whole[2 * axis + 1] - whole[2 * axis] + 1 > this->Resolution)
-    {
-      return true;
-    }
-  }
-  return false;
+  vtkIdType counts[3];
+  Counts(whole, cells, counts);
+  return counts[0] > this->Resolution || counts[1] > this->Resolution ||
+         counts[2] > this->Resolution;
 }
 
 //------------------------------------------------------------------------------
-bool vtkPVLightShaftsFieldGather::AgreeOnArray(vtkImageData* piece, bool& cells)
+bool vtkPVLightShaftsFieldGather::AgreeOnArray(vtkImageData* piece,
+  vtkDataArray*& local,
+  bool& cells)
 {
   // (A process whose piece is empty has no array.)
   bool pieceCells = false;
   std::string why;
-  vtkDataArray* local =
-    (piece && piece->GetNumberOfPoints() > 0)
-      ? vtkLightShaftDensityField::FindArray(piece, this->ArrayName.c_str(), pieceCells, why)
-      : nullptr;
+  local = (piece && piece->GetNumberOfPoints() > 0)
+            ? vtkLightShaftDensityField::FindArray(piece, this->ArrayName.c_str(), pieceCells, why)
+            : nullptr;
   int described[2] = { local ? 1 : -1, local ? int(pieceCells) : -1 };
   int agreed[2] = { described[0], described[1] };
   if (vtkMultiProcessController* controller = this->GetController())
@@ -261,25 +259,20 @@ void vtkPVLightShaftsFieldGather::GatherImage(vtkImageData* input,
     output->SetDirectionMatrix(input->GetDirectionMatrix());
   }
 
-  // Whether any process has the density array and where, and this process's.
+  // This process's density array, and whether any process has it and where.
+  vtkDataArray* local = nullptr;
   bool cells = false;
-  if (!this->AgreeOnArray(input, cells))
+  if (!this->AgreeOnArray(input, local, cells))
   {
     return; // no process found it: the medium says which array is missing
   }
-  bool pieceCells = false;
-  std::string why;
-  vtkDataArray* local =
-    (input && input->GetNumberOfPoints() > 0)
-      ? vtkLightShaftDensityField::FindArray(input, this->ArrayName.c_str(), pieceCells, why)
-      : nullptr;
-  vtkIdType counts[3];
-  Counts(whole, cells, counts);
-  if (counts[0] > this->Resolution || counts[1] > this->Resolution || counts[2] > this->Resolution)
+  if (this->Resampled(whole, cells))
   {
     this->GatherResampled(input, local ? input : nullptr, output, whole, cells);
     return;
   }
+  vtkIdType counts[3];
+  Counts(whole, cells, counts);
   const vtkIdType samples = counts[0] * counts[1] * counts[2];
   // rho (the first component) as float32, as the pass keeps its samples: every sample from a
   // process that computed it (the lowest float elsewhere; the largest wins). Reduced a slab of

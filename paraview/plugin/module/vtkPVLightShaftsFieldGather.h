@@ -6,14 +6,14 @@
  *
  * The input is the view's MediumDensity source. Each process asks it for piece rank of size (its
  * extent; one ghost level when cell data is resampled: the pieces of point data share their
- * boundary planes), so the source computes and holds only that part;
- * the output has the input's whole extent and rho alone (the first component of
- * vtkLightShaftDensityField's array: the named point or cell array, else the scalars) as float32,
- * as the pass keeps it, combined with a MAX reduction over the processes: every sample comes from a
- * process that computed it (the points two pieces share are equal there), a slab of planes at a
- * time: a process holds its piece, the whole grid and one slab of at most 2^20 samples (4 MiB). The
- * pass then sees the serial image. RequestData is collective: every process executes it in the same
- * render (their pipelines are the same).
+ * boundary planes), so the source computes and holds only that part; the output has the input's
+ * whole extent and rho alone (the first component of vtkLightShaftDensityField's array: the named
+ * point or cell array, else the scalars) as float32, as the pass keeps it, combined with a MAX
+ * reduction over the processes: every sample comes from a process that computed it (the points two
+ * pieces share are equal there), a slab of planes at a time: a process holds its piece, the whole
+ * grid and one slab of at most 2^20 samples (4 MiB). The pass then sees the serial image.
+ * RequestData is collective: every process executes it in the same render (their pipelines are
+ * the same).
  */
 
 #ifndef vtkPVLightShaftsFieldGather_h
@@ -25,6 +25,7 @@
 #include <functional> // For the slabs' filling
 #include <string>     // For the array's name
 
+class vtkDataArray;
 class vtkFloatArray;
 class vtkMultiProcessController;
 
@@ -91,10 +92,12 @@ private:
     vtkImageData* output,
     const int whole[6],
     bool cells);
-  // Whether an image of extent `whole` is resampled (more samples along an axis than Resolution).
-  bool Resampled(const int whole[6]) const;
-  // Collective: whether any process's piece has the density array, and whether it is cell data.
-  bool AgreeOnArray(vtkImageData* piece, bool& cells);
+  // Whether an image of extent `whole` is resampled: more samples (points, or cells) along an
+  // axis than Resolution.
+  bool Resampled(const int whole[6], bool cells) const;
+  // Collective: whether any process's piece has the density array, and whether it is cell
+  // data; `local`, this process's array (nullptr: none, or an empty piece).
+  bool AgreeOnArray(vtkImageData* piece, vtkDataArray*& local, bool& cells);
 
   std::string ArrayName;
   vtkMultiProcessController* Controller = nullptr;
