@@ -40,6 +40,7 @@ set(lightshafts_core_private_classes
   vtkLightShaftVolumeField)
 set(lightshafts_reference_private_classes
   vtkLightShaftReferenceIntegrator
+  vtkLightShaftReferenceModel
   vtkLightShaftReferenceJob
   vtkLightShaftReferenceScene
   vtkLightShaftReferenceTriangleTree)
